@@ -1,0 +1,25 @@
+// The CLI's subcommands: each registers its options on the parser and runs when chosen.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace app {
+
+// Options every scene command takes: the scene file and --set overrides.
+struct SceneOptions {
+  std::string scene_file;
+  std::vector<std::string> overrides;
+};
+
+// Adds SCENE and --set PATH=VALUE (repeatable) to a subcommand.
+void add_scene_options(CLI::App& command, SceneOptions& options);
+
+// Each returns the action to run when its subcommand is chosen; the action returns the exit status.
+using Action = std::function<int()>;
+Action register_simulate(CLI::App& parent);
+
+}  // namespace app

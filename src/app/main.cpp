@@ -1,0 +1,44 @@
+// softbody's command line: dispatches to the subcommands and maps errors to exit statuses.
+#include <iostream>
+#include <map>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+#include "core/errors.hpp"
+
+namespace {
+
+constexpr const char* kFooter =
+    "Exit status: 0 ok, 1 other failure, 2 bad input (scene, mesh, command line), 3 the simulation diverged.\n"
+    "Run 'softbody COMMAND --help' for a command's options.";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli("softbody: pressure-model soft bodies (Matyka & Ollila 2003), simulated and rendered off-screen");
+  cli.footer(kFooter);
+  cli.require_subcommand(1);
+  std::map<std::string, app::Action> actions;
+  actions["simulate"] = app::register_simulate(cli);
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = cli.exit(e);
+    return status == 0 ? softbody::kExitOk : softbody::kExitBadInput;
+  }
+  try {
+    for (const CLI::App* command : cli.get_subcommands()) return actions.at(command->get_name())();
+  } catch (const softbody::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return softbody::kExitBadInput;
+  } catch (const softbody::DivergedError& e) {
+    std::cerr << "diverged: " << e.what() << "\n";
+    return softbody::kExitDiverged;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return softbody::kExitFailure;
+  }
+  return softbody::kExitFailure;
+}

@@ -1,0 +1,103 @@
+// Closed-surface validation: edge use counts, winding consistency, degenerate faces, orientation.
+#include "mesh/check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "core/errors.hpp"
+
+namespace mesh {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw softbody::InputError(what); }
+
+std::uint64_t edge_key(int a, int b) {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
+}
+
+double bounding_diagonal(const TriMesh& mesh) {
+  Vec3 lo = mesh.vertices[0], hi = mesh.vertices[0];
+  for (const Vec3& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  return (hi - lo).norm();
+}
+
+void check_degenerate_faces(const TriMesh& mesh) {
+  const double diagonal = bounding_diagonal(mesh);
+  const double min_area = 1e-14 * diagonal * diagonal;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const double area = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(area > min_area)) {
+      fail("triangle " + std::to_string(f) + " is degenerate (zero area" +
+           (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ? ", repeated vertex" : "") +
+           "): every face must span an area to carry pressure");
+    }
+  }
+}
+
+}  // namespace
+
+double signed_volume(const TriMesh& mesh) {
+  double six_volume = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    six_volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]]));
+  }
+  return six_volume / 6.0;
+}
+
+EdgeCounts count_edges(const TriMesh& mesh) {
+  struct Use {
+    int count = 0;
+    int forward = 0;  // uses as (min -> max)
+  };
+  std::unordered_map<std::uint64_t, Use> uses;
+  uses.reserve(mesh.triangles.size() * 3 / 2 + 1);
+  for (const Triangle& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      Use& use = uses[edge_key(a, b)];
+      ++use.count;
+      if (a < b) ++use.forward;
+    }
+  }
+  EdgeCounts counts;
+  counts.edges = uses.size();
+  for (const auto& [key, use] : uses) {
+    if (use.count == 1) ++counts.boundary;
+    if (use.count > 2) ++counts.non_manifold;
+    if (use.count == 2 && use.forward != 1) ++counts.misoriented;
+  }
+  return counts;
+}
+
+void validate_closed(TriMesh& mesh, std::vector<std::string>& notes) {
+  if (mesh.triangles.size() < 4 || mesh.vertices.size() < 4) {
+    fail("has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
+  }
+  check_degenerate_faces(mesh);
+  const EdgeCounts counts = count_edges(mesh);
+  if (counts.boundary > 0) {
+    fail("is not closed: " + std::to_string(counts.boundary) + " boundary edges (of " + std::to_string(counts.edges) +
+         "); pressure needs a closed surface");
+  }
+  if (counts.non_manifold > 0) {
+    fail("is not manifold: " + std::to_string(counts.non_manifold) + " edges are shared by more than two triangles");
+  }
+  if (counts.misoriented > 0) {
+    fail("has inconsistent winding: " + std::to_string(counts.misoriented) +
+         " edges are traversed in the same direction by both of their triangles");
+  }
+  const double volume = signed_volume(mesh);
+  const double diagonal = bounding_diagonal(mesh);
+  if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal)) fail("encloses no volume (flat or self-cancelling surface)");
+  if (volume < 0.0) {
+    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+    notes.push_back("the winding was inverted (normals pointing inward); flipped every triangle");
+  }
+}
+
+}  // namespace mesh

@@ -1,0 +1,21 @@
+// An indexed triangle mesh: the shape a body starts from, before it becomes particles and springs.
+#pragma once
+
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace mesh {
+
+using softbody::Triangle;
+using softbody::Vec3;
+
+struct TriMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> triangles;  // counter-clockwise seen from outside once validated
+};
+
+// Signed enclosed volume by the divergence theorem: V = Σ x_a·(x_b × x_c) / 6  [m³].
+double signed_volume(const TriMesh& mesh);
+
+}  // namespace mesh

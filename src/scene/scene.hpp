@@ -1,0 +1,91 @@
+// The validated description of a whole run: plain structs with defaults, units in the comments.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace scene {
+
+using softbody::Vec3;
+
+enum class Integrator { Euler };
+
+// How vertices below the floor are handled.
+enum class ContactModel {
+  Paper,  // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
+};
+
+struct Solver {
+  Integrator integrator = Integrator::Euler;
+  double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
+};
+
+struct Floor {
+  double height_m = 0.0;  // the plane y = height_m
+  ContactModel contact = ContactModel::Paper;
+};
+
+struct Body {
+  std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
+  std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
+  Vec3 position_m = Vec3::Zero();    // where the mesh's origin is placed
+  double scale = 1.0;                // uniform scale applied to the mesh before placing it
+  Vec3 velocity_m_per_s = Vec3::Zero();
+  double mass_kg = 1.0;              // whole body, lumped to vertices by area (a third of each face)
+  double stiffness_N_per_m = 1000.0; // each edge spring (Hooke)
+  double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
+  double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
+  std::array<float, 3> color = {0.85f, 0.25f, 0.2f};  // linear RGB in [0, 1]
+};
+
+struct RenderSettings {
+  int width_px = 1280;   // even (video encoders need it)
+  int height_px = 720;   // even
+  int msaa = 4;          // samples per pixel: 1 (off), 2 or 4
+  bool shadows = true;   // the body casts a shadow-mapped shadow on the floor
+  std::array<float, 3> background = {0.62f, 0.72f, 0.85f};  // linear RGB
+  int figure_frames = 8; // frames in the contact sheet figure.png (0: no figure)
+};
+
+struct Camera {
+  Vec3 position_m{0.0, 2.5, 9.0};
+  Vec3 target_m{0.0, 1.2, 0.0};
+  Vec3 up{0.0, 1.0, 0.0};
+  double fov_deg = 45.0;  // vertical field of view
+};
+
+struct Light {
+  Vec3 direction{-0.4, -1.0, -0.35};  // the direction the light travels (towards the scene)
+  std::array<float, 3> color = {1.0f, 1.0f, 1.0f};
+  float ambient = 0.25f;  // fraction of light that reaches every surface
+};
+
+struct Output {
+  std::filesystem::path dir;          // default: out/<scene name>
+  std::string pattern = "frame_%04d.png";
+};
+
+struct Scene {
+  std::filesystem::path source;        // the scene file ("" when built in code)
+  std::string name = "scene";
+  double duration_s = 3.0;             // simulated seconds
+  int fps = 30;                        // frames per simulated second
+  Solver solver;
+  Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
+  std::optional<Floor> floor;          // no floor when absent
+  std::vector<Body> bodies;
+  RenderSettings render;
+  Camera camera;
+  Light light;
+  Output output;
+};
+
+std::string to_string(Integrator integrator);
+std::string to_string(ContactModel contact);
+
+}  // namespace scene

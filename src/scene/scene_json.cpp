@@ -1,0 +1,327 @@
+// Scene files: parse JSON with comments, apply overrides, validate every key, fill defaults.
+#include "scene/scene_json.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/errors.hpp"
+#include "mesh/generators.hpp"
+#include "scene/overrides.hpp"
+
+namespace scene {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string describe(const json& value) {
+  std::string text = value.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return value.type_name() + std::string(" ") + text;
+}
+
+// A requirement on a number: a predicate and the words that say it ("> 0").
+struct Range {
+  std::function<bool(double)> holds;
+  std::string words;
+};
+const Range kAny{[](double) { return true; }, ""};
+const Range kPositive{[](double x) { return x > 0.0; }, " > 0"};
+const Range kNonNegative{[](double x) { return x >= 0.0; }, " >= 0"};
+
+// One JSON object being read: knows its key path, marks the keys it reads, rejects the others.
+class ObjectReader {
+ public:
+  ObjectReader(const json& node, std::string path, const fs::path& file)
+      : node_(node), path_(std::move(path)), file_(file) {
+    if (!node_.is_object()) fail(path_, "expected an object", &node_);
+  }
+
+  [[noreturn]] void fail(const std::string& path, const std::string& expected, const json* got) const {
+    std::string message = file_.string() + ": " + (path.empty() ? "(top level)" : path) + ": " + expected;
+    if (got != nullptr) message += ", got " + describe(*got);
+    throw softbody::InputError(message);
+  }
+
+  std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key) {
+    known_.insert(key);
+    return node_.contains(key);
+  }
+  const json& at(const std::string& key) { return node_.at(key); }
+
+  double number(const std::string& key, double fallback, const Range& range = kAny) {
+    if (!has(key)) return fallback;
+    return checked_number(at(key), child(key), range);
+  }
+
+  double checked_number(const json& value, const std::string& path, const Range& range) const {
+    if (!value.is_number()) fail(path, "expected a number" + range.words, &value);
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || !range.holds(x)) fail(path, "expected a finite number" + range.words, &value);
+    return x;
+  }
+
+  int integer(const std::string& key, int fallback, int lo, int hi) {
+    if (!has(key)) return fallback;
+    const json& value = at(key);
+    const std::string words = "an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
+    if (!value.is_number_integer()) fail(child(key), "expected " + words, &value);
+    const auto x = value.get<long long>();
+    if (x < lo || x > hi) fail(child(key), "expected " + words, &value);
+    return static_cast<int>(x);
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    if (!has(key)) return fallback;
+    if (!at(key).is_boolean()) fail(child(key), "expected true or false", &at(key));
+    return at(key).get<bool>();
+  }
+
+  std::string string(const std::string& key, const std::string& fallback) {
+    if (!has(key)) return fallback;
+    if (!at(key).is_string() || at(key).get<std::string>().empty()) {
+      fail(child(key), "expected a non-empty string", &at(key));
+    }
+    return at(key).get<std::string>();
+  }
+
+  template <typename Enum>
+  Enum choice(const std::string& key, Enum fallback, const std::vector<std::pair<std::string, Enum>>& options) {
+    if (!has(key)) return fallback;
+    std::string words = "expected one of";
+    for (const auto& [name, value] : options) {
+      if (at(key).is_string() && at(key).get<std::string>() == name) return value;
+      words += " \"" + name + "\"";
+    }
+    fail(child(key), words, &at(key));
+  }
+
+  Vec3 vec3(const std::string& key, const Vec3& fallback) {
+    if (!has(key)) return fallback;
+    const json& value = at(key);
+    if (!value.is_array() || value.size() != 3) fail(child(key), "expected an array of 3 numbers", &value);
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = checked_number(value[i], child(key) + "." + std::to_string(i), kAny);
+    return v;
+  }
+
+  std::array<float, 3> color(const std::string& key, const std::array<float, 3>& fallback) {
+    if (!has(key)) return fallback;
+    const json& value = at(key);
+    const Range unit{[](double x) { return x >= 0.0 && x <= 1.0; }, " in [0, 1]"};
+    if (!value.is_array() || value.size() != 3) fail(child(key), "expected an RGB array of 3 numbers in [0, 1]", &value);
+    std::array<float, 3> rgb{};
+    for (int i = 0; i < 3; ++i) {
+      rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), unit));
+    }
+    return rgb;
+  }
+
+  // Rejects keys this reader never asked for (typos), naming the first one and the keys it knows.
+  void reject_unknown() const {
+    for (const auto& [key, value] : node_.items()) {
+      if (known_.count(key) == 0) {
+        std::string words = "unknown key (known keys:";
+        for (const std::string& k : known_) words += " " + k;
+        fail(child(key), words + ")", nullptr);
+      }
+    }
+  }
+
+  const fs::path& file() const { return file_; }
+
+ private:
+  const json& node_;
+  std::string path_;
+  const fs::path& file_;
+  std::set<std::string> known_;
+};
+
+Solver read_solver(ObjectReader& top) {
+  Solver solver;
+  if (!top.has("solver")) return solver;
+  ObjectReader r(top.at("solver"), "solver", top.file());
+  solver.integrator = r.choice<Integrator>("integrator", solver.integrator, {{"euler", Integrator::Euler}});
+  solver.dt_s = r.number("dt", solver.dt_s, kPositive);
+  r.reject_unknown();
+  return solver;
+}
+
+std::optional<Floor> read_floor(ObjectReader& top) {
+  if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
+  ObjectReader r(top.at("floor"), "floor", top.file());
+  Floor floor;
+  floor.height_m = r.number("height", floor.height_m);
+  floor.contact = r.choice<ContactModel>("contact", floor.contact, {{"paper", ContactModel::Paper}});
+  r.reject_unknown();
+  return floor;
+}
+
+std::string read_mesh_spec(ObjectReader& r, Body& body) {
+  const std::string spec = r.string("mesh", body.mesh);
+  if (mesh::names_generator(spec)) {
+    if (const std::string error = mesh::generator_spec_error(spec); !error.empty()) {
+      r.fail(r.child("mesh"), error, nullptr);
+    }
+    return spec;
+  }
+  const fs::path file = r.file().parent_path() / spec;
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) {
+    r.fail(r.child("mesh"), "mesh file " + file.string() +
+                                " does not exist (expected a mesh file path relative to the scene, "
+                                "or a generator: icosphere:L, cube:N)",
+           nullptr);
+  }
+  body.mesh_file = file;
+  return spec;
+}
+
+Body read_body(const json& node, const std::string& path, const fs::path& file) {
+  ObjectReader r(node, path, file);
+  Body body;
+  body.mesh = read_mesh_spec(r, body);
+  body.position_m = r.vec3("position", body.position_m);
+  body.scale = r.number("scale", body.scale, kPositive);
+  body.velocity_m_per_s = r.vec3("velocity", body.velocity_m_per_s);
+  body.mass_kg = r.number("mass", body.mass_kg, kPositive);
+  body.stiffness_N_per_m = r.number("stiffness", body.stiffness_N_per_m, kNonNegative);
+  body.damping_N_s_per_m = r.number("damping", body.damping_N_s_per_m, kNonNegative);
+  body.pressure_J = r.number("pressure", body.pressure_J, kNonNegative);
+  body.color = r.color("color", body.color);
+  r.reject_unknown();
+  return body;
+}
+
+std::vector<Body> read_bodies(ObjectReader& top) {
+  if (!top.has("bodies")) top.fail("bodies", "expected an array of at least one body", nullptr);
+  const json& list = top.at("bodies");
+  if (!list.is_array() || list.empty()) top.fail("bodies", "expected an array of at least one body", &list);
+  std::vector<Body> bodies;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    bodies.push_back(read_body(list[i], "bodies." + std::to_string(i), top.file()));
+  }
+  return bodies;
+}
+
+int even_size(ObjectReader& r, const std::string& key, int fallback) {
+  const int size = r.integer(key, fallback, 2, 8192);
+  if (size % 2 != 0) r.fail(r.child(key), "expected an even number of pixels (video encoders need it)", &r.at(key));
+  return size;
+}
+
+RenderSettings read_render(ObjectReader& top) {
+  RenderSettings render;
+  if (!top.has("render")) return render;
+  ObjectReader r(top.at("render"), "render", top.file());
+  render.width_px = even_size(r, "width", render.width_px);
+  render.height_px = even_size(r, "height", render.height_px);
+  render.msaa = r.integer("msaa", render.msaa, 1, 4);
+  if (render.msaa == 3) r.fail("render.msaa", "expected 1, 2 or 4 samples", &r.at("msaa"));
+  render.shadows = r.boolean("shadows", render.shadows);
+  render.background = r.color("background", render.background);
+  render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
+  r.reject_unknown();
+  return render;
+}
+
+Camera read_camera(ObjectReader& top) {
+  Camera camera;
+  if (!top.has("camera")) return camera;
+  ObjectReader r(top.at("camera"), "camera", top.file());
+  camera.position_m = r.vec3("position", camera.position_m);
+  camera.target_m = r.vec3("target", camera.target_m);
+  camera.up = r.vec3("up", camera.up);
+  camera.fov_deg = r.number("fov", camera.fov_deg, Range{[](double x) { return x > 0 && x < 180; }, " in (0, 180) degrees"});
+  if ((camera.target_m - camera.position_m).norm() == 0.0) r.fail("camera.target", "expected a point other than camera.position", nullptr);
+  if (camera.up.norm() == 0.0 || camera.up.cross(camera.target_m - camera.position_m).norm() == 0.0) {
+    r.fail("camera.up", "expected a non-zero vector not parallel to the view direction", nullptr);
+  }
+  r.reject_unknown();
+  return camera;
+}
+
+Light read_light(ObjectReader& top) {
+  Light light;
+  if (!top.has("light")) return light;
+  ObjectReader r(top.at("light"), "light", top.file());
+  light.direction = r.vec3("direction", light.direction);
+  if (light.direction.norm() == 0.0) r.fail("light.direction", "expected a non-zero vector", nullptr);
+  light.color = r.color("color", light.color);
+  light.ambient = static_cast<float>(r.number("ambient", light.ambient, Range{[](double x) { return x >= 0 && x <= 1; }, " in [0, 1]"}));
+  r.reject_unknown();
+  return light;
+}
+
+Output read_output(ObjectReader& top, const std::string& name) {
+  Output output;
+  output.dir = fs::path("out") / name;
+  if (!top.has("output")) return output;
+  ObjectReader r(top.at("output"), "output", top.file());
+  output.dir = r.string("dir", output.dir.string());
+  output.pattern = r.string("pattern", output.pattern);
+  r.reject_unknown();
+  return output;
+}
+
+}  // namespace
+
+json parse_scene_text(const std::string& text, const fs::path& file) {
+  try {
+    return json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    throw softbody::InputError(file.string() + ": not valid JSON: " + e.what());
+  }
+}
+
+Scene scene_from_json(const json& document, const fs::path& file) {
+  ObjectReader top(document, "", file);
+  Scene s;
+  s.source = file;
+  s.name = top.string("name", fs::path(file).stem().string());
+  if (s.name.find_first_of("/\\") != std::string::npos) top.fail("name", "expected a name without slashes", &top.at("name"));
+  s.duration_s = top.number("duration", s.duration_s, kPositive);
+  s.fps = top.integer("fps", s.fps, 1, 1000);
+  s.solver = read_solver(top);
+  s.gravity_m_per_s2 = top.vec3("gravity", s.gravity_m_per_s2);
+  s.floor = read_floor(top);
+  s.bodies = read_bodies(top);
+  s.render = read_render(top);
+  s.camera = read_camera(top);
+  s.light = read_light(top);
+  s.output = read_output(top, s.name);
+  top.reject_unknown();
+  return s;
+}
+
+Scene load_scene(const fs::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw softbody::InputError(file.string() + ": cannot open the scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  json document = parse_scene_text(text.str(), file);
+  for (const std::string& assignment : overrides) apply_override(document, assignment);
+  return scene_from_json(document, file);
+}
+
+std::string to_string(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::Euler: return "euler";
+  }
+  return "?";
+}
+
+std::string to_string(ContactModel contact) {
+  switch (contact) {
+    case ContactModel::Paper: return "paper";
+  }
+  return "?";
+}
+
+}  // namespace scene

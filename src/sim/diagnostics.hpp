@@ -1,0 +1,27 @@
+// Per-body measurements of a state: centre of mass, volume, and every energy term.
+#pragma once
+
+#include "sim/body.hpp"
+#include "sim/world.hpp"
+
+namespace sim {
+
+struct BodyDiagnostics {
+  Vec3 com_m = Vec3::Zero();               // centre of mass
+  Vec3 com_velocity_m_per_s = Vec3::Zero();
+  Vec3 momentum_kg_m_per_s = Vec3::Zero();
+  double volume_m3 = 0.0;                  // signed enclosed volume
+  double kinetic_J = 0.0;                  // Σ ½ m v²
+  double gravitational_J = 0.0;            // −Σ m g·x (zero at y = 0 for g along −y)
+  double spring_J = 0.0;                   // Σ ½ k (|d| − L0)²
+  double gas_J = 0.0;                      // −nRT ln(V / V0)
+  double min_y_m = 0.0;                    // lowest vertex
+  double total_J() const { return kinetic_J + gravitational_J + spring_J + gas_J; }
+};
+
+BodyDiagnostics diagnose(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, const Vec3& gravity);
+
+// Diagnostics of body `index` of the world's current state.
+BodyDiagnostics diagnose(const World& world, std::size_t index);
+
+}  // namespace sim

@@ -1,0 +1,40 @@
+// The force model of Matyka & Ollila (2003): gravity, spring-dampers along edges, ideal-gas pressure.
+// Every function adds into `force` (N); indices are local to one body.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace sim {
+
+using softbody::Triangle;
+using softbody::Vec3;
+
+// Gravity: f_i += m_i g.
+void add_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
+
+// Hooke springs: f_i += -k (|d| - L0) d̂ with d = x_i - x_j, and the opposite on j.
+void add_springs(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
+                 std::span<const Vec3> x, std::span<Vec3> force);
+
+// Dampers along the springs: f_i += -c ((v_i - v_j)·d̂) d̂, and the opposite on j.
+void add_dampers(std::span<const std::array<int, 2>> edges, double c, std::span<const Vec3> x,
+                 std::span<const Vec3> v, std::span<Vec3> force);
+
+// Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
+// relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
+double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);
+
+// The volume below which the gas law is evaluated at this floor instead (V → 0 would give P → ∞).
+double guarded_volume(double volume_m3, double rest_volume_m3);
+
+// Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each
+// corner. This is exactly +nRT ∂(ln V)/∂x_i, the negative gradient of E_gas = −nRT ln V, so the forces
+// on a closed mesh sum to zero. `area_vectors` is scratch of one entry per face. Returns V.
+double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
+                    std::vector<Vec3>& area_vectors, std::span<Vec3> force);
+
+}  // namespace sim

@@ -1,0 +1,104 @@
+// The world step as phases, and building a world from a scene.
+#include "sim/world.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "mesh/load.hpp"
+#include "sim/contact.hpp"
+#include "sim/forces.hpp"
+
+namespace sim {
+
+World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, scene::Integrator integrator)
+    : gravity_(gravity_m_per_s2), floor_(floor), integrator_(make_integrator(integrator)) {}
+
+void World::add_body(Topology topology, const Params& params, const std::vector<Vec3>& x0, const Vec3& v0) {
+  Body body;
+  body.first_vertex = static_cast<int>(state_.x.size());
+  body.vertex_count = static_cast<int>(x0.size());
+  body.params = params;
+  inverse_mass_.insert(inverse_mass_.end(), topology.inverse_mass.begin(), topology.inverse_mass.end());
+  body.topology = std::move(topology);
+  state_.x.insert(state_.x.end(), x0.begin(), x0.end());
+  state_.v.insert(state_.v.end(), x0.size(), v0);
+  area_scratch_.emplace_back(body.topology.faces.size());
+  bodies_.push_back(std::move(body));
+}
+
+void World::step(double dt) {
+  integrator_->step(*this, state_, dt);
+  resolve_contacts();
+  time_s_ += dt;
+  ++step_count_;
+  check_finite();
+}
+
+void World::forces(const State& state, std::vector<Vec3>& force) {
+  force.assign(state.x.size(), Vec3::Zero());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    const Topology& topology = body.topology;
+    const std::span<const Vec3> x(state.x.data() + body.first_vertex, body.vertex_count);
+    const std::span<const Vec3> v(state.v.data() + body.first_vertex, body.vertex_count);
+    const std::span<Vec3> f(force.data() + body.first_vertex, body.vertex_count);
+    add_gravity(topology.mass_kg, gravity_, f);
+    if (body.params.stiffness_N_per_m != 0.0) add_springs(topology.edges, topology.rest_length_m, body.params.stiffness_N_per_m, x, f);
+    if (body.params.damping_N_s_per_m != 0.0) add_dampers(topology.edges, body.params.damping_N_s_per_m, x, v, f);
+    if (body.params.pressure_J != 0.0) {
+      add_pressure(topology.faces, body.params.pressure_J, topology.rest_volume_m3, x, area_scratch_[b], f);
+    }
+  }
+}
+
+void World::accelerations(const State& state, std::vector<Vec3>& a) {
+  forces(state, a);
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] *= inverse_mass_[i];
+}
+
+void World::resolve_contacts() {
+  if (!floor_) return;
+  switch (floor_->contact) {
+    case scene::ContactModel::Paper: resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
+  }
+}
+
+void World::check_finite() const {
+  for (const Body& body : bodies_) {
+    for (int i = 0; i < body.vertex_count; ++i) {
+      const int g = body.first_vertex + i;
+      if (state_.x[g].allFinite() && state_.v[g].allFinite()) continue;
+      std::ostringstream message;
+      message << "diverged at t = " << time_s_ << " s (step " << step_count_ << "): body "
+              << (&body - bodies_.data()) << ", vertex " << i << " has a non-finite "
+              << (state_.x[g].allFinite() ? "velocity" : "position")
+              << "; try a smaller solver.dt or more damping";
+      throw softbody::DivergedError(message.str());
+    }
+  }
+}
+
+std::span<const Vec3> World::positions(const Body& body) const {
+  return {state_.x.data() + body.first_vertex, static_cast<std::size_t>(body.vertex_count)};
+}
+
+std::span<const Vec3> World::velocities(const Body& body) const {
+  return {state_.v.data() + body.first_vertex, static_cast<std::size_t>(body.vertex_count)};
+}
+
+World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
+  World world(scene.gravity_m_per_s2, scene.floor, scene.solver.integrator);
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const scene::Body& spec = scene.bodies[b];
+    const std::string context = scene.source.string() + ": bodies." + std::to_string(b) + ".mesh";
+    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, context);
+    notes.insert(notes.end(), loaded.notes.begin(), loaded.notes.end());
+    const std::vector<Vec3> x0 = place_mesh(loaded.mesh, spec);
+    Params params{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J};
+    world.add_body(build_topology(x0, loaded.mesh.triangles, spec.mass_kg), params, x0, spec.velocity_m_per_s);
+  }
+  return world;
+}
+
+}  // namespace sim
