@@ -87,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{R"({ "bodies": [ { "pressure": -5 } ] })", "s.json: bodies.0.pressure: expected a finite number >= 0"},
         BadInput{R"({ "bodies": [ { "mesh": "icosphere:12" } ] })", "s.json: bodies.0.mesh: expected icosphere:L with L an integer in 0..7"},
         BadInput{R"({ "bodies": [ { "mesh": "missing.obj" } ] })", "s.json: bodies.0.mesh: mesh file missing.obj does not exist"},
-        BadInput{R"({ "floor": { "contact": "sticky" }, "bodies": [ { } ] })", "s.json: floor.contact: expected one of \"paper\""},
+        BadInput{R"({ "floor": { "contact": "sticky" }, "bodies": [ { } ] })", "s.json: floor.contact: expected one of \"paper\" \"friction\""},
         BadInput{R"({ "render": { "width": 641 }, "bodies": [ { } ] })", "s.json: render.width: expected an even number of pixels"},
         BadInput{R"({ "bodies": [ { "color": [1, 2, 0] } ] })", "s.json: bodies.0.color.1: expected a finite number in [0, 1]"},
         BadInput{R"([1, 2])", "s.json: (top level): expected an object"}),
