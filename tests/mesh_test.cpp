@@ -124,6 +124,22 @@ TEST(Mesh, NonManifoldEdgeIsCounted) {
   EXPECT_EQ(mesh::count_edges(fan).non_manifold, 1u);
 }
 
+// Torus (2π² R r²) and capsule (π r² L + 4/3 π r³): closed, outward wound, volumes converging from below.
+TEST(Mesh, TorusAndCapsuleAreClosedWithConvergingVolume) {
+  const double torus_volume = 2 * std::numbers::pi * std::numbers::pi * 1.0 * 0.4 * 0.4;
+  const double capsule_volume = std::numbers::pi * 0.25 * 1.0 + 4.0 / 3.0 * std::numbers::pi * 0.125;
+  for (const auto& [spec, exact] : {std::pair{"torus:16,8", torus_volume}, std::pair{"torus:128,64", torus_volume},
+                                    std::pair{"capsule:8", capsule_volume}, std::pair{"capsule:96", capsule_volume}}) {
+    mesh::TriMesh m = mesh::generate(spec);
+    std::vector<std::string> notes;
+    EXPECT_NO_THROW(mesh::validate_closed(m, notes)) << spec;
+    EXPECT_TRUE(notes.empty()) << spec << " was wound inward";
+    const double volume = mesh::signed_volume(m);
+    EXPECT_LT(volume, exact) << spec;
+    EXPECT_GT(volume, exact * (std::string(spec).find("128") != std::string::npos || std::string(spec).find("96") != std::string::npos ? 0.995 : 0.8)) << spec;
+  }
+}
+
 TEST(Mesh, GeneratorSpecsAreChecked) {
   EXPECT_EQ(mesh::generator_spec_error("icosphere:3"), "");
   EXPECT_EQ(mesh::generator_spec_error("cube:4"), "");
@@ -131,6 +147,9 @@ TEST(Mesh, GeneratorSpecsAreChecked) {
   EXPECT_NE(mesh::generator_spec_error("icosphere:x"), "");
   EXPECT_NE(mesh::generator_spec_error("cube:0"), "");
   EXPECT_FALSE(mesh::names_generator("meshes/bunny.obj"));
+  EXPECT_EQ(mesh::generator_spec_error("torus:24,12"), "");
+  EXPECT_NE(mesh::generator_spec_error("torus:24").find("expected torus:M,N"), std::string::npos);
+  EXPECT_NE(mesh::generator_spec_error("capsule:2"), "");
 }
 
 }  // namespace
