@@ -33,6 +33,12 @@ struct Floor {
   double friction = 0.5;     // friction model: Coulomb coefficient μ (static = sliding)
 };
 
+// Contact between bodies (vertices of one against the triangles of another), when there are several.
+struct Collisions {
+  double restitution = 0.3;  // normal speed kept after an impact
+  double friction = 0.5;     // Coulomb μ
+};
+
 struct Body {
   std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
   std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
@@ -82,6 +88,7 @@ struct Scene {
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
   std::optional<Floor> floor;          // no floor when absent
   std::vector<Body> bodies;
+  Collisions collisions;
   RenderSettings render;
   Camera camera;
   Light light;

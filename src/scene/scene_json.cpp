@@ -33,6 +33,7 @@ struct Range {
 const Range kAny{[](double) { return true; }, ""};
 const Range kPositive{[](double x) { return x > 0.0; }, " > 0"};
 const Range kNonNegative{[](double x) { return x >= 0.0; }, " >= 0"};
+const Range kUnitInterval{[](double x) { return x >= 0.0 && x <= 1.0; }, " in [0, 1]"};
 
 // One JSON object being read: knows its key path, marks the keys it reads, rejects the others.
 class ObjectReader {
@@ -114,11 +115,10 @@ class ObjectReader {
   std::array<float, 3> color(const std::string& key, const std::array<float, 3>& fallback) {
     if (!has(key)) return fallback;
     const json& value = at(key);
-    const Range unit{[](double x) { return x >= 0.0 && x <= 1.0; }, " in [0, 1]"};
     if (!value.is_array() || value.size() != 3) fail(child(key), "expected an RGB array of 3 numbers in [0, 1]", &value);
     std::array<float, 3> rgb{};
     for (int i = 0; i < 3; ++i) {
-      rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), unit));
+      rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), kUnitInterval));
     }
     return rgb;
   }
@@ -160,7 +160,7 @@ std::optional<Floor> read_floor(ObjectReader& top) {
   floor.height_m = r.number("height", floor.height_m);
   floor.contact = r.choice<ContactModel>("contact", floor.contact,
                                          {{"paper", ContactModel::Paper}, {"friction", ContactModel::Friction}});
-  floor.restitution = r.number("restitution", floor.restitution, Range{[](double x) { return x >= 0 && x <= 1; }, " in [0, 1]"});
+  floor.restitution = r.number("restitution", floor.restitution, kUnitInterval);
   floor.friction = r.number("friction", floor.friction, kNonNegative);
   r.reject_unknown();
   return floor;
@@ -213,6 +213,16 @@ std::vector<Body> read_bodies(ObjectReader& top) {
   return bodies;
 }
 
+Collisions read_collisions(ObjectReader& top) {
+  Collisions collisions;
+  if (!top.has("collisions")) return collisions;
+  ObjectReader r(top.at("collisions"), "collisions", top.file());
+  collisions.restitution = r.number("restitution", collisions.restitution, kUnitInterval);
+  collisions.friction = r.number("friction", collisions.friction, kNonNegative);
+  r.reject_unknown();
+  return collisions;
+}
+
 int even_size(ObjectReader& r, const std::string& key, int fallback) {
   const int size = r.integer(key, fallback, 2, 8192);
   if (size % 2 != 0) r.fail(r.child(key), "expected an even number of pixels (video encoders need it)", &r.at(key));
@@ -257,7 +267,7 @@ Light read_light(ObjectReader& top) {
   light.direction = r.vec3("direction", light.direction);
   if (light.direction.norm() == 0.0) r.fail("light.direction", "expected a non-zero vector", nullptr);
   light.color = r.color("color", light.color);
-  light.ambient = static_cast<float>(r.number("ambient", light.ambient, Range{[](double x) { return x >= 0 && x <= 1; }, " in [0, 1]"}));
+  light.ambient = static_cast<float>(r.number("ambient", light.ambient, kUnitInterval));
   r.reject_unknown();
   return light;
 }
@@ -295,6 +305,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.gravity_m_per_s2 = top.vec3("gravity", s.gravity_m_per_s2);
   s.floor = read_floor(top);
   s.bodies = read_bodies(top);
+  s.collisions = read_collisions(top);
   s.render = read_render(top);
   s.camera = read_camera(top);
   s.light = read_light(top);

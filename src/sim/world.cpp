@@ -58,6 +58,7 @@ void World::accelerations(const State& state, std::vector<Vec3>& a) {
 }
 
 void World::resolve_contacts() {
+  if (bodies_.size() > 1) collider_.resolve(bodies_, state_, body_contact_);
   if (!floor_) return;
   switch (floor_->contact) {
     case scene::ContactModel::Paper: resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
@@ -92,6 +93,7 @@ std::span<const Vec3> World::velocities(const Body& body) const {
 
 World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
   World world(scene.gravity_m_per_s2, scene.floor, scene.solver.integrator);
+  world.set_body_contact({scene.collisions.restitution, scene.collisions.friction});
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string context = scene.source.string() + ": bodies." + std::to_string(b) + ".mesh";

@@ -9,6 +9,7 @@
 
 #include "scene/scene.hpp"
 #include "sim/body.hpp"
+#include "sim/body_collision.hpp"
 #include "sim/integrators.hpp"
 
 namespace sim {
@@ -20,7 +21,11 @@ class World final : public Dynamics {
   // Appends a body whose vertices start at `x0` (world coordinates) with the common velocity `v0`.
   void add_body(Topology topology, const Params& params, const std::vector<Vec3>& x0, const Vec3& v0);
 
-  // One time step of dt seconds: integrate (forces evaluated inside) → floor contact → check.
+  // Restitution and friction of contacts between bodies (only searched for when there are several).
+  void set_body_contact(const BodyContactSettings& settings) { body_contact_ = settings; }
+
+  // One time step of dt seconds: integrate (forces evaluated inside) → body contacts → floor contact →
+  // check.
   // Throws softbody::DivergedError when a position or velocity is no longer finite.
   void step(double dt);
 
@@ -56,6 +61,8 @@ class World final : public Dynamics {
   long long step_count_ = 0;
   std::vector<Vec3> force_scratch_;
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per face
+  BodyContactSettings body_contact_;
+  BodyCollider collider_;
 };
 
 // Builds the world a scene describes: loads and validates every body's mesh, places it, and builds its

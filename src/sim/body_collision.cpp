@@ -1,0 +1,235 @@
+// Body–body contact: broad phase by boxes and a triangle grid, impulses split by barycentric weights.
+#include "sim/body_collision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <numbers>
+
+namespace sim {
+namespace {
+
+// Search range around a vertex and contact thickness, as fractions of the surface body's mean rest edge.
+constexpr double kSearchFraction = 0.5;    // deepest penetration still pushed back out
+constexpr double kThicknessFraction = 0.02; // gap kept between a vertex and another body's surface
+
+constexpr double kCellFraction = 1.5;      // grid cell size over the surface body's longest rest edge
+
+double max_rest_edge(const Body& body) {
+  double longest = 0.0;
+  for (double length : body.topology.rest_length_m) longest = std::max(longest, length);
+  return longest;
+}
+
+double mean_rest_edge(const Body& body) {
+  double sum = 0.0;
+  for (double length : body.topology.rest_length_m) sum += length;
+  return sum / static_cast<double>(std::max<std::size_t>(1, body.topology.rest_length_m.size()));
+}
+
+struct ClosestPoint {
+  Vec3 point;
+  Vec3 weights;  // barycentric weights of the triangle's corners
+};
+
+// Closest point of triangle (a, b, c) to p, by the Voronoi region p falls in (vertex, edge or face).
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return {a, {1, 0, 0}};
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return {b, {0, 1, 0}};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double t = d1 / (d1 - d3);
+    return {a + t * ab, {1 - t, t, 0}};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return {c, {0, 0, 1}};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double t = d2 / (d2 - d6);
+    return {a + t * ac, {1 - t, 0, t}};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {b + t * (c - b), {0, 1 - t, t}};
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return {a + v * ab + w * ac, {1 - v - w, v, w}};
+}
+
+}  // namespace
+
+Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
+  const Vec3 scaled = ((p - grid_origin_) / cell_size_).array().floor().cwiseMax(0.0).cwiseMin(double(kMaxCellIndex));
+  return scaled.cast<int>();
+}
+
+std::uint64_t BodyCollider::cell_key(const Eigen::Vector3i& cell) {
+  return (static_cast<std::uint64_t>(cell.x()) << 42) | (static_cast<std::uint64_t>(cell.y()) << 21) |
+         static_cast<std::uint64_t>(cell.z());
+}
+
+void BodyCollider::build_grid(const Body& surface, const State& state, const Box& region, double cell_size) {
+  cell_size_ = cell_size;
+  grid_origin_ = region.lo;
+  cells_.clear();
+  const Vec3* x = state.x.data() + surface.first_vertex;
+  for (std::size_t f = 0; f < surface.topology.faces.size(); ++f) {
+    const Triangle& t = surface.topology.faces[f];
+    const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
+    const Vec3 hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
+    if ((hi.array() < region.lo.array()).any() || (lo.array() > region.hi.array()).any()) continue;
+    const Eigen::Vector3i first = cell_of(lo), last = cell_of(hi);
+    for (int cx = first.x(); cx <= last.x(); ++cx) {
+      for (int cy = first.y(); cy <= last.y(); ++cy) {
+        for (int cz = first.z(); cz <= last.z(); ++cz) cells_.push_back({cell_key({cx, cy, cz}), static_cast<int>(f)});
+      }
+    }
+  }
+  std::sort(cells_.begin(), cells_.end());
+}
+
+namespace {
+
+struct Contact {
+  int vertex;                    // global index of the vertex of the moving body
+  std::array<int, 3> corners;    // global indices of the surface triangle's corners
+  Vec3 weights;                  // barycentric weights of the closest point
+  Vec3 normal;                   // the surface's outward unit normal
+  double depth;                  // how far the vertex must move along the normal to sit `thickness` outside
+  double max_push;               // the most it is moved in one step
+};
+
+// Applies one contact: positions moved apart along the normal and a normal (restitution) plus tangential
+// (Coulomb) impulse, both split between the vertex and the triangle's corners by inverse mass and
+// barycentric weight. The vertex gets +J, the corners −w_k J, so momentum is conserved exactly.
+void apply_contact(const Contact& c, const std::vector<double>& inverse_mass, State& state,
+                   const BodyContactSettings& settings) {
+  const double inv_p = inverse_mass[c.vertex];
+  double denominator = inv_p;  // 1 / effective mass of the relative normal motion
+  for (int k = 0; k < 3; ++k) denominator += c.weights[k] * c.weights[k] * inverse_mass[c.corners[k]];
+
+  state.x[c.vertex] += std::min(c.depth, c.max_push) * c.normal;
+
+  Vec3 surface_velocity = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) surface_velocity += c.weights[k] * state.v[c.corners[k]];
+  const Vec3 relative = state.v[c.vertex] - surface_velocity;
+  const double normal_speed = relative.dot(c.normal);
+  if (normal_speed >= 0.0) return;  // separating already
+  const double target = -normal_speed > settings.resting_speed_m_per_s ? -settings.restitution * normal_speed : 0.0;
+  const double normal_impulse = (target - normal_speed) / denominator;  // kg·m/s
+  const Vec3 tangential = relative - normal_speed * c.normal;
+  const double tangential_speed = tangential.norm();
+  Vec3 impulse = normal_impulse * c.normal;
+  if (tangential_speed > 0.0) {
+    const double stopping_impulse = tangential_speed / denominator;
+    impulse -= std::min(settings.friction * normal_impulse, stopping_impulse) / tangential_speed * tangential;
+  }
+  state.v[c.vertex] += inv_p * impulse;
+  for (int k = 0; k < 3; ++k) state.v[c.corners[k]] -= c.weights[k] * inverse_mass[c.corners[k]] * impulse;
+}
+
+bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const Vec3& hi_b, double margin) {
+  return (lo_a.array() <= hi_b.array() + margin).all() && (lo_b.array() <= hi_a.array() + margin).all();
+}
+
+}  // namespace
+
+int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface, State& state,
+                                                     const BodyContactSettings& settings) {
+  const double edge = mean_rest_edge(surface);
+  const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
+  // Only the surface triangles near the moving body matter: the grid holds those alone.
+  const Box& moving_box = boxes_[moving_index_];
+  const Box region{moving_box.lo - Vec3::Constant(search), moving_box.hi + Vec3::Constant(search)};
+  const Box& surface_box = boxes_[surface_index_];
+  build_grid(surface, state, region, kCellFraction * max_rest_edge(surface));
+  const Vec3* x_surface = state.x.data() + surface.first_vertex;
+  int contacts = 0;
+  for (int i = 0; i < moving.vertex_count; ++i) {
+    const int vertex = moving.first_vertex + i;
+    const Vec3 p = state.x[vertex];
+    if ((p.array() < surface_box.lo.array() - search).any() || (p.array() > surface_box.hi.array() + search).any()) continue;
+    // Nearest triangle among those in the grid cells that the search sphere's box touches.
+    double best_distance = search;
+    int best = -1;
+    ClosestPoint best_point{};
+    const Eigen::Vector3i first = cell_of(p - Vec3::Constant(search)), last = cell_of(p + Vec3::Constant(search));
+    for (int cx = first.x(); cx <= last.x(); ++cx) {
+      for (int cy = first.y(); cy <= last.y(); ++cy) {
+        for (int cz = first.z(); cz <= last.z(); ++cz) {
+          auto range = std::equal_range(cells_.begin(), cells_.end(), Cell{cell_key({cx, cy, cz}), 0},
+                                        [](const Cell& a, const Cell& b) { return a.key < b.key; });
+          for (auto it = range.first; it != range.second; ++it) {
+            const Triangle& t = surface.topology.faces[it->triangle];
+            const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
+            const double distance = (p - q.point).norm();
+            if (distance < best_distance || (distance == best_distance && it->triangle < best)) {
+              best_distance = distance;
+              best = it->triangle;
+              best_point = q;
+            }
+          }
+        }
+      }
+    }
+    if (best < 0) continue;
+    const Triangle& t = surface.topology.faces[best];
+    const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
+    const double height = (p - best_point.point).dot(normal);  // < 0: inside the surface body
+    if (height >= thickness) continue;
+    const Contact contact{vertex,
+                          {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
+                          best_point.weights, normal, thickness - height, 0.1 * search};
+    apply_contact(contact, inverse_mass_, state, settings);
+    ++contacts;
+  }
+  return contacts;
+}
+
+int BodyCollider::resolve(const std::vector<Body>& bodies, State& state, const BodyContactSettings& settings) {
+  if (bodies.size() < 2) return 0;
+  boxes_.resize(bodies.size());
+  inverse_mass_.resize(state.x.size());
+  for (const Body& body : bodies) {
+    Box& box = boxes_[&body - bodies.data()];
+    box.lo = box.hi = state.x[body.first_vertex];
+    for (int i = 0; i < body.vertex_count; ++i) {
+      box.lo = box.lo.cwiseMin(state.x[body.first_vertex + i]);
+      box.hi = box.hi.cwiseMax(state.x[body.first_vertex + i]);
+      inverse_mass_[body.first_vertex + i] = body.topology.inverse_mass[i];
+    }
+  }
+  int contacts = 0;
+  for (std::size_t a = 0; a < bodies.size(); ++a) {
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (a == b) continue;
+      const double margin = kSearchFraction * mean_rest_edge(bodies[b]);
+      if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
+      moving_index_ = a;
+      surface_index_ = b;
+      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], state, settings);
+    }
+  }
+  return contacts;
+}
+
+double winding_number(std::span<const Vec3> x, std::span<const Triangle> faces, const Vec3& p) {
+  double solid_angle = 0.0;
+  for (const Triangle& f : faces) {
+    const Vec3 a = x[f[0]] - p, b = x[f[1]] - p, c = x[f[2]] - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    solid_angle += 2.0 * std::atan2(numerator, denominator);
+  }
+  return solid_angle / (4.0 * std::numbers::pi);
+}
+
+}  // namespace sim
