@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "app/commands.hpp"
 #include "frames/frame_clock.hpp"
@@ -26,7 +27,8 @@ int run_simulate(const SimulateOptions& options) {
   const scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
   const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
   std::vector<std::string> notes;
-  if (!clock.dt_note.empty()) notes.push_back(clock.dt_note);
+  const bool adaptive = scene.solver.integrator == scene::Integrator::Rk45;  // chooses its own steps
+  if (!clock.dt_note.empty() && !adaptive) notes.push_back(clock.dt_note);
   sim::World world = sim::build_world(scene, notes);
   print_notes(notes);
 
@@ -36,10 +38,17 @@ int run_simulate(const SimulateOptions& options) {
   frames::FrameSink* sinks[] = {&csv_sink};
   const frames::RunStats stats = frames::run_frames(world, clock, sinks);
 
-  std::size_t vertices = world.state().x.size();
-  std::printf("%s: %d frames, %lld steps of %.4g s (%s), %zu vertices, in %.3f s: %.0f steps/s; wrote %s\n",
-              scene.name.c_str(), stats.frames, stats.steps, clock.dt_s,
-              scene::to_string(scene.solver.integrator).c_str(), vertices, stats.wall_s,
+  std::size_t vertices = std::as_const(world).state().x.size();
+  char steps[160];
+  if (adaptive) {
+    std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,
+                  stats.rejected_steps, scene.solver.tolerance);
+  } else {
+    std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (%s)", stats.steps, clock.dt_s,
+                  scene::to_string(scene.solver.integrator).c_str());
+  }
+  std::printf("%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; wrote %s\n", scene.name.c_str(),
+              stats.frames, steps, vertices, stats.wall_s,
               static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), csv.string().c_str());
   return 0;
 }
