@@ -40,12 +40,12 @@ void ImplicitEuler::build_pattern(Dynamics& dynamics, std::size_t vertex_count) 
   matrix_.setFromTriplets(entries.begin(), entries.end());  // sums duplicates: shared edges are fine
   matrix_.makeCompressed();
 
-  // A block's three rows are adjacent in each of its columns (every block is a full 3×3), so the
-  // offset of its first row in each column locates the whole block.
+  // A block's three columns are adjacent in each of its rows (every block is a full 3×3), so the
+  // offset of its first column in each row locates the whole block.
   auto locate = [this](int row_vertex, int column_vertex) {
-    BlockColumns block{};
-    for (int c = 0; c < 3; ++c) {
-      block[c] = &matrix_.coeffRef(3 * row_vertex, 3 * column_vertex + c) - matrix_.valuePtr();
+    BlockRows block{};
+    for (int r = 0; r < 3; ++r) {
+      block[r] = &matrix_.coeffRef(3 * row_vertex + r, 3 * column_vertex) - matrix_.valuePtr();
     }
     return block;
   };
@@ -65,10 +65,10 @@ void ImplicitEuler::build_pattern(Dynamics& dynamics, std::size_t vertex_count) 
   pattern_vertices_ = vertex_count;
 }
 
-void ImplicitEuler::add_block(const BlockColumns& block, const Eigen::Matrix3d& value, double sign) {
+void ImplicitEuler::add_block(const BlockRows& block, const Eigen::Matrix3d& value, double sign) {
   double* values = matrix_.valuePtr();
-  for (int c = 0; c < 3; ++c) {
-    for (int r = 0; r < 3; ++r) values[block[c] + r] += sign * value(r, c);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) values[block[r] + c] += sign * value(r, c);
   }
 }
 

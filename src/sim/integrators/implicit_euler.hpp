@@ -30,21 +30,22 @@ class ImplicitEuler final : public Integrator {
   void step(Dynamics& dynamics, State& state, double dt) override;
 
  private:
-  using SparseMatrix = Eigen::SparseMatrix<double>;
-  // Where one 3×3 block lives in the matrix's value array: the offset of each of its three columns.
-  using BlockColumns = std::array<Eigen::Index, 3>;
+  // Row-major: the product in CG then gathers along rows, which measured faster than column scatter.
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  // Where one 3×3 block lives in the matrix's value array: the offset of each of its three rows.
+  using BlockRows = std::array<Eigen::Index, 3>;
   struct EdgeBlocks {
     int i = 0, j = 0;  // world vertex indices
     double rest_length_m = 0.0, stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
-    BlockColumns ii{}, jj{}, ij{}, ji{};
+    BlockRows ii{}, jj{}, ij{}, ji{};
   };
 
   void build_pattern(Dynamics& dynamics, std::size_t vertex_count);
   void assemble(const State& state, std::span<const double> mass_kg, double dt);
-  void add_block(const BlockColumns& block, const Eigen::Matrix3d& value, double sign);
+  void add_block(const BlockRows& block, const Eigen::Matrix3d& value, double sign);
 
   std::vector<EdgeBlocks> edges_;
-  std::vector<BlockColumns> diagonal_;  // per vertex
+  std::vector<BlockRows> diagonal_;  // per vertex
   SparseMatrix matrix_;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver_;
   Eigen::VectorXd rhs_, delta_v_, guess_;
