@@ -20,7 +20,7 @@ struct AccuracyCommand {
   bench::AccuracyOptions options;
 };
 
-std::vector<scene::Integrator> parse_integrators(const std::vector<std::string>& names) {
+std::vector<scene::Integrator> parse_integrators(const std::string& option, const std::vector<std::string>& names) {
   std::vector<scene::Integrator> chosen;
   for (const std::string& name : names) {
     bool known = false;
@@ -31,7 +31,7 @@ std::vector<scene::Integrator> parse_integrators(const std::vector<std::string>&
       }
     }
     if (!known) {
-      throw softbody::InputError("unknown integrator '" + name +
+      throw softbody::InputError(option + ": unknown integrator '" + name +
                                  "' (expected euler, symplectic, verlet, rk4, rk45 or implicit)");
     }
   }
@@ -40,8 +40,8 @@ std::vector<scene::Integrator> parse_integrators(const std::vector<std::string>&
 
 int run_accuracy(AccuracyCommand& command) {
   const scene::Scene scene = scene::load_scene(command.scene.scene_file, command.scene.overrides);
-  if (!command.integrators.empty()) command.options.integrators = parse_integrators(command.integrators);
-  command.options.reference_integrator = parse_integrators({command.reference_integrator}).front();
+  if (!command.integrators.empty()) command.options.integrators = parse_integrators("--integrators", command.integrators);
+  command.options.reference_integrator = parse_integrators("--reference-integrator", {command.reference_integrator}).front();
   const bench::AccuracyResult result = bench::run_accuracy_benchmark(
       scene, command.options, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   const auto written = bench::write_work_precision(result, command.out_dir);
