@@ -22,5 +22,9 @@ void add_scene_options(CLI::App& command, SceneOptions& options);
 using Action = std::function<int()>;
 Action register_simulate(CLI::App& parent);
 Action register_export(CLI::App& parent);
+Action register_bench(CLI::App& parent);
+
+// Makes `command` the accuracy benchmark (softbody bench accuracy, and build/bench_accuracy).
+Action add_accuracy_options(CLI::App& command);
 
 }  // namespace app

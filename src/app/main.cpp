@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   std::map<std::string, app::Action> actions;
   actions["simulate"] = app::register_simulate(cli);
   actions["export"] = app::register_export(cli);
+  actions["bench"] = app::register_bench(cli);
 
   try {
     cli.parse(argc, argv);

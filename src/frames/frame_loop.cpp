@@ -12,11 +12,23 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Simulates from frame `frame - 1` to frame `frame`: whole fixed steps, or the adaptive steps that land
+// exactly on the frame time.
+void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
+  if (world.adaptive()) {
+    world.advance_to(frame * clock.frame_interval_s);
+    return;
+  }
+  for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
+}
+
 }  // namespace
 
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,
                     const Progress& progress) {
   RunStats stats;
+  const long long steps_before = world.step_count();
+  const long long rejected_before = world.rejected_step_count();
   const auto start = Clock::now();
   auto emit = [&](int index) {
     // Time from the frame index, not the accumulated step sum, so frame times carry no round-off drift.
@@ -29,9 +41,10 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
     emit(0);
     for (int frame = 1; frame <= clock.frame_count; ++frame) {
       const auto step_start = Clock::now();
-      for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
+      advance_one_frame(world, clock, frame);
       stats.step_wall_s += seconds_since(step_start);
-      stats.steps += clock.steps_per_frame;
+      stats.steps = world.step_count() - steps_before;
+      stats.rejected_steps = world.rejected_step_count() - rejected_before;
       emit(frame);
     }
   } catch (...) {

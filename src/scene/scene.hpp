@@ -13,7 +13,15 @@ namespace scene {
 
 using softbody::Vec3;
 
-enum class Integrator { Euler };
+// Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in docs/integrators.md.
+enum class Integrator {
+  Euler,       // forward Euler (Matyka & Ollila 2003, Eq. 11): first order
+  Symplectic,  // semi-implicit Euler: v from the force, then x from the new v; first order, symplectic
+  Verlet,      // velocity Verlet: second order, one force evaluation per step
+  Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
+  Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
+  Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
+};
 
 // How vertices below the floor are handled.
 enum class ContactModel {
@@ -24,6 +32,9 @@ enum class ContactModel {
 struct Solver {
   Integrator integrator = Integrator::Euler;
   double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
+                       // (rk45: only the first trial step; it then chooses its own)
+  double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
+                            // and velocities [m/s]
 };
 
 struct Floor {

@@ -147,8 +147,15 @@ Solver read_solver(ObjectReader& top) {
   Solver solver;
   if (!top.has("solver")) return solver;
   ObjectReader r(top.at("solver"), "solver", top.file());
-  solver.integrator = r.choice<Integrator>("integrator", solver.integrator, {{"euler", Integrator::Euler}});
+  solver.integrator = r.choice<Integrator>("integrator", solver.integrator,
+                                           {{"euler", Integrator::Euler},
+                                            {"symplectic", Integrator::Symplectic},
+                                            {"verlet", Integrator::Verlet},
+                                            {"rk4", Integrator::Rk4},
+                                            {"rk45", Integrator::Rk45},
+                                            {"implicit", Integrator::Implicit}});
   solver.dt_s = r.number("dt", solver.dt_s, kPositive);
+  solver.tolerance = r.number("tolerance", solver.tolerance, kPositive);
   r.reject_unknown();
   return solver;
 }
@@ -327,6 +334,11 @@ Scene load_scene(const fs::path& file, const std::vector<std::string>& overrides
 std::string to_string(Integrator integrator) {
   switch (integrator) {
     case Integrator::Euler: return "euler";
+    case Integrator::Symplectic: return "symplectic";
+    case Integrator::Verlet: return "verlet";
+    case Integrator::Rk4: return "rk4";
+    case Integrator::Rk45: return "rk45";
+    case Integrator::Implicit: return "implicit";
   }
   return "?";
 }

@@ -1,8 +1,15 @@
-// Time integrators. Each sees the system only through Dynamics ("accelerations of this state"), so
-// forces, contacts and guards are written once for all of them.
+// Time integrators. Each sees the system only through Dynamics ("accelerations of this state", plus the
+// spring network for the implicit method), so forces, contacts and guards are written once for all of them.
+//
+// Every integrator advances the smooth equations of motion ẋ = v, v̇ = a(x, v). Floor contact is not part
+// of them: World::step projects the state after each step. A step that contains a contact event is
+// therefore only first order (the event is resolved at step granularity) whatever the integrator; steps
+// without contact keep the integrator's own order.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -10,31 +17,53 @@
 
 namespace sim {
 
+// One body's spring-dampers in world vertex numbering, for integrators that linearise the forces.
+struct SpringSet {
+  std::span<const std::array<int, 2>> edges;  // local vertex indices; add first_vertex for the state's
+  std::span<const double> rest_length_m;
+  double stiffness_N_per_m = 0.0;
+  double damping_N_s_per_m = 0.0;
+  int first_vertex = 0;
+};
+
 class Dynamics {
  public:
   virtual ~Dynamics() = default;
   // a_i = f_i(x, v) / m_i for every vertex of `state` [m/s²]; `a` is resized by the callee.
   virtual void accelerations(const State& state, std::vector<Vec3>& a) = 0;
+  // f_i(x, v) for every vertex [N]; `force` is resized by the callee.
+  virtual void forces(const State& state, std::vector<Vec3>& force) = 0;
+  // m_i of every vertex [kg].
+  virtual std::span<const double> vertex_masses() const = 0;
+  // The spring-dampers of every body (the stiff, linearisable part of the forces).
+  virtual std::vector<SpringSet> spring_sets() const = 0;
 };
+
+class AdaptiveIntegrator;
 
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  // Advances `state` by dt seconds.
+  // Advances `state` by dt seconds (adaptive methods: one step of exactly dt, without error control).
   virtual void step(Dynamics& dynamics, State& state, double dt) = 0;
+  // The state was changed from outside (a contact projection, a user): forget what was cached about it.
+  virtual void restart() {}
+  // Non-null for integrators that choose their own step size.
+  virtual AdaptiveIntegrator* adaptive() { return nullptr; }
 };
 
-// Forward (explicit) Euler, the paper's method (Eq. 11), positions and velocities both from the state at
-// the start of the step: x' = x + h v, v' = v + h a(x, v). First order; energy of an undamped oscillator
-// of angular frequency ω grows by the factor (1 + h²ω²) every step.
-class ForwardEuler final : public Integrator {
+// An integrator with error control: it tries a step, accepts or rejects it, and proposes the next size.
+class AdaptiveIntegrator : public Integrator {
  public:
-  void step(Dynamics& dynamics, State& state, double dt) override;
-
- private:
-  std::vector<Vec3> a_;
+  struct Attempt {
+    bool accepted = false;  // true: `state` advanced by dt; false: `state` untouched
+    double next_dt_s = 0.0; // the step size the error estimate suggests next
+  };
+  virtual Attempt attempt(Dynamics& dynamics, State& state, double dt) = 0;
+  AdaptiveIntegrator* adaptive() override { return this; }
 };
 
-std::unique_ptr<Integrator> make_integrator(scene::Integrator kind);
+// The integrator a scene names; `tolerance` is used by rk45 only.
+std::unique_ptr<Integrator> make_integrator(scene::Integrator kind, double tolerance);
 
 }  // namespace sim

@@ -1,6 +1,7 @@
 // The world step as phases, and building a world from a scene.
 #include "sim/world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -12,27 +13,65 @@
 namespace sim {
 
 World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, scene::Integrator integrator)
-    : gravity_(gravity_m_per_s2), floor_(floor), integrator_(make_integrator(integrator)) {}
+    : World(gravity_m_per_s2, floor, scene::Solver{integrator}) {}
+
+World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, const scene::Solver& solver)
+    : gravity_(gravity_m_per_s2),
+      floor_(floor),
+      integrator_(make_integrator(solver.integrator, solver.tolerance)),
+      adaptive_dt_s_(solver.dt_s) {}
 
 void World::add_body(Topology topology, const Params& params, const std::vector<Vec3>& x0, const Vec3& v0) {
   Body body;
   body.first_vertex = static_cast<int>(state_.x.size());
   body.vertex_count = static_cast<int>(x0.size());
   body.params = params;
+  mass_.insert(mass_.end(), topology.mass_kg.begin(), topology.mass_kg.end());
   inverse_mass_.insert(inverse_mass_.end(), topology.inverse_mass.begin(), topology.inverse_mass.end());
   body.topology = std::move(topology);
   state_.x.insert(state_.x.end(), x0.begin(), x0.end());
   state_.v.insert(state_.v.end(), x0.size(), v0);
   area_scratch_.emplace_back(body.topology.faces.size());
   bodies_.push_back(std::move(body));
+  integrator_->restart();
 }
 
 void World::step(double dt) {
   integrator_->step(*this, state_, dt);
+  after_step(dt);
+}
+
+void World::after_step(double dt) {
   resolve_contacts();
   time_s_ += dt;
   ++step_count_;
   check_finite();
+}
+
+void World::advance_to(double end_time_s) {
+  AdaptiveIntegrator& adaptive = *integrator_->adaptive();
+  while (time_s_ < end_time_s) {
+    const double remaining = end_time_s - time_s_;
+    const bool last = adaptive_dt_s_ >= remaining;
+    const double dt = last ? remaining : adaptive_dt_s_;
+    constexpr double kSmallestStep = 1e-14;  // relative to the time: below this, t + dt == t in doubles
+    if (dt <= kSmallestStep * std::max(1.0, end_time_s)) {
+      std::ostringstream message;
+      message << "diverged at t = " << time_s_ << " s (step " << step_count_ << "): the adaptive step size "
+              << "fell to " << dt << " s; the motion is unstable or solver.tolerance is too small";
+      throw softbody::DivergedError(message.str());
+    }
+    const AdaptiveIntegrator::Attempt attempt = adaptive.attempt(*this, state_, dt);
+    if (!attempt.accepted) {
+      ++rejected_step_count_;
+      adaptive_dt_s_ = attempt.next_dt_s;
+      continue;
+    }
+    // A step clipped to the frame boundary says little about the natural step: keep the larger one.
+    adaptive_dt_s_ = last ? std::max(attempt.next_dt_s, adaptive_dt_s_) : attempt.next_dt_s;
+    after_step(dt);
+    if (last) time_s_ = end_time_s;  // exactly, whatever the round-off of the sum
+  }
 }
 
 void World::forces(const State& state, std::vector<Vec3>& force) {
@@ -58,14 +97,19 @@ void World::accelerations(const State& state, std::vector<Vec3>& a) {
 }
 
 void World::resolve_contacts() {
-  if (bodies_.size() > 1) collider_.resolve(bodies_, state_, body_contact_);
-  if (!floor_) return;
-  switch (floor_->contact) {
-    case scene::ContactModel::Paper: resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
-    case scene::ContactModel::Friction:
-      resolve_floor_friction({floor_->height_m, floor_->restitution, floor_->friction}, state_.x, state_.v);
-      break;
+  int touched = 0;
+  if (bodies_.size() > 1) touched += collider_.resolve(bodies_, state_, body_contact_);
+  if (floor_) {
+    switch (floor_->contact) {
+      case scene::ContactModel::Paper: touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
+      case scene::ContactModel::Friction:
+        touched += resolve_floor_friction({floor_->height_m, floor_->restitution, floor_->friction}, state_.x, state_.v);
+        break;
+    }
   }
+  // The projection moved the state under the integrator: caches of the old state are stale. A step with
+  // such an event is only first order, whatever the integrator (see integrators.hpp).
+  if (touched > 0) integrator_->restart();
 }
 
 void World::check_finite() const {
@@ -83,6 +127,15 @@ void World::check_finite() const {
   }
 }
 
+std::vector<SpringSet> World::spring_sets() const {
+  std::vector<SpringSet> sets;
+  for (const Body& body : bodies_) {
+    sets.push_back({body.topology.edges, body.topology.rest_length_m, body.params.stiffness_N_per_m,
+                    body.params.damping_N_s_per_m, body.first_vertex});
+  }
+  return sets;
+}
+
 std::span<const Vec3> World::positions(const Body& body) const {
   return {state_.x.data() + body.first_vertex, static_cast<std::size_t>(body.vertex_count)};
 }
@@ -92,7 +145,7 @@ std::span<const Vec3> World::velocities(const Body& body) const {
 }
 
 World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
-  World world(scene.gravity_m_per_s2, scene.floor, scene.solver.integrator);
+  World world(scene.gravity_m_per_s2, scene.floor, scene.solver);
   world.set_body_contact({scene.collisions.restitution, scene.collisions.friction});
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];

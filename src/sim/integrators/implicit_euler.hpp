@@ -1,0 +1,56 @@
+// Linearised backward Euler (Baraff & Witkin 1998) with a sparse conjugate-gradient solve.
+#pragma once
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include "sim/integrators.hpp"
+
+namespace sim {
+
+// Baraff & Witkin, "Large steps in cloth simulation", SIGGRAPH 1998, Eqs. 6 and 15–16: one Newton step
+// of backward Euler, v' = v + Δv, x' = x + h v', with
+//   (M − h ∂f/∂v − h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0).
+// What is linearised and what is not:
+//   - springs: ∂f/∂x assembled exactly except for the definiteness fix below;
+//   - dampers: ∂f/∂v assembled exactly; their ∂f/∂x (small, non-symmetric) is dropped, as in the paper;
+//   - pressure and gravity: explicit, in f0 only. The gas force's Jacobian is a dense rank-one term plus
+//     an indefinite face term; the gas is soft next to the springs, so it does not limit the step here.
+// Definiteness: a compressed spring's geometric term k (1 − L0/|d|)(I − d̂d̂ᵀ) is negative, which can make
+// the matrix indefinite (Choi & Ko 2002). It is clamped at zero, so every spring block is positive
+// semi-definite, the system matrix is symmetric positive definite, and conjugate gradients apply.
+// First order; its numerical damping removes energy at large h, so it is stable far beyond the explicit
+// methods' limit (tests/integrators/stability_test.cpp).
+//
+// Allocation: the sparsity pattern, the matrix and the vectors are built on the first step (and again if
+// the number of vertices changes, i.e. a body was added); later steps only overwrite values. Eigen's CG solve
+// allocates its own four work vectors per call: the one allocation per step left.
+class ImplicitEuler final : public Integrator {
+ public:
+  void step(Dynamics& dynamics, State& state, double dt) override;
+
+ private:
+  // Row-major: the product in CG then gathers along rows, which measured faster than column scatter.
+  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  // Where one 3×3 block lives in the matrix's value array: the offset of each of its three rows.
+  using BlockRows = std::array<Eigen::Index, 3>;
+  struct EdgeBlocks {
+    int i = 0, j = 0;  // world vertex indices
+    double rest_length_m = 0.0, stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
+    BlockRows ii{}, jj{}, ij{}, ji{};
+  };
+
+  void build_pattern(Dynamics& dynamics, std::size_t vertex_count);
+  void assemble(const State& state, std::span<const double> mass_kg, double dt);
+  void add_block(const BlockRows& block, const Eigen::Matrix3d& value, double sign);
+
+  std::vector<EdgeBlocks> edges_;
+  std::vector<BlockRows> diagonal_;  // per vertex
+  SparseMatrix matrix_;
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver_;
+  Eigen::VectorXd rhs_, delta_v_, guess_;
+  std::vector<Vec3> force_;
+  std::size_t pattern_vertices_ = 0;
+};
+
+}  // namespace sim

@@ -1,0 +1,127 @@
+// Measured convergence orders on a smooth scene: the error against a fine reference shrinks like dt^p.
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace {
+
+using integrator_tests::make_world;
+using integrator_tests::rms_position_difference;
+using integrator_tests::run_for;
+
+// A breathing sphere under gravity, no floor (so no contact events: smooth motion). It starts at its spring
+// rest shape; the gas pushes it outward, it overshoots and breathes while falling. Dampers are on so that
+// Verlet's handling of velocity-dependent forces is part of what is measured.
+constexpr const char* kSmoothScene = R"({
+  "gravity": [0, -9.81, 0],
+  "bodies": [ { "mesh": "icosphere:2", "mass": 1.0, "stiffness": 500.0, "damping": 0.5, "pressure": 300 } ]
+})";
+
+// Time span: about 40 % of a breathing period, long enough for every mode to move, short enough that the
+// coarsest steps below are in the asymptotic range. Every dt below divides it.
+constexpr double kSpan = 0.128;  // s
+
+// Dormand–Prince's fifth-order formula at a fixed step (no error control).
+sim::State dormand_prince_state(double dt) {
+  sim::World world = make_world(kSmoothScene, scene::Integrator::Rk45);
+  run_for(world, kSpan, dt);
+  return world.state();
+}
+
+// The reference: fifth order at 2 µs, 50× finer than the finest rk4 step. Computed once; its distance to
+// the same at 4 µs bounds its error and must be far below the smallest error measured.
+constexpr double kReferenceDt = 2e-6;  // s
+const sim::State& reference() {
+  static const sim::State state = dormand_prince_state(kReferenceDt);
+  return state;
+}
+double reference_uncertainty() {
+  static const double difference = rms_position_difference(dormand_prince_state(2 * kReferenceDt), reference());
+  return difference;
+}
+
+// Least-squares slope of y against x.
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sum_x = 0, sum_y = 0, sum_xx = 0, sum_xy = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    sum_x += x[k];
+    sum_y += y[k];
+    sum_xx += x[k] * x[k];
+    sum_xy += x[k] * y[k];
+  }
+  return (n * sum_xy - sum_x * sum_y) / (n * sum_xx - sum_x * sum_x);
+}
+
+// errors[k] at dt / 2^k: the slope of log2(error) against k is minus the observed order.
+double observed_order(const std::vector<double>& errors) {
+  std::vector<double> k, log_error;
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    k.push_back(static_cast<double>(i));
+    log_error.push_back(std::log2(errors[i]));
+  }
+  return -fitted_slope(k, log_error);
+}
+
+struct OrderCase {
+  scene::Integrator integrator;
+  double coarsest_dt;  // s; then halved four times
+  double expected_order;
+};
+
+class ConvergenceOrder : public ::testing::TestWithParam<OrderCase> {};
+
+TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
+  const OrderCase c = GetParam();
+  const double finest_dt = c.coarsest_dt / 16.0;
+  const sim::State& exact = reference();
+  std::vector<double> errors;
+  for (double dt = c.coarsest_dt; dt >= finest_dt * 0.99; dt /= 2.0) {
+    sim::World world = make_world(kSmoothScene, c.integrator);
+    run_for(world, kSpan, dt);
+    errors.push_back(rms_position_difference(world.state(), exact));
+  }
+  const double order = observed_order(errors);
+  std::printf("%-10s", scene::to_string(c.integrator).c_str());
+  for (std::size_t k = 0; k < errors.size(); ++k) std::printf(" e(dt/%d)=%.3e", 1 << k, errors[k]);
+  std::printf("  pairwise:");
+  for (std::size_t k = 1; k < errors.size(); ++k) std::printf(" %.3f", std::log2(errors[k - 1] / errors[k]));
+  std::printf("  fitted order %.3f (reference uncertainty %.1e)\n", order, reference_uncertainty());
+  EXPECT_NEAR(order, c.expected_order, 0.2);
+  EXPECT_GT(errors.back(), 1e-11) << "the finest error must stay far above round-off";
+  EXPECT_LT(reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SmoothBreathingSphere, ConvergenceOrder,
+    ::testing::Values(OrderCase{scene::Integrator::Euler, 1e-4, 1.0},
+                      OrderCase{scene::Integrator::Symplectic, 1e-4, 1.0},
+                      OrderCase{scene::Integrator::Verlet, 4e-4, 2.0},
+                      OrderCase{scene::Integrator::Rk4, 1.28e-3, 4.0},
+                      OrderCase{scene::Integrator::Implicit, 1e-4, 1.0}),
+    [](const ::testing::TestParamInfo<OrderCase>& test) { return scene::to_string(test.param.integrator); });
+
+// rk45 has no step to halve: its global error should follow the tolerance, roughly proportionally
+// (Dormand–Prince's local error ∝ h⁵ and h ∝ tol^(1/5) make the error per unit time ∝ tol).
+TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
+  std::vector<double> log_tolerance, log_error;
+  for (double tolerance = 1e-4; tolerance >= 0.99e-9; tolerance /= 10.0) {
+    sim::World world = make_world(kSmoothScene, scene::Integrator::Rk45, tolerance);
+    world.advance_to(kSpan);
+    const double error = rms_position_difference(world.state(), reference());
+    std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,
+                world.step_count(), world.rejected_step_count());
+    log_tolerance.push_back(std::log10(tolerance));
+    log_error.push_back(std::log10(error));
+    EXPECT_LT(error, 10.0 * tolerance) << "the error should stay near the requested tolerance";
+  }
+  const double slope = fitted_slope(log_tolerance, log_error);
+  std::printf("rk45: d log(error) / d log(tolerance) = %.3f\n", slope);
+  EXPECT_NEAR(slope, 1.0, 0.3);
+}
+
+}  // namespace

@@ -1,0 +1,45 @@
+// Integrator test helpers.
+#include "support.hpp"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene_json.hpp"
+#include "sim/diagnostics.hpp"
+
+namespace integrator_tests {
+
+scene::Scene scene_with_solver(const std::string& json_text, const scene::Solver& solver) {
+  const std::filesystem::path file = std::filesystem::path(SOFTBODY_SOURCE_DIR) / "tests" / "inline.json";
+  scene::Scene s = scene::scene_from_json(scene::parse_scene_text(json_text, file), file);
+  s.solver = solver;
+  return s;
+}
+
+sim::World make_world(const std::string& json_text, scene::Integrator integrator, double tolerance) {
+  scene::Solver solver;
+  solver.integrator = integrator;
+  solver.tolerance = tolerance;
+  std::vector<std::string> notes;
+  return sim::build_world(scene_with_solver(json_text, solver), notes);
+}
+
+void run_for(sim::World& world, double duration_s, double dt) {
+  const auto steps = static_cast<long long>(std::llround(duration_s / dt));
+  for (long long i = 0; i < steps; ++i) world.step(dt);
+}
+
+double rms_position_difference(const sim::State& a, const sim::State& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.x.size(); ++i) sum += (a.x[i] - b.x[i]).squaredNorm();
+  return std::sqrt(sum / static_cast<double>(a.x.size()));
+}
+
+double total_energy(const sim::World& world) {
+  double energy = 0.0;
+  for (std::size_t b = 0; b < world.bodies().size(); ++b) energy += sim::diagnose(world, b).total_J();
+  return energy;
+}
+
+}  // namespace integrator_tests

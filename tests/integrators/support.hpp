@@ -1,0 +1,26 @@
+// Helpers shared by the integrator tests: worlds from scene text, fixed-step runs, state distances.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace integrator_tests {
+
+// The scene in `json_text` (comments allowed) with its solver replaced by `solver`.
+scene::Scene scene_with_solver(const std::string& json_text, const scene::Solver& solver);
+
+// The world of `json_text` integrated with `integrator` (rk45: with `tolerance`).
+sim::World make_world(const std::string& json_text, scene::Integrator integrator, double tolerance = 1e-6);
+
+// Runs whole steps of dt until `duration_s` (which dt must divide up to round-off).
+void run_for(sim::World& world, double duration_s, double dt);
+
+// RMS over vertices of |x_a − x_b| [m].
+double rms_position_difference(const sim::State& a, const sim::State& b);
+
+// Total energy of every body: kinetic + gravitational + spring + gas [J].
+double total_energy(const sim::World& world);
+
+}  // namespace integrator_tests
