@@ -1,0 +1,42 @@
+// Lighting shared by body.frag and floor.frag (prepended to each): one directional light, Blinn-Phong
+// diffuse and specular, an ambient floor, and a percentage-closer-filtered shadow map. Everything here is
+// linear light; the sRGB framebuffer encodes the result once, on write.
+uniform vec3 light_direction;  // unit; the way the light travels
+uniform vec3 light_color;      // linear RGB
+uniform float ambient;         // fraction of the light that reaches every surface
+uniform vec3 camera_position;  // m, world
+uniform bool shadows_enabled;
+uniform sampler2DShadow shadow_map;  // depth compare on, linear filtering, border depth 1 (lit)
+
+in vec3 world_position;
+in vec3 world_normal;
+in vec4 light_space_position;
+
+// Fraction of the light that reaches this point: 1 lit, 0 fully shadowed. 3×3 taps a texel apart, each
+// a hardware-compared bilinear lookup, so the penumbra is smooth over about 4 texels.
+float light_visibility() {
+  if (!shadows_enabled) return 1.0;
+  vec3 p = light_space_position.xyz / light_space_position.w * 0.5 + 0.5;  // clip → [0, 1] texture space
+  if (p.z >= 1.0) return 1.0;  // beyond the far plane: nothing there casts
+  const float kDepthBias = 0.002;  // of the light frustum's depth; the shadow pass also offsets slopes
+  vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
+  float lit = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      lit += texture(shadow_map, vec3(p.xy + vec2(dx, dy) * texel, p.z - kDepthBias));
+    }
+  }
+  return lit / 9.0;
+}
+
+// Outgoing linear radiance of a surface with diffuse colour `albedo` and unit normal `n`.
+vec3 shade(vec3 albedo, vec3 n, float specular_strength, float shininess) {
+  vec3 to_light = -light_direction;
+  vec3 to_eye = normalize(camera_position - world_position);
+  float n_dot_l = max(dot(n, to_light), 0.0);
+  vec3 halfway = normalize(to_light + to_eye);
+  float specular = n_dot_l > 0.0 ? specular_strength * pow(max(dot(n, halfway), 0.0), shininess) : 0.0;
+  float visible = light_visibility();
+  vec3 diffuse = albedo * (ambient + (1.0 - ambient) * n_dot_l * visible);
+  return light_color * (diffuse + specular * visible);
+}

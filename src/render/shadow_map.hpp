@@ -1,0 +1,38 @@
+// The directional light's shadow map: a depth texture of the bodies seen from the light, refitted each
+// frame around the bodies so that its texels are spent where the shadows are cast.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/gl_objects.hpp"
+
+namespace render {
+
+// An axis-aligned box around every shadow caster [m].
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+};
+
+// World → shadow-map clip space for light travelling along `direction`: an orthographic box around the
+// bounding sphere of `casters`. Only casters need to be inside it: a receiver outside the box samples
+// the texture border (depth 1) or lies beyond the far plane, and both read as lit.
+glm::mat4 light_view_projection_for(const glm::vec3& direction, const Bounds& casters);
+
+class ShadowMap {
+ public:
+  explicit ShadowMap(int size_px);
+
+  // Binds the depth framebuffer, sets the viewport and clears depth: draw the casters next.
+  void begin_pass() const;
+  // The depth texture, set up for sampler2DShadow (compare on, linear filtering, border depth 1).
+  GLuint texture() const { return depth_.get(); }
+
+ private:
+  int size_;
+  GlTexture depth_;
+  GlFramebuffer framebuffer_;
+};
+
+}  // namespace render
