@@ -6,7 +6,7 @@ uniform vec3 light_color;      // linear RGB
 uniform float ambient;         // fraction of the light that reaches every surface
 uniform vec3 camera_position;  // m, world
 uniform bool shadows_enabled;
-uniform sampler2DShadow shadow_map;  // depth compare on, linear filtering, border depth 1 (lit)
+uniform sampler2DShadow shadow_map;  // depth compare on, linear filtering, cleared and bordered at depth 1
 
 in vec3 world_position;
 in vec3 world_normal;
@@ -17,7 +17,10 @@ in vec4 light_space_position;
 float light_visibility() {
   if (!shadows_enabled) return 1.0;
   vec3 p = light_space_position.xyz / light_space_position.w * 0.5 + 0.5;  // clip → [0, 1] texture space
-  if (p.z >= 1.0) return 1.0;  // beyond the far plane: nothing there casts
+  // The light frustum is fitted around the casters only. A receiver beyond its far plane (the floor far
+  // below a ball) is behind every caster: compared at depth 1, it is shadowed exactly where a caster was
+  // drawn. One before the near plane is in front of them all and compares at 0 (lit).
+  p.z = clamp(p.z, 0.0, 1.0);
   const float kDepthBias = 0.002;  // of the light frustum's depth; the shadow pass also offsets slopes
   vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
   float lit = 0.0;

@@ -16,8 +16,9 @@ struct Bounds {
 };
 
 // World → shadow-map clip space for light travelling along `direction`: an orthographic box around the
-// bounding sphere of `casters`. Only casters need to be inside it: a receiver outside the box samples
-// the texture border (depth 1) or lies beyond the far plane, and both read as lit.
+// bounding sphere of `casters`. Only casters need to be inside it: a receiver beside the box samples the
+// texture border (depth 1, lit), and one beyond the far plane is compared at depth 1, so it is shadowed
+// exactly where a caster was drawn (lighting.glsl).
 glm::mat4 light_view_projection_for(const glm::vec3& direction, const Bounds& casters);
 
 class ShadowMap {
