@@ -1,8 +1,8 @@
 // Framebuffer objects for drawing, resolving and reading back.
 //
-// sRGB: colour renderbuffers are GL_SRGB8_ALPHA8 and GL_FRAMEBUFFER_SRGB is on while drawing, so the
-// shaders write linear light and the hardware encodes it to sRGB on store (blending and the resolve
-// work on the decoded values). glReadPixels returns the stored bytes: encoded once, never twice.
+// sRGB: colour renderbuffers are GL_SRGB8_ALPHA8 and the renderer keeps GL_FRAMEBUFFER_SRGB on while
+// drawing and resolving, so the shaders write linear light, the hardware encodes it on store, and the
+// resolve averages decoded samples. glReadPixels returns the stored bytes: encoded once, never twice.
 #include "render/render_targets.hpp"
 
 #include <algorithm>

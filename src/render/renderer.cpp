@@ -68,8 +68,12 @@ Renderer::Renderer(GlContext& context, RenderSettings settings)
 void Renderer::draw(std::span<const FrameMesh> bodies) {
   upload(bodies);
   const glm::mat4 light_view_projection = draw_shadow_pass(bodies);
+  // Linear shader output is sRGB-encoded on store (the clear colour too), and the resolve decodes the
+  // samples, averages them in linear light and encodes the result: the one conversion, done right.
+  glEnable(GL_FRAMEBUFFER_SRGB);
   draw_main_pass(light_view_projection);
   targets_.resolve();
+  glDisable(GL_FRAMEBUFFER_SRGB);  // read back the stored bytes as they are
   glFinish();
   check_gl("drawing a frame");
 }
@@ -121,7 +125,6 @@ void Renderer::set_lighting(const ShaderProgram& program, const glm::mat4& light
 
 void Renderer::draw_main_pass(const glm::mat4& light_view_projection) {
   targets_.bind_for_drawing();
-  glEnable(GL_FRAMEBUFFER_SRGB);  // linear shader output, sRGB-encoded on store (the clear colour too)
   glClearColor(settings_.background.r, settings_.background.g, settings_.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (shadow_map_) {
@@ -144,7 +147,6 @@ void Renderer::draw_main_pass(const glm::mat4& light_view_projection) {
     lit_body_program_.set("body_color", has_color ? settings_.body_colors[b] : kDefaultBodyColor);
     body_meshes_[b].draw();
   }
-  glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 }  // namespace render
