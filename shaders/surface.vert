@@ -5,6 +5,8 @@ layout(location = 1) in vec3 normal;    // unit, world
 
 uniform mat4 view_projection;        // world → camera clip space
 uniform mat4 light_view_projection;  // world → shadow-map clip space
+uniform float shadow_normal_offset;  // m: where a surface looks itself up in the shadow map, pushed out
+                                     // along its normal by a texel or two, so it does not shadow itself
 
 out vec3 world_position;
 out vec3 world_normal;
@@ -13,6 +15,7 @@ out vec4 light_space_position;
 void main() {
   world_position = position;
   world_normal = normal;
-  light_space_position = light_view_projection * vec4(position, 1.0);
+  // The floor has no normal attribute (it reads as 0): it casts nothing, so it needs no offset.
+  light_space_position = light_view_projection * vec4(position + normal * shadow_normal_offset, 1.0);
   gl_Position = view_projection * vec4(position, 1.0);
 }

@@ -14,6 +14,7 @@ namespace {
 
 constexpr int kShadowMapSize_px = 1024;   // fitted around the bodies each frame: ~2 mm texels for a 1 m ball
 constexpr int kShadowTextureUnit = 0;
+constexpr float kShadowNormalOffset_texels = 1.5f;  // covers the PCF taps one texel either side
 constexpr float kSquareSize_m = 1.0f;     // checker squares
 const glm::vec3 kLightSquare{0.78f, 0.78f, 0.76f};  // linear RGB
 const glm::vec3 kDarkSquare{0.30f, 0.30f, 0.32f};
@@ -67,11 +68,11 @@ Renderer::Renderer(GlContext& context, RenderSettings settings)
 
 void Renderer::draw(std::span<const FrameMesh> bodies) {
   upload(bodies);
-  const glm::mat4 light_view_projection = draw_shadow_pass(bodies);
+  const LightFrustum light = draw_shadow_pass(bodies);
   // Linear shader output is sRGB-encoded on store (the clear colour too), and the resolve decodes the
   // samples, averages them in linear light and encodes the result: the one conversion, done right.
   glEnable(GL_FRAMEBUFFER_SRGB);
-  draw_main_pass(light_view_projection);
+  draw_main_pass(light);
   targets_.resolve();
   glDisable(GL_FRAMEBUFFER_SRGB);  // read back the stored bytes as they are
   glFinish();
@@ -93,28 +94,29 @@ void Renderer::upload(std::span<const FrameMesh> bodies) {
   }
 }
 
-glm::mat4 Renderer::draw_shadow_pass(std::span<const FrameMesh> bodies) {
-  if (!shadow_map_ || bodies.empty()) return glm::mat4(1.0f);
-  const glm::mat4 light_view_projection = light_view_projection_for(settings_.light.direction, bounds_of(bodies));
+LightFrustum Renderer::draw_shadow_pass(std::span<const FrameMesh> bodies) {
+  if (!shadow_map_ || bodies.empty()) return {};
+  const LightFrustum light = fit_light_frustum(settings_.light.direction, bounds_of(bodies));
   shadow_map_->begin_pass();
   shadow_program_.use();
-  shadow_program_.set("light_view_projection", light_view_projection);
-  // Closed bodies store their back faces: the lit side then never compares against itself (no acne),
-  // and the slope offset covers the rest.
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_FRONT);
+  shadow_program_.set("light_view_projection", light.view_projection);
+  // Both faces are stored, so the map holds the surface nearest the light: the floor right at a
+  // body's contact edge is then clearly behind it and shadowed (storing only back faces, which lie on
+  // the floor there, let a lit seam through). The lit side's self-shadowing acne is held off by the
+  // slope-scaled offset here and the normal offset of the lookup (surface.vert).
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1.5f, 2.0f);
+  glPolygonOffset(2.0f, 2.0f);
   for (const BodyMesh& mesh : body_meshes_) mesh.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_CULL_FACE);
-  return light_view_projection;
+  return light;
 }
 
-void Renderer::set_lighting(const ShaderProgram& program, const glm::mat4& light_view_projection) const {
+void Renderer::set_lighting(const ShaderProgram& program, const LightFrustum& light) const {
   program.use();
   program.set("view_projection", camera_.projection * camera_.view);
-  program.set("light_view_projection", light_view_projection);
+  program.set("light_view_projection", light.view_projection);
+  const float texel_m = shadow_map_ ? light.width_m / static_cast<float>(shadow_map_->size_px()) : 0.0f;
+  program.set("shadow_normal_offset", kShadowNormalOffset_texels * texel_m);
   program.set("light_direction", glm::normalize(settings_.light.direction));
   program.set("light_color", settings_.light.color);
   program.set("ambient", settings_.light.ambient);
@@ -123,7 +125,7 @@ void Renderer::set_lighting(const ShaderProgram& program, const glm::mat4& light
   program.set("shadow_map", kShadowTextureUnit);
 }
 
-void Renderer::draw_main_pass(const glm::mat4& light_view_projection) {
+void Renderer::draw_main_pass(const LightFrustum& light) {
   targets_.bind_for_drawing();
   glClearColor(settings_.background.r, settings_.background.g, settings_.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -132,7 +134,7 @@ void Renderer::draw_main_pass(const glm::mat4& light_view_projection) {
     glBindTexture(GL_TEXTURE_2D, shadow_map_->texture());
   }
   if (floor_) {
-    set_lighting(lit_floor_program_, light_view_projection);
+    set_lighting(lit_floor_program_, light);
     lit_floor_program_.set("background", settings_.background);
     lit_floor_program_.set("square_size", kSquareSize_m);
     lit_floor_program_.set("fade_start", floor_fade_start_m_);
@@ -141,7 +143,7 @@ void Renderer::draw_main_pass(const glm::mat4& light_view_projection) {
     lit_floor_program_.set("dark_square", kDarkSquare);
     floor_->draw();
   }
-  set_lighting(lit_body_program_, light_view_projection);
+  set_lighting(lit_body_program_, light);
   for (std::size_t b = 0; b < body_meshes_.size(); ++b) {
     const bool has_color = b < settings_.body_colors.size();
     lit_body_program_.set("body_color", has_color ? settings_.body_colors[b] : kDefaultBodyColor);

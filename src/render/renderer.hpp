@@ -45,9 +45,9 @@ class Renderer {
 
  private:
   void upload(std::span<const FrameMesh> bodies);
-  glm::mat4 draw_shadow_pass(std::span<const FrameMesh> bodies);
-  void draw_main_pass(const glm::mat4& light_view_projection);
-  void set_lighting(const ShaderProgram& program, const glm::mat4& light_view_projection) const;
+  LightFrustum draw_shadow_pass(std::span<const FrameMesh> bodies);
+  void draw_main_pass(const LightFrustum& light);
+  void set_lighting(const ShaderProgram& program, const LightFrustum& light) const;
 
   GlContext& context_;  // current on this thread from here on
   RenderSettings settings_;

@@ -9,7 +9,7 @@
 
 namespace render {
 
-glm::mat4 light_view_projection_for(const glm::vec3& direction, const Bounds& casters) {
+LightFrustum fit_light_frustum(const glm::vec3& direction, const Bounds& casters) {
   const glm::vec3 centre = 0.5f * (casters.min + casters.max);
   // A little margin so that PCF taps at the silhouette still fall inside the map.
   const float radius = 0.5f * glm::length(casters.max - casters.min) * 1.05f + 0.01f;
@@ -18,7 +18,7 @@ glm::mat4 light_view_projection_for(const glm::vec3& direction, const Bounds& ca
   // The eye sits two radii back along the light: the sphere spans distances radius .. 3 radius from it,
   // inside the near and far planes with half a radius to spare on each side.
   const glm::mat4 view = glm::lookAt(centre - travel * (2.0f * radius), centre, up);
-  return glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) * view;
+  return {glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) * view, 2.0f * radius};
 }
 
 ShadowMap::ShadowMap(int size_px) : size_(size_px) {

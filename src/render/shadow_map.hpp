@@ -15,11 +15,17 @@ struct Bounds {
   glm::vec3 max{0.0f};
 };
 
-// World → shadow-map clip space for light travelling along `direction`: an orthographic box around the
-// bounding sphere of `casters`. Only casters need to be inside it: a receiver beside the box samples the
-// texture border (depth 1, lit), and one beyond the far plane is compared at depth 1, so it is shadowed
-// exactly where a caster was drawn (lighting.glsl).
-glm::mat4 light_view_projection_for(const glm::vec3& direction, const Bounds& casters);
+// The volume the shadow map covers: an orthographic box along the light.
+struct LightFrustum {
+  glm::mat4 view_projection{1.0f};  // world → shadow-map clip space
+  float width_m = 0.0f;             // side of the box across the light; a texel is width_m / map size
+};
+
+// The box for light travelling along `direction` around the bounding sphere of `casters`. Only casters
+// need to be inside it: a receiver beside the box samples the texture border (depth 1, lit), and one
+// beyond the far plane is compared at depth 1, so it is shadowed exactly where a caster was drawn
+// (lighting.glsl).
+LightFrustum fit_light_frustum(const glm::vec3& direction, const Bounds& casters);
 
 class ShadowMap {
  public:
@@ -29,6 +35,7 @@ class ShadowMap {
   void begin_pass() const;
   // The depth texture, set up for sampler2DShadow (compare on, linear filtering, border depth 1).
   GLuint texture() const { return depth_.get(); }
+  int size_px() const { return size_; }
 
  private:
   int size_;
