@@ -7,6 +7,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "output/png_codec.hpp"
 #include "test_context.hpp"
 
 namespace {
@@ -86,6 +87,26 @@ TEST(RenderCommand, MissingFfmpegIsAClearFailureAndLeavesNoVideo) {
   EXPECT_EQ(result.status, 1) << result.output;
   EXPECT_NE(result.output.find("ffmpeg"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(out / "v.mp4"));
+}
+
+TEST(RenderCommand, DivergedRunKeepsItsValidFramesAndWritesNoVideo) {
+  // A time step far too large for the stiffness: the run diverges after a few frames (exit status 3).
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_diverged");
+  const CommandResult result = run_command(render_command(
+      out, "--set solver.dt=0.01 --set bodies.0.stiffness=1e6 --video " + quoted(out / "v.mp4")));
+  EXPECT_EQ(result.status, 3) << result.output;
+  const int frames = count_frame_files(out);
+  EXPECT_GE(frames, 1);
+  EXPECT_LT(frames, 11);
+  for (const auto& entry : std::filesystem::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.rfind("frame_", 0), 0u) << "left behind: " << name;  // no video, figure or temporary
+  }
+  for (int i = 0; i < frames; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    EXPECT_NO_THROW(output::read_png(out / name)) << name;
+  }
 }
 
 TEST(RenderCommand, RerunRemovesFramesLeftByALongerRun) {
