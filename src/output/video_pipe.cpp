@@ -29,7 +29,11 @@ std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, i
           // input: raw RGB frames on stdin
           "-f", "rawvideo", "-pix_fmt", "rgb24", "-video_size", std::to_string(width) + "x" + std::to_string(height),
           "-framerate", std::to_string(fps), "-i", "pipe:0",
-          // output: H.264 that every player reads, index at the front for streaming
+          // output: H.264 that every player reads, index at the front for streaming. RGB → YUV with the
+          // BT.709 matrix, and the stream tagged so: untagged HD video is read as BT.709 by most players,
+          // and converting with ffmpeg's default BT.601 matrix would shift the colours.
+          "-vf", "scale=out_color_matrix=bt709:out_range=tv", "-colorspace", "bt709", "-color_primaries", "bt709",
+          "-color_trc", "bt709", "-color_range", "tv",
           "-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
           "-f", "mp4", output.string()};
 }
