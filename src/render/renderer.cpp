@@ -18,7 +18,7 @@ constexpr float kShadowNormalOffset_texels = 1.5f;  // covers the PCF taps one t
 constexpr float kSquareSize_m = 1.0f;     // checker squares
 const glm::vec3 kLightSquare{0.78f, 0.78f, 0.76f};  // linear RGB
 const glm::vec3 kDarkSquare{0.30f, 0.30f, 0.32f};
-const glm::vec3 kDefaultBodyColor{0.85f, 0.25f, 0.2f};
+const glm::vec3 kDefaultBodyColor{0.80f, 0.12f, 0.07f};  // the scene default (scene::Body::color)
 
 // The floor fades into the background between these multiples of the camera's distance to its target,
 // which hides the floor's edge and the aliasing near the horizon; the square reaches a bit beyond.
