@@ -138,6 +138,8 @@ TEST(SimulationSide, CoreLibraryCallsNoOpenGl) {
 }
 
 TEST(SimulationSide, SimulateRunsWithoutADisplayOrRenderer) {
+  // With GALLIUM_DRIVER naming no driver, Mesa 22's OSMesa cannot make a context (`render` crashes in
+  // OSMesaCreateContextAttribs), so a `simulate` that made one would fail here.
   const std::filesystem::path out = render_test::fresh_output_dir("cli_simulate");
   const CommandResult result =
       run_command("DISPLAY= GALLIUM_DRIVER=none " + quoted(SOFTBODY_EXE) + " simulate " +
