@@ -12,8 +12,10 @@ in vec3 world_position;
 in vec3 world_normal;
 in vec4 light_space_position;
 
-// Fraction of the light that reaches this point: 1 lit, 0 fully shadowed. 3×3 taps a texel apart, each
-// a hardware-compared bilinear lookup, so the penumbra is smooth over about 4 texels.
+// Fraction of the light that reaches this point: 1 lit, 0 fully shadowed. 2×2 taps half a texel either
+// side of the point, each a hardware-compared bilinear lookup: together a tent filter over 3×3 texels.
+// Looks the same as 3×3 taps at less than half the cost; llvmpipe runs both sides of a branch for a
+// mixed group of fragments, so the taps are paid for wherever the shadow map is sampled.
 float light_visibility() {
   if (!shadows_enabled) return 1.0;
   vec3 p = light_space_position.xyz / light_space_position.w * 0.5 + 0.5;  // clip → [0, 1] texture space
@@ -27,12 +29,12 @@ float light_visibility() {
   const float kDepthBias = 0.002;  // of the light frustum's depth; the shadow pass also offsets slopes
   vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
   float lit = 0.0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      lit += texture(shadow_map, vec3(p.xy + vec2(dx, dy) * texel, p.z - kDepthBias));
+  for (int dy = 0; dy < 2; ++dy) {
+    for (int dx = 0; dx < 2; ++dx) {
+      lit += texture(shadow_map, vec3(p.xy + (vec2(dx, dy) - 0.5) * texel, p.z - kDepthBias));
     }
   }
-  return lit / 9.0;
+  return lit / 4.0;
 }
 
 // Outgoing linear radiance of a surface with diffuse colour `albedo` and unit normal `n`.
