@@ -31,7 +31,7 @@ void main() {
   // passes through it exactly.
   float dark = a + b - 2.0 * a * b;
   vec3 albedo = mix(light_square, dark_square, dark);
-  vec3 lit = shade(albedo, vec3(0.0, 1.0, 0.0), 0.0, 1.0);
+  vec3 lit = shade_matte(albedo, vec3(0.0, 1.0, 0.0));
   float fade = smoothstep(fade_start, fade_end, distance(world_position, camera_position));
   fragment_color = vec4(mix(lit, background, fade), 1.0);
 }

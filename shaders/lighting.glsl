@@ -37,7 +37,13 @@ float light_visibility() {
   return lit / 4.0;
 }
 
-// Outgoing linear radiance of a surface with diffuse colour `albedo` and unit normal `n`.
+// Outgoing linear radiance of a matte surface (no highlight) with diffuse colour `albedo` and unit normal `n`.
+vec3 shade_matte(vec3 albedo, vec3 n) {
+  float n_dot_l = max(dot(n, -light_direction), 0.0);
+  return light_color * albedo * (ambient + (1.0 - ambient) * n_dot_l * light_visibility());
+}
+
+// Outgoing linear radiance of a glossy surface with diffuse colour `albedo` and unit normal `n`.
 vec3 shade(vec3 albedo, vec3 n, float specular_strength, float shininess) {
   vec3 to_light = -light_direction;
   vec3 to_eye = normalize(camera_position - world_position);
