@@ -1,20 +1,17 @@
 // `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
 #include <cstdio>
-#include <iostream>
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/prepared_run.hpp"
 #include "app/progress.hpp"
-#include "frames/frame_clock.hpp"
 #include "frames/frame_loop.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
-#include "scene/scene_json.hpp"
-#include "sim/world.hpp"
 
 namespace app {
 namespace {
@@ -52,14 +49,10 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 }
 
 int run_render(const RenderOptions& options) {
-  scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
+  PreparedRun run = prepare_run(options.scene);
+  scene::Scene& scene = run.scene;
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   output::check_frame_pattern(scene.output.pattern, scene.source.string());
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
-  std::vector<std::string> notes;
-  if (!clock.dt_note.empty()) notes.push_back(clock.dt_note);
-  sim::World world = sim::build_world(scene, notes);
-  for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
 
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context();
   render::Renderer renderer(*context, render::settings_from_scene(scene));
@@ -71,22 +64,22 @@ int run_render(const RenderOptions& options) {
   if (!options.video_file.empty()) outputs.video = options.video_file;
   outputs.fps = scene.fps;
   outputs.figure_frames = scene.render.figure_frames;
-  outputs.last_frame = clock.frame_count;
+  outputs.last_frame = run.clock.frame_count;
   std::filesystem::create_directories(outputs.dir);
   output::RenderSink sink(renderer, outputs);
 
   ProgressLine progress;
   frames::FrameSink* sinks[] = {&sink};
-  frames::RunStats run;
+  frames::RunStats stats;
   try {
-    run = frames::run_frames(world, clock, sinks, [&](int done, int last) { progress.update(done, last); });
+    stats = frames::run_frames(run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); });
   } catch (...) {
     progress.clear();
     throw;
   }
   progress.clear();
-  print_summary(scene, renderer, run, sink.timings());
-  print_written(outputs, sink, run.frames);
+  print_summary(scene, renderer, stats, sink.timings());
+  print_written(outputs, sink, stats.frames);
   return 0;
 }
 

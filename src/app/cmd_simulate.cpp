@@ -1,14 +1,9 @@
 // `softbody simulate SCENE [--csv FILE] [--set ...]`: run without rendering, write the CSV.
-#include <cstdio>
-#include <iostream>
 #include <memory>
 
 #include "app/commands.hpp"
-#include "frames/frame_clock.hpp"
-#include "frames/frame_loop.hpp"
+#include "app/prepared_run.hpp"
 #include "output/csv_sink.hpp"
-#include "scene/scene_json.hpp"
-#include "sim/world.hpp"
 
 namespace app {
 namespace {
@@ -18,29 +13,14 @@ struct SimulateOptions {
   std::string csv_file;
 };
 
-void print_notes(const std::vector<std::string>& notes) {
-  for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
-}
-
 int run_simulate(const SimulateOptions& options) {
-  const scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
-  std::vector<std::string> notes;
-  if (!clock.dt_note.empty()) notes.push_back(clock.dt_note);
-  sim::World world = sim::build_world(scene, notes);
-  print_notes(notes);
-
-  const std::filesystem::path csv = options.csv_file.empty() ? scene.output.dir / "simulation.csv"
+  PreparedRun run = prepare_run(options.scene);
+  const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"
                                                              : std::filesystem::path(options.csv_file);
   output::CsvSink csv_sink(csv);
   frames::FrameSink* sinks[] = {&csv_sink};
-  const frames::RunStats stats = frames::run_frames(world, clock, sinks);
-
-  std::size_t vertices = world.state().x.size();
-  std::printf("%s: %d frames, %lld steps of %.4g s (%s), %zu vertices, in %.3f s: %.0f steps/s; wrote %s\n",
-              scene.name.c_str(), stats.frames, stats.steps, clock.dt_s,
-              scene::to_string(scene.solver.integrator).c_str(), vertices, stats.wall_s,
-              static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), csv.string().c_str());
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
+  print_run_summary(run, stats, "wrote " + csv.string());
   return 0;
 }
 

@@ -21,6 +21,7 @@ void add_scene_options(CLI::App& command, SceneOptions& options);
 // Each returns the action to run when its subcommand is chosen; the action returns the exit status.
 using Action = std::function<int()>;
 Action register_simulate(CLI::App& parent);
+Action register_export(CLI::App& parent);
 Action register_render(CLI::App& parent);
 
 }  // namespace app

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
   std::map<std::string, app::Action> actions;
   actions["simulate"] = app::register_simulate(cli);
+  actions["export"] = app::register_export(cli);
   actions["render"] = app::register_render(cli);
 
   try {

@@ -1,9 +1,11 @@
-// Built-in mesh generators: icosphere and subdivided cube.
+// Built-in mesh generators: icosphere, subdivided cube, torus, capsule.
 #include "mesh/generators.hpp"
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <optional>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "mesh/weld.hpp"
@@ -11,26 +13,48 @@
 namespace mesh {
 namespace {
 
-constexpr int kMaxIcosphereLevel = 7;  // 163842 vertices
-constexpr int kMaxCubeDivisions = 128;
-
-struct GeneratorSpec {
-  std::string name;
-  int argument;
+// A generator: its name, its integer arguments with their ranges, and how to build it.
+struct Generator {
+  const char* name;
+  const char* usage;                       // e.g. "icosphere:L with L in 0..7"
+  std::vector<std::pair<int, int>> ranges; // inclusive range of each argument
+  TriMesh (*build)(const std::vector<int>& arguments);
 };
 
-std::optional<int> parse_int(const std::string& text) {
-  if (text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
-  return std::stoi(text);
+const std::vector<Generator>& generators() {
+  static const std::vector<Generator> table = {
+      {"icosphere", "icosphere:L with L an integer in 0..7", {{0, 7}}, [](const std::vector<int>& a) { return icosphere(a[0]); }},
+      {"cube", "cube:N with N an integer in 1..128", {{1, 128}}, [](const std::vector<int>& a) { return cube(a[0]); }},
+      {"torus", "torus:M,N with M (around the ring) in 3..512 and N (around the tube) in 3..256", {{3, 512}, {3, 256}},
+       [](const std::vector<int>& a) { return torus(a[0], a[1]); }},
+      {"capsule", "capsule:N with N (segments around) an integer in 4..256", {{4, 256}},
+       [](const std::vector<int>& a) { return capsule(a[0]); }},
+  };
+  return table;
 }
 
-std::optional<GeneratorSpec> split_spec(const std::string& spec) {
-  const std::size_t colon = spec.find(':');
-  if (colon == std::string::npos) return std::nullopt;
-  const std::string name = spec.substr(0, colon);
-  if (name != "icosphere" && name != "cube") return std::nullopt;
-  const std::optional<int> argument = parse_int(spec.substr(colon + 1));
-  return GeneratorSpec{name, argument.value_or(-1)};
+const Generator* find_generator(const std::string& spec) {
+  const std::string name = spec.substr(0, spec.find(':'));
+  for (const Generator& g : generators()) {
+    if (name == g.name) return &g;
+  }
+  return nullptr;
+}
+
+// The comma-separated integer arguments after the colon; nullopt when they do not fit `generator`.
+std::optional<std::vector<int>> parse_arguments(const Generator& generator, const std::string& spec) {
+  std::vector<int> arguments;
+  std::string text = spec.substr(spec.find(':') + 1) + ",";
+  for (std::size_t start = 0, comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1) {
+    const std::string part = text.substr(start, comma - start);
+    if (part.empty() || part.size() > 6 || part.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    arguments.push_back(std::stoi(part));
+  }
+  if (arguments.size() != generator.ranges.size()) return std::nullopt;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    if (arguments[i] < generator.ranges[i].first || arguments[i] > generator.ranges[i].second) return std::nullopt;
+  }
+  return arguments;
 }
 
 // Index of the midpoint of edge (a, b), created on first use and projected onto the unit sphere.
@@ -46,28 +70,22 @@ int midpoint(TriMesh& mesh, std::map<std::pair<int, int>, int>& cache, int a, in
 }  // namespace
 
 bool names_generator(const std::string& spec) {
-  const std::size_t colon = spec.find(':');
-  if (colon == std::string::npos) return false;
-  const std::string name = spec.substr(0, colon);
-  return name == "icosphere" || name == "cube";
+  return spec.find(':') != std::string::npos && find_generator(spec) != nullptr;
 }
 
 std::string generator_spec_error(const std::string& spec) {
-  const std::optional<GeneratorSpec> parsed = split_spec(spec);
-  if (!parsed) return "expected a generator icosphere:L or cube:N, got \"" + spec + "\"";
-  if (parsed->name == "icosphere" && (parsed->argument < 0 || parsed->argument > kMaxIcosphereLevel)) {
-    return "expected icosphere:L with L an integer in 0.." + std::to_string(kMaxIcosphereLevel) + ", got \"" + spec + "\"";
+  const Generator* generator = find_generator(spec);
+  if (generator == nullptr || spec.find(':') == std::string::npos) {
+    return "expected a generator (icosphere:L, cube:N, torus:M,N, capsule:N), got \"" + spec + "\"";
   }
-  if (parsed->name == "cube" && (parsed->argument < 1 || parsed->argument > kMaxCubeDivisions)) {
-    return "expected cube:N with N an integer in 1.." + std::to_string(kMaxCubeDivisions) + ", got \"" + spec + "\"";
-  }
+  if (!parse_arguments(*generator, spec)) return std::string("expected ") + generator->usage + ", got \"" + spec + "\"";
   return "";
 }
 
 TriMesh generate(const std::string& spec) {
   if (const std::string error = generator_spec_error(spec); !error.empty()) throw softbody::InputError(error);
-  const GeneratorSpec parsed = *split_spec(spec);
-  return parsed.name == "icosphere" ? icosphere(parsed.argument) : cube(parsed.argument);
+  const Generator& generator = *find_generator(spec);
+  return generator.build(*parse_arguments(generator, spec));
 }
 
 TriMesh icosphere(int levels) {
@@ -128,6 +146,78 @@ TriMesh cube(int divisions) {
     }
   }
   return weld(mesh);  // faces share their border vertices
+}
+
+}  // namespace mesh
+
+namespace mesh {
+namespace {
+
+// Index of vertex `j` (wrapping) on ring `i` of a grid of rings with `per_ring` vertices each.
+int ring_vertex(int i, int j, int per_ring) { return i * per_ring + (j % per_ring); }
+
+// Joins ring i to ring i + 1 with two triangles per segment, wound so that the outside is on the left
+// when both rings run the same way.
+void join_rings(TriMesh& mesh, int i, int next, int per_ring) {
+  for (int j = 0; j < per_ring; ++j) {
+    const int a = ring_vertex(i, j, per_ring), b = ring_vertex(i, j + 1, per_ring);
+    const int c = ring_vertex(next, j, per_ring), d = ring_vertex(next, j + 1, per_ring);
+    mesh.triangles.push_back({a, c, b});
+    mesh.triangles.push_back({b, c, d});
+  }
+}
+
+}  // namespace
+
+TriMesh torus(int ring_segments, int tube_segments) {
+  constexpr double kMajorRadius = 1.0, kMinorRadius = 0.4;
+  TriMesh mesh;
+  for (int i = 0; i < ring_segments; ++i) {
+    const double u = 2 * std::numbers::pi * i / ring_segments;
+    for (int j = 0; j < tube_segments; ++j) {
+      const double w = 2 * std::numbers::pi * j / tube_segments;
+      const double r = kMajorRadius + kMinorRadius * std::cos(w);
+      mesh.vertices.emplace_back(r * std::cos(u), kMinorRadius * std::sin(w), -r * std::sin(u));
+    }
+  }
+  for (int i = 0; i < ring_segments; ++i) join_rings(mesh, i, (i + 1) % ring_segments, tube_segments);
+  return mesh;
+}
+
+TriMesh capsule(int segments) {
+  // Radius 0.5, a cylinder of length 1 along y between two hemispheres: 2 m tall, centred at the origin.
+  constexpr double kRadius = 0.5, kHalfLength = 0.5;
+  const int latitude_steps = std::max(2, segments / 4);  // per hemisphere, pole excluded
+  TriMesh mesh;
+  mesh.vertices.emplace_back(0.0, kHalfLength + kRadius, 0.0);  // top pole
+  std::vector<std::pair<double, double>> rings;  // (y, ring radius) from top to bottom
+  for (int k = 1; k <= latitude_steps; ++k) {
+    const double polar = 0.5 * std::numbers::pi * k / latitude_steps;
+    rings.emplace_back(kHalfLength + kRadius * std::cos(polar), kRadius * std::sin(polar));
+  }
+  for (int k = latitude_steps; k >= 1; --k) {
+    const double polar = 0.5 * std::numbers::pi * k / latitude_steps;
+    rings.emplace_back(-kHalfLength - kRadius * std::cos(polar), kRadius * std::sin(polar));
+  }
+  for (const auto& [y, radius] : rings) {
+    for (int j = 0; j < segments; ++j) {
+      const double angle = 2 * std::numbers::pi * j / segments;
+      mesh.vertices.emplace_back(radius * std::cos(angle), y, -radius * std::sin(angle));
+    }
+  }
+  const int ring_count = static_cast<int>(rings.size());
+  const int bottom = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.emplace_back(0.0, -kHalfLength - kRadius, 0.0);  // bottom pole
+  auto ring = [&](int i, int j) { return 1 + ring_vertex(i, j, segments); };
+  for (int j = 0; j < segments; ++j) mesh.triangles.push_back({0, ring(0, j), ring(0, j + 1)});
+  for (int i = 0; i + 1 < ring_count; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      mesh.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
+      mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
+    }
+  }
+  for (int j = 0; j < segments; ++j) mesh.triangles.push_back({bottom, ring(ring_count - 1, j + 1), ring(ring_count - 1, j)});
+  return mesh;
 }
 
 }  // namespace mesh

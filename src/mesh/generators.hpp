@@ -1,4 +1,5 @@
-// Built-in closed meshes: "icosphere:L" (unit sphere) and "cube:N" (unit cube, N×N quads a side).
+// Built-in closed meshes: "icosphere:L" (unit sphere), "cube:N" (unit cube, N×N quads a side),
+// "torus:M,N" (ring radius 1, tube radius 0.4), "capsule:N" (radius 0.5, 2 m tall along y).
 #pragma once
 
 #include <string>
@@ -7,7 +8,7 @@
 
 namespace mesh {
 
-// True when `spec` names a built-in generator ("icosphere:..." or "cube:...").
+// True when `spec` names a built-in generator ("icosphere:...", "cube:...", "torus:...", "capsule:...").
 bool names_generator(const std::string& spec);
 
 // Empty when `spec` is a valid generator spec, otherwise what is expected.
@@ -22,5 +23,11 @@ TriMesh icosphere(int levels);
 
 // Axis-aligned cube of side 1 centred at the origin, each face split into N×N quads (2 triangles each).
 TriMesh cube(int divisions);
+
+// Torus around the y axis: `ring_segments` around the ring, `tube_segments` around the tube.
+TriMesh torus(int ring_segments, int tube_segments);
+
+// Capsule along y: two hemispheres of radius 0.5 joined by a cylinder of length 1; `segments` around.
+TriMesh capsule(int segments);
 
 }  // namespace mesh

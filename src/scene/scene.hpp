@@ -17,7 +17,8 @@ enum class Integrator { Euler };
 
 // How vertices below the floor are handled.
 enum class ContactModel {
-  Paper,  // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
+  Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
+  Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
 };
 
 struct Solver {
@@ -28,6 +29,8 @@ struct Solver {
 struct Floor {
   double height_m = 0.0;  // the plane y = height_m
   ContactModel contact = ContactModel::Paper;
+  double restitution = 0.5;  // friction model: normal speed kept after an impact (0 inelastic .. 1 elastic)
+  double friction = 0.5;     // friction model: Coulomb coefficient μ (static = sliding)
 };
 
 struct Body {

@@ -158,7 +158,10 @@ std::optional<Floor> read_floor(ObjectReader& top) {
   ObjectReader r(top.at("floor"), "floor", top.file());
   Floor floor;
   floor.height_m = r.number("height", floor.height_m);
-  floor.contact = r.choice<ContactModel>("contact", floor.contact, {{"paper", ContactModel::Paper}});
+  floor.contact = r.choice<ContactModel>("contact", floor.contact,
+                                         {{"paper", ContactModel::Paper}, {"friction", ContactModel::Friction}});
+  floor.restitution = r.number("restitution", floor.restitution, Range{[](double x) { return x >= 0 && x <= 1; }, " in [0, 1]"});
+  floor.friction = r.number("friction", floor.friction, kNonNegative);
   r.reject_unknown();
   return floor;
 }
@@ -320,6 +323,7 @@ std::string to_string(Integrator integrator) {
 std::string to_string(ContactModel contact) {
   switch (contact) {
     case ContactModel::Paper: return "paper";
+    case ContactModel::Friction: return "friction";
   }
   return "?";
 }

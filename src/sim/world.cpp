@@ -61,6 +61,9 @@ void World::resolve_contacts() {
   if (!floor_) return;
   switch (floor_->contact) {
     case scene::ContactModel::Paper: resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
+    case scene::ContactModel::Friction:
+      resolve_floor_friction({floor_->height_m, floor_->restitution, floor_->friction}, state_.x, state_.v);
+      break;
   }
 }
 

@@ -1,0 +1,43 @@
+// `softbody export SCENE [-o DIR] [--format obj|ply] [--set ...]`: the simulated mesh of every frame.
+#include <map>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/prepared_run.hpp"
+#include "output/mesh_exporter.hpp"
+
+namespace app {
+namespace {
+
+struct ExportOptions {
+  SceneOptions scene;
+  std::string dir;
+  output::MeshFormat format = output::MeshFormat::Obj;
+};
+
+int run_export(const ExportOptions& options) {
+  PreparedRun run = prepare_run(options.scene);
+  const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
+  output::MeshExporter exporter(dir, options.format);
+  frames::FrameSink* sinks[] = {&exporter};
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
+  print_run_summary(run, stats, "wrote " + exporter.frame_path(0).string() + " .. " + exporter.frame_path(stats.frames - 1).filename().string());
+  return 0;
+}
+
+}  // namespace
+
+Action register_export(CLI::App& parent) {
+  auto options = std::make_shared<ExportOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "export", "Run a scene and write the simulated mesh of every frame (OBJ or PLY), numbered like the PNGs");
+  add_scene_options(*command, options->scene);
+  command->add_option("-o,--output", options->dir, "Output folder (default: <output.dir>/meshes)")->type_name("DIR");
+  const std::map<std::string, output::MeshFormat> formats{{"obj", output::MeshFormat::Obj}, {"ply", output::MeshFormat::Ply}};
+  command->add_option("--format", options->format, "obj (text, one object per body) or ply (binary, all bodies in one)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
+      ->default_str("obj");
+  return [options] { return run_export(*options); };
+}
+
+}  // namespace app

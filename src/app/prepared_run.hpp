@@ -1,0 +1,28 @@
+// What every scene command does first: read the scene, plan the frames, build the world, print notes.
+#pragma once
+
+#include <string>
+
+#include "app/commands.hpp"
+#include "frames/frame_clock.hpp"
+#include "frames/frame_loop.hpp"
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace app {
+
+struct PreparedRun {
+  scene::Scene scene;
+  frames::FrameClock clock;
+  sim::World world;
+};
+
+// Loads and validates the scene (with --set), plans the frame clock, builds the world, and prints
+// every note (rounded dt, fixed meshes) to stderr. Throws softbody::InputError on bad input.
+PreparedRun prepare_run(const SceneOptions& options);
+
+// One summary line on stdout: frames, steps, dt, integrator, vertices, wall time, steps per second,
+// then `what_was_written`.
+void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written);
+
+}  // namespace app

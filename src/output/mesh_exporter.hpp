@@ -1,0 +1,34 @@
+// Per-frame mesh files (OBJ or PLY), numbered like the PNGs, so that the motion can be taken into
+// Blender, Houdini or any tool that reads mesh sequences.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "frames/frame_sink.hpp"
+
+namespace output {
+
+enum class MeshFormat { Obj, Ply };
+
+class MeshExporter final : public frames::FrameSink {
+ public:
+  // Writes DIR/frame_%04d.obj (or .ply); each file whole (temporary name, then renamed).
+  MeshExporter(std::filesystem::path dir, MeshFormat format);
+  void on_frame(int index, double time_s, const sim::World& world) override;
+  void finish(bool complete) override;
+
+  std::filesystem::path frame_path(int index) const;
+
+ private:
+  std::filesystem::path dir_;
+  MeshFormat format_;
+};
+
+// The text of one frame as OBJ: one object per body ("o body0", ...), 1-based indices.
+std::string world_to_obj(const sim::World& world, double time_s);
+
+// The bytes of one frame as binary little-endian PLY: all bodies in one vertex and one face list.
+std::string world_to_ply(const sim::World& world, double time_s);
+
+}  // namespace output

@@ -1,0 +1,90 @@
+// The command line: exit statuses and one clear line per bad input, CSV contract.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "output/csv_sink.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using testing_support::run_softbody;
+
+TEST(Cli, HelpExplainsCommandsAndExitStatuses) {
+  const auto top = run_softbody("--help");
+  EXPECT_EQ(top.exit_status, 0);
+  EXPECT_NE(top.output.find("simulate"), std::string::npos);
+  EXPECT_NE(top.output.find("3 the simulation diverged"), std::string::npos);
+  const auto simulate = run_softbody("simulate --help");
+  EXPECT_EQ(simulate.exit_status, 0);
+  EXPECT_NE(simulate.output.find("--csv"), std::string::npos);
+  EXPECT_NE(simulate.output.find("--set"), std::string::npos);
+}
+
+TEST(Cli, UnknownFlagAndMissingSceneAreBadInput) {
+  EXPECT_EQ(run_softbody("simulate scenes/bounce.json --frobnicate").exit_status, 2);
+  EXPECT_EQ(run_softbody("simulate").exit_status, 2);
+  EXPECT_EQ(run_softbody("").exit_status, 2);
+}
+
+struct CliCase {
+  const char* arguments;
+  const char* message;
+};
+
+class CliBadInput : public ::testing::TestWithParam<CliCase> {};
+
+// Each bad input: exit status 2 and a single "error:" line naming file, key and expectation.
+TEST_P(CliBadInput, ExitsTwoWithOneClearLine) {
+  const auto result = run_softbody(std::string("simulate ") + GetParam().arguments + " --csv build/cli_test_should_not_exist.csv");
+  EXPECT_EQ(result.exit_status, 2) << result.output;
+  EXPECT_EQ(result.output.rfind("error: ", 0), 0u) << result.output;
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+  EXPECT_NE(result.output.find(GetParam().message), std::string::npos) << result.output;
+  EXPECT_FALSE(std::ifstream("build/cli_test_should_not_exist.csv").good()) << "no output file on bad input";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliBadInput,
+    ::testing::Values(
+        CliCase{"scenes/no_such_scene.json", "scenes/no_such_scene.json: cannot open the scene file"},
+        CliCase{"scenes/bounce.json --set bodies.0.stifness=3", "scenes/bounce.json: bodies.0.stifness: unknown key"},
+        CliCase{"scenes/bounce.json --set bodies.0.mass=-1", "scenes/bounce.json: bodies.0.mass: expected a finite number > 0"},
+        CliCase{"scenes/bounce.json --set solver.dt=0", "scenes/bounce.json: solver.dt: expected a finite number > 0"},
+        CliCase{"scenes/bounce.json --set fps=0", "scenes/bounce.json: fps: expected an integer in 1..1000"},
+        CliCase{"scenes/bounce.json --set bodies.0.damping=NaN", "bodies.0.damping: expected a number >= 0, got string \"NaN\""},
+        CliCase{"scenes/bounce.json --set bodies.0.mesh=nowhere.obj", "bodies.0.mesh: mesh file scenes/nowhere.obj does not exist"},
+        CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/open_box.obj", "is not closed: 4 boundary edges"},
+        CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/flipped_face.obj", "inconsistent winding"},
+        CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/degenerate_face.obj", "is degenerate"},
+        CliCase{"scenes/bounce.json --set bodies.0=3", "bodies.0: expected an object"}),
+    [](const auto& param) { return "case" + std::to_string(param.index); });
+
+TEST(Cli, SimulateWritesTheContractColumns) {
+  const auto result = run_softbody("simulate scenes/bounce.json --set duration=0.1 --csv build/cli_test_bounce.csv");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("steps/s"), std::string::npos) << result.output;
+  std::ifstream csv(std::string(SOFTBODY_SOURCE_DIR) + "/build/cli_test_bounce.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "frame,time,body,com_x,com_y,com_z,vel_x,vel_y,vel_z,volume,kinetic_energy,total_energy,min_y");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 4) << "frames 0..3 at 30 fps over 0.1 s";
+}
+
+TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {
+  // Far beyond forward Euler's stable step for this stiffness: blows up within a few frames.
+  const auto result = run_softbody(
+      "simulate scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --csv build/cli_test_diverged.csv");
+  EXPECT_EQ(result.exit_status, 3) << result.output;
+  EXPECT_NE(result.output.find("diverged"), std::string::npos) << result.output;
+  std::ifstream csv(std::string(SOFTBODY_SOURCE_DIR) + "/build/cli_test_diverged.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line, last;
+  while (std::getline(csv, line)) last = line;
+  EXPECT_EQ(last.find("nan"), std::string::npos) << "no frame of a diverged state: " << last;
+  EXPECT_EQ(last.find("inf"), std::string::npos) << last;
+}
+
+}  // namespace

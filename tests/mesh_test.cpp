@@ -1,0 +1,155 @@
+// Mesh stage: generators, welding, import and closed-surface validation.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "mesh/check.hpp"
+#include "mesh/generators.hpp"
+#include "mesh/import.hpp"
+#include "mesh/load.hpp"
+#include "mesh/weld.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using testing_support::data_path;
+
+std::string load_error(const std::string& file) {
+  try {
+    mesh::load_closed_mesh(file, data_path(file), "ctx");
+  } catch (const softbody::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Mesh, UnitCubeVolumeIsExactlyOne) {
+  for (int n : {1, 2, 3, 5, 8}) {
+    mesh::TriMesh cube = mesh::cube(n);
+    // Exact for power-of-two N (grid coordinates are exact binary fractions); round-off otherwise.
+    EXPECT_NEAR(mesh::signed_volume(cube), 1.0, (n & (n - 1)) == 0 ? 0.0 : 1e-14) << "cube:" << n;
+    EXPECT_EQ(cube.vertices.size(), static_cast<std::size_t>(6 * n * n + 2)) << "welded shared borders";
+    std::vector<std::string> notes;
+    EXPECT_NO_THROW(mesh::validate_closed(cube, notes));
+    EXPECT_TRUE(notes.empty());
+  }
+}
+
+TEST(Mesh, IcosphereCountsAndClosedness) {
+  for (int level = 0; level <= 4; ++level) {
+    mesh::TriMesh sphere = mesh::icosphere(level);
+    const std::size_t faces = 20u << (2 * level);
+    EXPECT_EQ(sphere.triangles.size(), faces);
+    EXPECT_EQ(sphere.vertices.size(), faces / 2 + 2);  // Euler: V - E + F = 2 with E = 3F/2
+    const mesh::EdgeCounts counts = mesh::count_edges(sphere);
+    EXPECT_EQ(counts.boundary + counts.non_manifold + counts.misoriented, 0u);
+  }
+}
+
+// The inscribed polyhedron's volume deficit shrinks like the squared edge length: ×1/4 per level.
+TEST(Mesh, IcosphereVolumeConvergesToSphereSecondOrder) {
+  const double exact = 4.0 / 3.0 * std::numbers::pi;
+  double previous_error = 0.0;
+  for (int level = 0; level <= 6; ++level) {
+    const double error = exact - mesh::signed_volume(mesh::icosphere(level));
+    EXPECT_GT(error, 0.0) << "inscribed: always below the sphere";
+    if (level >= 3) {  // asymptotic from level 3 on (3.74 at level 2)
+      EXPECT_NEAR(previous_error / error, 4.0, 0.1) << "level " << level;
+    }
+    previous_error = error;
+  }
+  EXPECT_LT(previous_error / exact, 1e-3);
+}
+
+TEST(Mesh, WeldMergesSplitVerticesAndDropsUnused) {
+  mesh::TriMesh split;
+  split.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 1e-12}, {0, 1, 0}, {1, 1, 0}, {9, 9, 9}};
+  split.triangles = {{0, 1, 2}, {3, 5, 4}};
+  const mesh::TriMesh welded = mesh::weld(split);
+  EXPECT_EQ(welded.vertices.size(), 4u);
+  EXPECT_EQ(welded.triangles[1][0], welded.triangles[0][1]);
+  EXPECT_EQ(welded.triangles[1][2], welded.triangles[0][2]);
+}
+
+TEST(Mesh, ImportedQuadCubeHasExactVolume) {
+  const mesh::LoadedMesh loaded = mesh::load_closed_mesh("cube_quads.obj", data_path("cube_quads.obj"), "ctx");
+  EXPECT_EQ(loaded.mesh.vertices.size(), 8u);
+  EXPECT_EQ(loaded.mesh.triangles.size(), 12u);
+  EXPECT_EQ(mesh::signed_volume(loaded.mesh), 8.0);
+}
+
+TEST(Mesh, StlWithSplitVerticesIsWelded) {
+  const mesh::TriMesh raw = mesh::import_mesh_file(data_path("cube.stl"));
+  EXPECT_EQ(raw.vertices.size(), 36u) << "STL stores every corner of every triangle";
+  const mesh::LoadedMesh loaded = mesh::load_closed_mesh("cube.stl", data_path("cube.stl"), "ctx");
+  EXPECT_EQ(loaded.mesh.vertices.size(), 8u);
+  EXPECT_EQ(mesh::signed_volume(loaded.mesh), 8.0);
+}
+
+TEST(Mesh, HoleIsRefusedWithBoundaryEdgeCount) {
+  const std::string error = load_error("open_box.obj");
+  EXPECT_NE(error.find("open_box.obj is not closed: 4 boundary edges"), std::string::npos) << error;
+  EXPECT_NE(error.find("ctx"), std::string::npos) << error;
+}
+
+TEST(Mesh, InconsistentWindingIsRefused) {
+  const std::string error = load_error("flipped_face.obj");
+  EXPECT_NE(error.find("inconsistent winding: 4 edges"), std::string::npos) << error;
+}
+
+TEST(Mesh, DegenerateFaceIsRefused) {
+  const std::string error = load_error("degenerate_face.obj");
+  EXPECT_NE(error.find("triangle 5 is degenerate"), std::string::npos) << error;
+}
+
+TEST(Mesh, UnreadableFileIsRefused) {
+  const std::string error = load_error("not_a_mesh.obj");
+  EXPECT_NE(error.find("not_a_mesh.obj"), std::string::npos) << error;
+  EXPECT_FALSE(error.empty());
+}
+
+TEST(Mesh, GloballyInvertedWindingIsFlippedWithNote) {
+  const mesh::LoadedMesh loaded = mesh::load_closed_mesh("inverted_cube.obj", data_path("inverted_cube.obj"), "ctx");
+  EXPECT_EQ(mesh::signed_volume(loaded.mesh), 8.0);
+  ASSERT_EQ(loaded.notes.size(), 1u);
+  EXPECT_NE(loaded.notes[0].find("flipped"), std::string::npos);
+}
+
+TEST(Mesh, NonManifoldEdgeIsCounted) {
+  mesh::TriMesh fan;  // three triangles hinged on the edge (0, 1)
+  fan.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fan.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  EXPECT_EQ(mesh::count_edges(fan).non_manifold, 1u);
+}
+
+// Torus (2π² R r²) and capsule (π r² L + 4/3 π r³): closed, outward wound, volumes converging from below.
+TEST(Mesh, TorusAndCapsuleAreClosedWithConvergingVolume) {
+  const double torus_volume = 2 * std::numbers::pi * std::numbers::pi * 1.0 * 0.4 * 0.4;
+  const double capsule_volume = std::numbers::pi * 0.25 * 1.0 + 4.0 / 3.0 * std::numbers::pi * 0.125;
+  for (const auto& [spec, exact] : {std::pair{"torus:16,8", torus_volume}, std::pair{"torus:128,64", torus_volume},
+                                    std::pair{"capsule:8", capsule_volume}, std::pair{"capsule:96", capsule_volume}}) {
+    mesh::TriMesh m = mesh::generate(spec);
+    std::vector<std::string> notes;
+    EXPECT_NO_THROW(mesh::validate_closed(m, notes)) << spec;
+    EXPECT_TRUE(notes.empty()) << spec << " was wound inward";
+    const double volume = mesh::signed_volume(m);
+    EXPECT_LT(volume, exact) << spec;
+    EXPECT_GT(volume, exact * (std::string(spec).find("128") != std::string::npos || std::string(spec).find("96") != std::string::npos ? 0.995 : 0.8)) << spec;
+  }
+}
+
+TEST(Mesh, GeneratorSpecsAreChecked) {
+  EXPECT_EQ(mesh::generator_spec_error("icosphere:3"), "");
+  EXPECT_EQ(mesh::generator_spec_error("cube:4"), "");
+  EXPECT_NE(mesh::generator_spec_error("icosphere:9"), "");
+  EXPECT_NE(mesh::generator_spec_error("icosphere:x"), "");
+  EXPECT_NE(mesh::generator_spec_error("cube:0"), "");
+  EXPECT_FALSE(mesh::names_generator("meshes/bunny.obj"));
+  EXPECT_EQ(mesh::generator_spec_error("torus:24,12"), "");
+  EXPECT_NE(mesh::generator_spec_error("torus:24").find("expected torus:M,N"), std::string::npos);
+  EXPECT_NE(mesh::generator_spec_error("capsule:2"), "");
+}
+
+}  // namespace

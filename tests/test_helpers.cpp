@@ -1,0 +1,40 @@
+// Shared test helpers.
+#include "test_helpers.hpp"
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+#include "scene/scene_json.hpp"
+
+namespace testing_support {
+
+scene::Scene scene_from_text(const std::string& json_text) {
+  const std::filesystem::path file = std::filesystem::path(SOFTBODY_SOURCE_DIR) / "tests" / "inline.json";
+  return scene::scene_from_json(scene::parse_scene_text(json_text, file), file);
+}
+
+sim::World world_from_text(const std::string& json_text) {
+  std::vector<std::string> notes;
+  return sim::build_world(scene_from_text(json_text), notes);
+}
+
+void run_steps(sim::World& world, long long n, double dt) {
+  for (long long i = 0; i < n; ++i) world.step(dt);
+}
+
+CommandResult run_softbody(const std::string& arguments) {
+  const std::string command = "cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
+  const int status = ::pclose(pipe);
+  result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string data_path(const std::string& name) { return std::string(SOFTBODY_TEST_DATA) + "/" + name; }
+
+}  // namespace testing_support

@@ -1,0 +1,34 @@
+// Shared test helpers: scenes from JSON text, small hand-built worlds, running the CLI.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace testing_support {
+
+// A scene from JSON text (comments allowed), validated as if read from `tests/<name>.json`.
+scene::Scene scene_from_text(const std::string& json_text);
+
+// The world of a scene given as JSON text.
+sim::World world_from_text(const std::string& json_text);
+
+// Runs `n` steps of `dt`.
+void run_steps(sim::World& world, long long n, double dt);
+
+struct CommandResult {
+  int exit_status = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the softbody executable with `arguments` (shell words), from the source directory.
+CommandResult run_softbody(const std::string& arguments);
+
+// A path under the tests' data folder.
+std::string data_path(const std::string& name);
+
+}  // namespace testing_support
