@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   actions["simulate"] = app::register_simulate(cli);
   actions["export"] = app::register_export(cli);
   actions["bench"] = app::register_bench(cli);
+  actions["render"] = app::register_render(cli);
 
   try {
     cli.parse(argc, argv);

@@ -60,7 +60,7 @@ struct Body {
   double stiffness_N_per_m = 1000.0; // each edge spring (Hooke)
   double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
-  std::array<float, 3> color = {0.85f, 0.25f, 0.2f};  // linear RGB in [0, 1]
+  std::array<float, 3> color = {0.80f, 0.12f, 0.07f};  // linear RGB in [0, 1] (a tomato red once sRGB-encoded)
 };
 
 struct RenderSettings {

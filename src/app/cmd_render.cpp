@@ -1,0 +1,109 @@
+// `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
+// frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/prepared_run.hpp"
+#include "app/progress.hpp"
+#include "frames/frame_loop.hpp"
+#include "output/frame_pattern.hpp"
+#include "output/render_sink.hpp"
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+#include "render/settings.hpp"
+
+namespace app {
+namespace {
+
+struct RenderOptions {
+  SceneOptions scene;
+  std::string output_dir;
+  std::string video_file;
+  bool no_png = false;
+};
+
+double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
+
+// One line of figures the README and the benchmarks quote: what a frame costs, stage by stage.
+void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
+                   const output::RenderTimings& t) {
+  const int n = run.frames;
+  std::printf("%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
+              "simulate %.1f, render %.1f, read-back %.1f, encode %.1f (writer thread; +%.1f writing files)",
+              scene.name.c_str(), n, scene.render.width_px, scene.render.height_px, renderer.msaa_samples(),
+              scene.render.shadows ? "on" : "off", run.wall_s, n / std::max(run.wall_s, 1e-9),
+              ms_per_frame(run.step_wall_s, n), ms_per_frame(t.snapshot_s + t.render_s, n),
+              ms_per_frame(t.read_back_s, n), ms_per_frame(t.png.encode_s, t.png.frames),
+              ms_per_frame(t.png.store_s, t.png.frames));
+  if (t.video_s > 0.0) std::printf(", video %.1f", ms_per_frame(t.video_s, n));
+  std::printf("\n");
+}
+
+void print_written(const output::RenderOutputs& outputs, const output::RenderSink& sink, int frames) {
+  if (outputs.write_frames) {
+    std::printf("frames: %s (%d files)\n", (outputs.dir / outputs.pattern).string().c_str(), frames);
+  }
+  if (const auto figure = sink.figure_path()) std::printf("figure: %s\n", figure->string().c_str());
+  if (outputs.video) std::printf("video:  %s\n", outputs.video->string().c_str());
+}
+
+int run_render(const RenderOptions& options) {
+  PreparedRun run = prepare_run(options.scene);
+  scene::Scene& scene = run.scene;
+  if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
+  output::check_frame_pattern(scene.output.pattern, scene.source.string());
+
+  const std::unique_ptr<render::GlContext> context = render::create_offscreen_context();
+  render::Renderer renderer(*context, render::settings_from_scene(scene));
+
+  output::RenderOutputs outputs;
+  outputs.dir = scene.output.dir;
+  outputs.pattern = scene.output.pattern;
+  outputs.write_frames = !options.no_png;
+  if (!options.video_file.empty()) outputs.video = options.video_file;
+  outputs.fps = scene.fps;
+  outputs.figure_frames = scene.render.figure_frames;
+  outputs.last_frame = run.clock.frame_count;
+  std::filesystem::create_directories(outputs.dir);
+  output::RenderSink sink(renderer, outputs);
+
+  ProgressLine progress;
+  frames::FrameSink* sinks[] = {&sink};
+  frames::RunStats stats;
+  try {
+    stats = frames::run_frames(run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); });
+  } catch (...) {
+    progress.clear();
+    throw;
+  }
+  progress.clear();
+  print_summary(scene, renderer, stats, sink.timings());
+  print_written(outputs, sink, stats.frames);
+  return 0;
+}
+
+}  // namespace
+
+Action register_render(CLI::App& parent) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "render", "Simulate a scene and render every frame off-screen (OSMesa) to PNG files, figure.png and a video");
+  add_scene_options(*command, options->scene);
+  command->add_option("-o,--output", options->output_dir, "Output folder (default: the scene's output.dir, "
+                                                          "else out/<scene name>)")
+      ->type_name("DIR");
+  command->add_option("--video", options->video_file, "Also write an H.264 MP4 (needs ffmpeg on PATH)")
+      ->type_name("FILE.mp4");
+  command->add_flag("--no-png", options->no_png, "Write no PNG frames (figure.png and --video still are)");
+  command->footer(
+      "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
+      "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
+      "  rename), and frames numbered after the last one, left by an earlier longer run, are removed.\n"
+      "  DIR/figure.png shows render.figure_frames frames evenly spaced over the run (0: none).\n"
+      "  Size, MSAA, shadows, camera and light come from the scene's render, camera and light keys.\n"
+      "  Prints a progress line when stderr is a terminal, and a summary with the time per frame of each stage.");
+  return [options] { return run_render(*options); };
+}
+
+}  // namespace app

@@ -1,0 +1,64 @@
+// Writes frames as PNG files on a writer thread while the caller renders the next frame. Each file is
+// encoded, written under a temporary name and renamed, so a killed run never leaves a broken frame.
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/image.hpp"
+
+namespace output {
+
+// Time the writer thread spent per stage, summed over all frames [s].
+struct PngWriterTimings {
+  int frames = 0;
+  double encode_s = 0.0;  // libpng, in memory
+  double store_s = 0.0;   // writing the file and renaming it into place
+};
+
+class PngWriter {
+ public:
+  // At most `queue_capacity` frames wait for the writer (each holds a whole image): write() blocks
+  // beyond that, which keeps memory bounded when encoding is slower than rendering.
+  explicit PngWriter(std::size_t queue_capacity = 2);
+  // Finishes the queued frames (errors are dropped here: call finish() to see them).
+  ~PngWriter();
+  PngWriter(const PngWriter&) = delete;
+  PngWriter& operator=(const PngWriter&) = delete;
+
+  // Queues `image` for `path`. Rethrows the error of an earlier frame that failed to write.
+  void write(std::filesystem::path path, softbody::Image image);
+  // Waits until every queued frame is on disk; rethrows the first error. Later writes are not allowed.
+  void finish();
+
+  // An image the writer is done with (pixels unspecified), to read the next frame into without a fresh
+  // allocation; a default-constructed one when none is free yet.
+  softbody::Image recycled_image();
+
+  PngWriterTimings timings() const;
+
+ private:
+  struct Job {
+    std::filesystem::path path;
+    softbody::Image image;
+  };
+  void run();
+  void rethrow_error_locked();
+
+  const std::size_t capacity_;
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Job> queue_;
+  std::vector<softbody::Image> spare_images_;
+  bool closing_ = false;
+  std::exception_ptr error_;
+  PngWriterTimings timings_;
+  std::thread thread_;  // last: starts after everything it uses exists
+};
+
+}  // namespace output

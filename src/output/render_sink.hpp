@@ -1,0 +1,76 @@
+// The render command's frame sink: every frame of the run becomes a rendered image that goes to PNG
+// files (on the writer thread), an ffmpeg video and the figure, with each stage timed.
+//
+//   World ─► snapshot_surfaces ─► Renderer::draw ─► read_back ─┬─► VideoPipe (ffmpeg stdin)
+//                                                              ├─► ContactSheet (chosen frames)
+//                                                              └─► PngWriter queue ─► frame_%04d.png
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frames/frame_sink.hpp"
+#include "output/contact_sheet.hpp"
+#include "output/png_writer.hpp"
+#include "output/video_pipe.hpp"
+#include "render/renderer.hpp"
+
+namespace output {
+
+// What the render run writes.
+struct RenderOutputs {
+  std::filesystem::path dir;                  // PNG frames and figure.png
+  std::string pattern = "frame_%04d.png";     // checked with check_frame_pattern
+  bool write_frames = true;                   // the PNG sequence
+  std::optional<std::filesystem::path> video; // an MP4 when set
+  int fps = 30;                               // the video's frame rate
+  int figure_frames = 8;                      // tiles in figure.png; 0: no figure
+  int last_frame = 0;                         // index of the run's last frame (frame 0 is the initial state)
+};
+
+// Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.
+struct RenderTimings {
+  int frames = 0;
+  double snapshot_s = 0.0;   // World → FrameMesh
+  double render_s = 0.0;     // normals, uploads, shadow and main passes, MSAA resolve, glFinish
+  double read_back_s = 0.0;  // glReadPixels and the flip into an Image
+  double video_s = 0.0;      // writing frames into ffmpeg's pipe, and waiting for it to finish
+  double figure_s = 0.0;     // shrinking frames into the contact sheet and writing figure.png
+  double queue_wait_s = 0.0; // render thread blocked on a full PNG queue
+  PngWriterTimings png;      // on the writer thread: encode and store
+};
+
+class RenderSink final : public frames::FrameSink {
+ public:
+  // Starts the PNG writer and ffmpeg (when asked for); `renderer` must outlive the sink.
+  RenderSink(render::Renderer& renderer, RenderOutputs outputs);
+
+  void on_frame(int index, double time_s, const sim::World& world) override;
+  // Complete: drains the PNG queue, finishes the video, writes figure.png, removes stale frames numbered
+  // after the last one (left by an earlier, longer run, they would end up in `ffmpeg -i pattern`).
+  // Incomplete: drains the PNG queue (those frames are valid) and abandons the video and the figure.
+  void finish(bool complete) override;
+
+  RenderTimings timings() const;
+  // Paths of what finish(true) wrote, for the summary.
+  std::optional<std::filesystem::path> figure_path() const;
+
+ private:
+  void write_figure();
+  void remove_stale_frames() const;
+
+  render::Renderer& renderer_;
+  RenderOutputs outputs_;
+  std::vector<render::FrameMesh> meshes_;
+  softbody::Image frame_;
+  std::optional<PngWriter> png_writer_;
+  std::unique_ptr<VideoPipe> video_;
+  std::optional<ContactSheet> figure_;
+  bool figure_written_ = false;
+  RenderTimings timings_;
+};
+
+}  // namespace output

@@ -1,0 +1,47 @@
+// Vertex and index buffers of a deforming body.
+#include "render/body_mesh.hpp"
+
+#include <stdexcept>
+
+namespace render {
+namespace {
+
+constexpr GLsizeiptr bytes_of(std::size_t count, std::size_t size) { return static_cast<GLsizeiptr>(count * size); }
+
+void allocate_vertex_attribute(GLuint buffer, GLuint location, std::size_t vertex_count) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, bytes_of(vertex_count, sizeof(glm::vec3)), nullptr, GL_STREAM_DRAW);
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+}
+
+}  // namespace
+
+BodyMesh::BodyMesh(std::size_t vertex_count, std::span<const glm::uvec3> triangles)
+    : vertex_count_(vertex_count), index_count_(triangles.size() * 3) {
+  glBindVertexArray(vertex_array_.get());
+  allocate_vertex_attribute(positions_.get(), 0, vertex_count_);
+  allocate_vertex_attribute(normals_.get(), 1, vertex_count_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, bytes_of(triangles.size(), sizeof(glm::uvec3)), triangles.data(),
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  check_gl("allocating a body's buffers");
+}
+
+void BodyMesh::update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals) {
+  if (positions.size() != vertex_count_ || normals.size() != vertex_count_) {
+    throw std::logic_error("BodyMesh::update: the vertex count changed during the run");
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, positions_.get());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, bytes_of(vertex_count_, sizeof(glm::vec3)), positions.data());
+  glBindBuffer(GL_ARRAY_BUFFER, normals_.get());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, bytes_of(vertex_count_, sizeof(glm::vec3)), normals.data());
+}
+
+void BodyMesh::draw() const {
+  glBindVertexArray(vertex_array_.get());
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(index_count_), GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace render

@@ -1,0 +1,32 @@
+// Translates the validated scene into the renderer's settings (double → float, Eigen → glm).
+#include "render/settings.hpp"
+
+#include "scene/scene.hpp"
+
+namespace render {
+namespace {
+
+glm::vec3 to_glm(const softbody::Vec3& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+glm::vec3 to_glm(const std::array<float, 3>& rgb) { return {rgb[0], rgb[1], rgb[2]}; }
+
+}  // namespace
+
+RenderSettings settings_from_scene(const scene::Scene& scene) {
+  RenderSettings settings;
+  settings.width_px = scene.render.width_px;
+  settings.height_px = scene.render.height_px;
+  settings.msaa_samples = scene.render.msaa;
+  settings.shadows = scene.render.shadows;
+  settings.background = to_glm(scene.render.background);
+  settings.camera = {to_glm(scene.camera.position_m), to_glm(scene.camera.target_m), to_glm(scene.camera.up),
+                     static_cast<float>(scene.camera.fov_deg)};
+  settings.light = {to_glm(scene.light.direction), to_glm(scene.light.color), scene.light.ambient};
+  if (scene.floor) settings.floor_height_m = static_cast<float>(scene.floor->height_m);
+  for (const scene::Body& body : scene.bodies) settings.body_colors.push_back(to_glm(body.color));
+  return settings;
+}
+
+}  // namespace render

@@ -1,0 +1,43 @@
+// What the renderer needs to know about a scene besides the meshes: image, camera, light, floor, colours.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace scene {
+struct Scene;
+}
+
+namespace render {
+
+struct CameraSettings {
+  glm::vec3 position{0.0f, 2.5f, 9.0f};  // m
+  glm::vec3 target{0.0f, 1.2f, 0.0f};    // m
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_deg = 45.0f;                 // vertical field of view
+};
+
+struct LightSettings {
+  glm::vec3 direction{-0.4f, -1.0f, -0.35f};  // the way the light travels (towards the scene)
+  glm::vec3 color{1.0f, 1.0f, 1.0f};          // linear RGB
+  float ambient = 0.25f;                      // fraction of light that reaches every surface
+};
+
+struct RenderSettings {
+  int width_px = 1280;
+  int height_px = 720;
+  int msaa_samples = 4;                            // 1 renders without multisampling
+  bool shadows = true;
+  glm::vec3 background{0.62f, 0.72f, 0.85f};       // linear RGB
+  CameraSettings camera;
+  LightSettings light;
+  std::optional<float> floor_height_m;             // no floor drawn when empty
+  std::vector<glm::vec3> body_colors;              // linear RGB, one per body, in the scene's order
+};
+
+// The scene's render, camera, light, floor and body colour keys, as the renderer takes them.
+RenderSettings settings_from_scene(const scene::Scene& scene);
+
+}  // namespace render
