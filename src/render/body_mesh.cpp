@@ -2,6 +2,7 @@
 #include "render/body_mesh.hpp"
 
 #include <stdexcept>
+#include <vector>
 
 namespace render {
 namespace {
@@ -22,6 +23,7 @@ BodyMesh::BodyMesh(std::size_t vertex_count, std::span<const glm::uvec3> triangl
   glBindVertexArray(vertex_array_.get());
   allocate_vertex_attribute(positions_.get(), 0, vertex_count_);
   allocate_vertex_attribute(normals_.get(), 1, vertex_count_);
+  allocate_vertex_attribute(pattern_coordinates_.get(), 2, vertex_count_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, bytes_of(triangles.size(), sizeof(glm::uvec3)), triangles.data(),
                GL_STATIC_DRAW);
@@ -32,6 +34,15 @@ BodyMesh::BodyMesh(std::size_t vertex_count, std::span<const glm::uvec3> triangl
 void BodyMesh::update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals) {
   if (positions.size() != vertex_count_ || normals.size() != vertex_count_) {
     throw std::logic_error("BodyMesh::update: the vertex count changed during the run");
+  }
+  if (!has_pattern_coordinates_) {
+    glm::vec3 centroid(0.0f);
+    for (const glm::vec3& p : positions) centroid += p / float(vertex_count_);
+    std::vector<glm::vec3> coordinates(positions.begin(), positions.end());
+    for (glm::vec3& c : coordinates) c -= centroid;
+    glBindBuffer(GL_ARRAY_BUFFER, pattern_coordinates_.get());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes_of(vertex_count_, sizeof(glm::vec3)), coordinates.data());
+    has_pattern_coordinates_ = true;
   }
   glBindBuffer(GL_ARRAY_BUFFER, positions_.get());
   glBufferSubData(GL_ARRAY_BUFFER, 0, bytes_of(vertex_count_, sizeof(glm::vec3)), positions.data());

@@ -15,7 +15,8 @@ class BodyMesh {
   // Allocates buffers for `vertex_count` vertices and uploads the triangles (static for the whole run).
   BodyMesh(std::size_t vertex_count, std::span<const glm::uvec3> triangles);
 
-  // Replaces this frame's positions and normals (the only per-frame upload).
+  // Replaces this frame's positions and normals (the only per-frame upload). The first call also uploads
+  // the pattern coordinates: those first positions relative to their centroid (the body's own frame).
   void update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals);
   void draw() const;
 
@@ -28,6 +29,8 @@ class BodyMesh {
   GlVertexArray vertex_array_;
   GlBuffer positions_;
   GlBuffer normals_;
+  GlBuffer pattern_coordinates_;
+  bool has_pattern_coordinates_ = false;
   GlBuffer indices_;
 };
 

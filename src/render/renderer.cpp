@@ -147,6 +147,7 @@ void Renderer::draw_main_pass(const LightFrustum& light) {
   for (std::size_t b = 0; b < body_meshes_.size(); ++b) {
     const bool has_color = b < settings_.body_colors.size();
     lit_body_program_.set("body_color", has_color ? settings_.body_colors[b] : kDefaultBodyColor);
+    lit_body_program_.set("body_pattern", b < settings_.body_patterns.size() ? settings_.body_patterns[b] : 0);
     body_meshes_[b].draw();
   }
 }

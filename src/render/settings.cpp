@@ -25,7 +25,10 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
                      static_cast<float>(scene.camera.fov_deg)};
   settings.light = {to_glm(scene.light.direction), to_glm(scene.light.color), scene.light.ambient};
   if (scene.floor) settings.floor_height_m = static_cast<float>(scene.floor->height_m);
-  for (const scene::Body& body : scene.bodies) settings.body_colors.push_back(to_glm(body.color));
+  for (const scene::Body& body : scene.bodies) {
+    settings.body_colors.push_back(to_glm(body.color));
+    settings.body_patterns.push_back(static_cast<int>(body.pattern));
+  }
   return settings;
 }
 

@@ -35,6 +35,7 @@ struct RenderSettings {
   LightSettings light;
   std::optional<float> floor_height_m;             // no floor drawn when empty
   std::vector<glm::vec3> body_colors;              // linear RGB, one per body, in the scene's order
+  std::vector<int> body_patterns;                  // scene::Pattern as an int, one per body (0: plain)
 };
 
 // The scene's render, camera, light, floor and body colour keys, as the renderer takes them.

@@ -50,6 +50,9 @@ struct Collisions {
   double friction = 0.5;     // Coulomb μ
 };
 
+// A pattern painted on a body in its own (initial-shape) coordinates, so that its rotation shows.
+enum class Pattern { None, Checker, Stripes };
+
 struct Body {
   std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
   std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
@@ -60,6 +63,7 @@ struct Body {
   double stiffness_N_per_m = 1000.0; // each edge spring (Hooke)
   double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
+  Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   std::array<float, 3> color = {0.80f, 0.12f, 0.07f};  // linear RGB in [0, 1] (a tomato red once sRGB-encoded)
 };
 

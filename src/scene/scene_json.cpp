@@ -205,6 +205,8 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   body.damping_N_s_per_m = r.number("damping", body.damping_N_s_per_m, kNonNegative);
   body.pressure_J = r.number("pressure", body.pressure_J, kNonNegative);
   body.color = r.color("color", body.color);
+  body.pattern = r.choice<Pattern>("pattern", body.pattern,
+                                   {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
   r.reject_unknown();
   return body;
 }

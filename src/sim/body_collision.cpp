@@ -13,13 +13,7 @@ namespace {
 constexpr double kSearchFraction = 0.5;    // deepest penetration still pushed back out
 constexpr double kThicknessFraction = 0.02; // gap kept between a vertex and another body's surface
 
-constexpr double kCellFraction = 1.5;      // grid cell size over the surface body's longest rest edge
-
-double max_rest_edge(const Body& body) {
-  double longest = 0.0;
-  for (double length : body.topology.rest_length_m) longest = std::max(longest, length);
-  return longest;
-}
+constexpr double kCellFraction = 1.0;      // grid cell size over the surface body's mean rest edge
 
 double mean_rest_edge(const Body& body) {
   double sum = 0.0;
@@ -79,12 +73,14 @@ void BodyCollider::build_grid(const Body& surface, const State& state, const Box
   cell_size_ = cell_size;
   grid_origin_ = region.lo;
   cells_.clear();
+  triangle_boxes_.resize(surface.topology.faces.size());
   const Vec3* x = state.x.data() + surface.first_vertex;
   for (std::size_t f = 0; f < surface.topology.faces.size(); ++f) {
     const Triangle& t = surface.topology.faces[f];
     const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
     const Vec3 hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
     if ((hi.array() < region.lo.array()).any() || (lo.array() > region.hi.array()).any()) continue;
+    triangle_boxes_[f] = {lo, hi};
     const Eigen::Vector3i first = cell_of(lo), last = cell_of(hi);
     for (int cx = first.x(); cx <= last.x(); ++cx) {
       for (int cy = first.y(); cy <= last.y(); ++cy) {
@@ -145,17 +141,19 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
                                                      const BodyContactSettings& settings) {
   const double edge = mean_rest_edge(surface);
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
-  // Only the surface triangles near the moving body matter: the grid holds those alone.
+  // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
+  // holds the surface triangles there, and only moving vertices there are tested.
   const Box& moving_box = boxes_[moving_index_];
-  const Box region{moving_box.lo - Vec3::Constant(search), moving_box.hi + Vec3::Constant(search)};
   const Box& surface_box = boxes_[surface_index_];
-  build_grid(surface, state, region, kCellFraction * max_rest_edge(surface));
+  const Box region{moving_box.lo.cwiseMax(surface_box.lo) - Vec3::Constant(search),
+                   moving_box.hi.cwiseMin(surface_box.hi) + Vec3::Constant(search)};
+  build_grid(surface, state, region, std::max(2 * search, kCellFraction * edge));
   const Vec3* x_surface = state.x.data() + surface.first_vertex;
   int contacts = 0;
   for (int i = 0; i < moving.vertex_count; ++i) {
     const int vertex = moving.first_vertex + i;
     const Vec3 p = state.x[vertex];
-    if ((p.array() < surface_box.lo.array() - search).any() || (p.array() > surface_box.hi.array() + search).any()) continue;
+    if ((p.array() < region.lo.array()).any() || (p.array() > region.hi.array()).any()) continue;
     // Nearest triangle among those in the grid cells that the search sphere's box touches.
     double best_distance = search;
     int best = -1;
@@ -167,6 +165,8 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
           auto range = std::equal_range(cells_.begin(), cells_.end(), Cell{cell_key({cx, cy, cz}), 0},
                                         [](const Cell& a, const Cell& b) { return a.key < b.key; });
           for (auto it = range.first; it != range.second; ++it) {
+            const Box& box = triangle_boxes_[it->triangle];  // cheap reject: the box is farther than the best
+            if ((p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm() > best_distance * best_distance) continue;
             const Triangle& t = surface.topology.faces[it->triangle];
             const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
             const double distance = (p - q.point).norm();

@@ -45,6 +45,7 @@ class BodyCollider {
   std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
   std::vector<double> inverse_mass_;  // per vertex, all bodies
   std::vector<Cell> cells_;
+  std::vector<Box> triangle_boxes_;   // per surface triangle in the grid
   Vec3 grid_origin_ = Vec3::Zero();
   double cell_size_ = 1.0;
 };

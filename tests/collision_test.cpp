@@ -1,0 +1,82 @@
+// Body–body contact: momentum conserved in a head-on collision, no vertex left inside another body.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sim/body_collision.hpp"
+#include "sim/diagnostics.hpp"
+#include "sim/world.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using softbody::Vec3;
+
+Vec3 total_momentum(const sim::World& world) {
+  Vec3 p = Vec3::Zero();
+  for (std::size_t b = 0; b < world.bodies().size(); ++b) p += sim::diagnose(world, b).momentum_kg_m_per_s;
+  return p;
+}
+
+// Two balls meet head-on at 2 m/s each, with no friction and no gravity or floor. The contact impulses
+// act in equal and opposite pairs (the vertex gets +J, the triangle's corners −w_k J with Σ w_k = 1), so
+// the total momentum stays what it was to round-off, and the balls bounce apart.
+TEST(BodyCollision, HeadOnCollisionConservesMomentumAndSeparates) {
+  sim::World world = testing_support::world_from_text(R"({
+    "gravity": [0, 0, 0],
+    "solver": { "integrator": "symplectic" },
+    "collisions": { "restitution": 0.8, "friction": 0.0 },
+    "bodies": [
+      { "mesh": "icosphere:2", "position": [-1.3, 0, 0], "velocity": [2, 0, 0], "mass": 1.0,
+        "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 },
+      { "mesh": "icosphere:2", "position": [1.3, 0.1, 0], "velocity": [-2, 0, 0], "mass": 1.5,
+        "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 } ] })");
+  const Vec3 before = total_momentum(world);
+  testing_support::run_steps(world, 40000, 2.5e-5);  // 1 s: they touch after ~0.08 s
+  const Vec3 after = total_momentum(world);
+  EXPECT_LT((after - before).norm(), 1e-12) << before.transpose() << " -> " << after.transpose();
+  const double vx_left = sim::diagnose(world, 0).com_velocity_m_per_s.x();
+  const double vx_right = sim::diagnose(world, 1).com_velocity_m_per_s.x();
+  EXPECT_LT(vx_left, -0.5) << "the lighter ball bounces back";
+  EXPECT_GT(vx_right, 0.2) << "the heavier one too";
+  EXPECT_GT(sim::diagnose(world, 1).com_m.x() - sim::diagnose(world, 0).com_m.x(), 2.0) << "apart again";
+}
+
+// A small pile on a floor with friction: at the end no vertex of any body is inside another body
+// (generalised winding number below one half).
+TEST(BodyCollision, NoVertexEndsInsideAnotherBody) {
+  sim::World world = testing_support::world_from_text(R"({
+    "solver": { "integrator": "symplectic" },
+    "floor": { "contact": "friction", "restitution": 0.1, "friction": 0.9 },
+    "collisions": { "restitution": 0.1, "friction": 0.9 },
+    "bodies": [
+      { "mesh": "cube:4", "position": [0, 0.6, 0], "mass": 1.0, "stiffness": 3000.0, "damping": 4.0, "pressure": 40.0 },
+      { "mesh": "icosphere:2", "position": [0.1, 1.8, 0], "scale": 0.5, "mass": 0.5, "stiffness": 3000.0, "damping": 3.0, "pressure": 30.0 },
+      { "mesh": "capsule:12", "position": [-0.1, 3.0, 0.1], "scale": 0.5, "mass": 0.4, "stiffness": 3000.0, "damping": 3.0, "pressure": 20.0 } ] })");
+  testing_support::run_steps(world, 40000, 2.5e-5);  // 1 s: landed and piled
+  int inside = 0;
+  double deepest = 0.0;
+  for (std::size_t a = 0; a < world.bodies().size(); ++a) {
+    for (std::size_t b = 0; b < world.bodies().size(); ++b) {
+      if (a == b) continue;
+      const sim::Body& surface = world.bodies()[b];
+      for (const Vec3& p : world.positions(world.bodies()[a])) {
+        const double w = sim::winding_number(world.positions(surface), surface.topology.faces, p);
+        deepest = std::max(deepest, w);
+        if (w > 0.5) ++inside;
+      }
+    }
+  }
+  EXPECT_EQ(inside, 0) << "largest winding number " << deepest;
+  // And they did pile up: the ball rests above the cube, not beside it on the floor.
+  EXPECT_GT(sim::diagnose(world, 1).min_y_m, 0.5);
+}
+
+TEST(BodyCollision, WindingNumberIsOneInsideZeroOutside) {
+  sim::World world = testing_support::world_from_text(R"({ "bodies": [ { "mesh": "icosphere:2" } ] })");
+  const sim::Body& body = world.bodies()[0];
+  EXPECT_NEAR(sim::winding_number(world.positions(body), body.topology.faces, Vec3(0.1, 0.2, 0.3)), 1.0, 1e-9);
+  EXPECT_NEAR(sim::winding_number(world.positions(body), body.topology.faces, Vec3(1.5, 0.2, 0.3)), 0.0, 1e-9);
+}
+
+}  // namespace
