@@ -10,6 +10,10 @@ void add_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3>
   for (std::size_t i = 0; i < force.size(); ++i) force[i] += mass_kg[i] * g;
 }
 
+void set_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
+  for (std::size_t i = 0; i < force.size(); ++i) force[i] = mass_kg[i] * g;
+}
+
 void add_springs(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
                  std::span<const Vec3> x, std::span<Vec3> force) {
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -35,6 +39,54 @@ void add_dampers(std::span<const std::array<int, 2>> edges, double c, std::span<
   }
 }
 
+namespace {
+
+constexpr std::size_t kEdgeBlock = 64;  // edges per gather / compute / scatter round: scratch stays in L1
+
+// One block of edges: the per-edge coefficient s_e with f_i = s_e d_e (and -s_e d_e on j).
+template <bool kDamped>
+void spring_damper_block(std::span<const std::array<int, 2>> edges, const double* rest_length_m, double k, double c,
+                         std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force) {
+  const std::size_t n = edges.size();
+  alignas(64) double dx[kEdgeBlock], dy[kEdgeBlock], dz[kEdgeBlock], rate[kEdgeBlock], s[kEdgeBlock];
+  for (std::size_t e = 0; e < n; ++e) {  // gather: d = x_i - x_j, and (v_i - v_j)·d
+    const auto [i, j] = edges[e];
+    const Vec3 d = x[i] - x[j];
+    dx[e] = d.x();
+    dy[e] = d.y();
+    dz[e] = d.z();
+    if constexpr (kDamped) rate[e] = (v[i] - v[j]).dot(d);
+  }
+  for (std::size_t e = 0; e < n; ++e) {  // no indirection: vectorised
+    const double length_squared = dx[e] * dx[e] + dy[e] * dy[e] + dz[e] * dz[e];
+    const double length = std::sqrt(length_squared);
+    double numerator = -k * (length - rest_length_m[e]) * length;
+    if constexpr (kDamped) numerator -= c * rate[e];
+    // Coincident endpoints (L = 0, so d = 0 and the numerator is 0): divide by 1, no force.
+    s[e] = numerator / (length_squared > 0.0 ? length_squared : 1.0);
+  }
+  for (std::size_t e = 0; e < n; ++e) {  // scatter
+    const auto [i, j] = edges[e];
+    const Vec3 f(s[e] * dx[e], s[e] * dy[e], s[e] * dz[e]);
+    force[i] += f;
+    force[j] -= f;
+  }
+}
+
+}  // namespace
+
+void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
+                        double c, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force) {
+  for (std::size_t first = 0; first < edges.size(); first += kEdgeBlock) {
+    const std::span<const std::array<int, 2>> block = edges.subspan(first, std::min(kEdgeBlock, edges.size() - first));
+    if (c != 0.0) {
+      spring_damper_block<true>(block, rest_length_m.data() + first, k, c, x, v, force);
+    } else {
+      spring_damper_block<false>(block, rest_length_m.data() + first, k, c, x, v, force);
+    }
+  }
+}
+
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x) {
   const Vec3 origin = x[0];
   double six_volume = 0.0;
@@ -54,14 +106,20 @@ double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_v
                     std::vector<Vec3>& area_vectors, std::span<Vec3> force) {
   // Pass 1: twice the area vector of each face, 2A·n̂ = (x_b − x_a)×(x_c − x_a); it also gives the volume,
   // since x_a·(x_b × x_c) = x_a·((x_b − x_a)×(x_c − x_a)).
+  // The volume is summed in kVolumeLanes partial sums (face f into lane f mod kVolumeLanes), added in
+  // lane order at the end: a fixed order, so bit-identical every run, without one long chain of
+  // dependent additions through all faces.
   area_vectors.resize(faces.size());
   const Vec3 origin = x[0];
-  double six_volume = 0.0;
+  constexpr std::size_t kVolumeLanes = 4;
+  std::array<double, kVolumeLanes> six_volume_lane{};
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 a = x[faces[f][0]] - origin;
-    area_vectors[f] = (x[faces[f][1]] - x[faces[f][0]]).cross(x[faces[f][2]] - x[faces[f][0]]);
-    six_volume += a.dot(area_vectors[f]);
+    const Vec3 xa = x[faces[f][0]];
+    area_vectors[f] = (x[faces[f][1]] - xa).cross(x[faces[f][2]] - xa);
+    six_volume_lane[f % kVolumeLanes] += (xa - origin).dot(area_vectors[f]);
   }
+  double six_volume = 0.0;
+  for (double lane : six_volume_lane) six_volume += lane;
   const double volume = six_volume / 6.0;
   // Pass 2: P·A·n̂ split over three corners = (nRT / V) · (2A·n̂) / 6 per corner.
   const double per_corner = nRT_J / guarded_volume(volume, rest_volume_m3) / 6.0;
