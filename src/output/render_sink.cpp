@@ -37,10 +37,16 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
   }
 }
 
-void RenderSink::on_frame(int index, double /*time_s*/, const sim::World& world) {
+void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) {
   auto start = Clock::now();
   snapshot_surfaces(world, meshes_);
+  captured_index_ = index;
   lap(start, timings_.snapshot_s);
+}
+
+void RenderSink::deliver() {
+  const int index = captured_index_;
+  auto start = Clock::now();
   renderer_.draw(meshes_);
   lap(start, timings_.render_s);
   if (png_writer_) frame_ = png_writer_->recycled_image();

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "frames/frame_sink.hpp"
+#include "frames/capturing_sink.hpp"
 #include "output/contact_sheet.hpp"
 #include "output/png_writer.hpp"
 #include "output/video_pipe.hpp"
@@ -43,12 +43,16 @@ struct RenderTimings {
   PngWriterTimings png;      // on the writer thread: encode and store
 };
 
-class RenderSink final : public frames::FrameSink {
+class RenderSink final : public frames::CapturingFrameSink {
  public:
   // Starts the PNG writer and ffmpeg (when asked for); `renderer` must outlive the sink.
   RenderSink(render::Renderer& renderer, RenderOutputs outputs);
 
-  void on_frame(int index, double time_s, const sim::World& world) override;
+  // Copies the bodies' surfaces (positions and triangles) out of the world.
+  void capture(int index, double time_s, const sim::World& world) override;
+  // Renders the captured surfaces and hands the image to the outputs; never reads the world, so the
+  // world may step meanwhile (frames::run_frames_overlapped).
+  void deliver() override;
   // Complete: drains the PNG queue, finishes the video, writes figure.png, removes stale frames numbered
   // after the last one (left by an earlier, longer run, they would end up in `ffmpeg -i pattern`).
   // Incomplete: drains the PNG queue (those frames are valid) and abandons the video and the figure.
@@ -64,7 +68,8 @@ class RenderSink final : public frames::FrameSink {
 
   render::Renderer& renderer_;
   RenderOutputs outputs_;
-  std::vector<render::FrameMesh> meshes_;
+  std::vector<render::FrameMesh> meshes_;  // the captured frame
+  int captured_index_ = 0;
   softbody::Image frame_;
   std::optional<PngWriter> png_writer_;
   std::unique_ptr<VideoPipe> video_;
