@@ -7,8 +7,8 @@
 
 namespace sim {
 
-// True when no coordinate is NaN or ±∞. One branch-free pass over the raw bits (an exponent of all ones
-// means NaN or ∞), which the compiler vectorises; the caller looks for the culprit only when it is false.
+// True when no coordinate is NaN or ±∞. One branch-free pass that the compiler vectorises; the caller
+// looks for the culprit only when it is false.
 bool all_finite(std::span<const softbody::Vec3> values);
 
 }  // namespace sim

@@ -73,6 +73,21 @@ void spring_damper_block(std::span<const std::array<int, 2>> edges, const double
   }
 }
 
+// Σ_i (x_i − origin)·g_i in four partial sums (vertex i into sum i mod 4), added in a fixed order at the
+// end: bit-identical every run, without one long chain of dependent additions.
+double sum_of_dots_from(std::span<const Vec3> x, std::span<const Vec3> g, const Vec3& origin) {
+  double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0, sum3 = 0.0;
+  std::size_t i = 0;
+  for (; i + 4 <= x.size(); i += 4) {
+    sum0 += (x[i] - origin).dot(g[i]);
+    sum1 += (x[i + 1] - origin).dot(g[i + 1]);
+    sum2 += (x[i + 2] - origin).dot(g[i + 2]);
+    sum3 += (x[i + 3] - origin).dot(g[i + 3]);
+  }
+  for (; i < x.size(); ++i) sum0 += (x[i] - origin).dot(g[i]);
+  return (sum0 + sum1) + (sum2 + sum3);
+}
+
 }  // namespace
 
 void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
@@ -103,30 +118,24 @@ double guarded_volume(double volume_m3, double rest_volume_m3) {
 }
 
 double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_vectors, std::span<Vec3> force) {
-  // Pass 1: twice the area vector of each face, 2A·n̂ = (x_b − x_a)×(x_c − x_a); it also gives the volume,
-  // since x_a·(x_b × x_c) = x_a·((x_b − x_a)×(x_c − x_a)).
-  // The volume is summed in kVolumeLanes partial sums (face f into lane f mod kVolumeLanes), added in
-  // lane order at the end: a fixed order, so bit-identical every run, without one long chain of
-  // dependent additions through all faces.
-  area_vectors.resize(faces.size());
-  const Vec3 origin = x[0];
-  constexpr std::size_t kVolumeLanes = 4;
-  std::array<double, kVolumeLanes> six_volume_lane{};
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 xa = x[faces[f][0]];
-    area_vectors[f] = (x[faces[f][1]] - xa).cross(x[faces[f][2]] - xa);
-    six_volume_lane[f % kVolumeLanes] += (xa - origin).dot(area_vectors[f]);
+                    std::vector<Vec3>& area_sums, std::span<Vec3> force) {
+  // Pass over the faces: twice the area vector of each face, 2A_f·n̂ = (x_b − x_a)×(x_c − x_a), summed at
+  // its three corners: g_i = Σ_{f ∋ i} 2A_f·n̂.
+  area_sums.assign(x.size(), Vec3::Zero());
+  for (const auto& [a, b, c] : faces) {
+    const Vec3 xa = x[a];
+    const Vec3 twice_area = (x[b] - xa).cross(x[c] - xa);
+    area_sums[a] += twice_area;
+    area_sums[b] += twice_area;
+    area_sums[c] += twice_area;
   }
-  double six_volume = 0.0;
-  for (double lane : six_volume_lane) six_volume += lane;
-  const double volume = six_volume / 6.0;
-  // Pass 2: P·A·n̂ split over three corners = (nRT / V) · (2A·n̂) / 6 per corner.
+  // The volume from the same sums: x_a·(2A_f·n̂) = x_a·(x_b × x_c) is the same for each corner of f, so
+  // 6V = Σ_f x_a·(2A_f·n̂) = ⅓ Σ_f (x_a + x_b + x_c)·(2A_f·n̂) = ⅓ Σ_i x_i·g_i, and Σ_i g_i = 0 on a closed
+  // mesh lets x_i be taken relative to the first vertex (small round-off).
+  const double volume = sum_of_dots_from(x, area_sums, x[0]) / 18.0;
+  // Then per vertex: P·A·n̂ of each adjacent face split over its three corners = (nRT / V) · g_i / 6.
   const double per_corner = nRT_J / guarded_volume(volume, rest_volume_m3) / 6.0;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 push = per_corner * area_vectors[f];
-    for (int corner : faces[f]) force[corner] += push;
-  }
+  for (std::size_t i = 0; i < x.size(); ++i) force[i] += per_corner * area_sums[i];
   return volume;
 }
 

@@ -44,8 +44,10 @@ double guarded_volume(double volume_m3, double rest_volume_m3);
 
 // Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each
 // corner. This is exactly +nRT ∂(ln V)/∂x_i, the negative gradient of E_gas = −nRT ln V, so the forces
-// on a closed mesh sum to zero. `area_vectors` is scratch of one entry per face. Returns V.
+// on a closed mesh sum to zero. `area_sums` is scratch of one entry per vertex (the sum of twice the area
+// vectors of its faces, from which V follows too); sized here, so no allocation once it has its size.
+// Returns V.
 double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_vectors, std::span<Vec3> force);
+                    std::vector<Vec3>& area_sums, std::span<Vec3> force);
 
 }  // namespace sim

@@ -32,7 +32,7 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
   body.topology = std::move(topology);
   state_.x.insert(state_.x.end(), x0.begin(), x0.end());
   state_.v.insert(state_.v.end(), x0.size(), v0);
-  area_scratch_.emplace_back(body.topology.faces.size());
+  area_scratch_.emplace_back(x0.size());
   bodies_.push_back(std::move(body));
   integrator_->restart();
 }
