@@ -44,7 +44,7 @@ done
   --set bodies.0.mesh=icosphere:6 --set render.width=1920 --set render.height=1080 --set duration=0.0667 \
   --set solver.dt=6e-6 --set render.figure_frames=0 > /dev/null
 echo "case,peak_rss_MiB" > "$tmp/memory.csv"
-echo "icosphere:6 at 1920x1080 (shadows, msaa 4),$(awk '{printf "%.1f", $1 / 1024}' "$tmp/rss.txt")" >> "$tmp/memory.csv"
+echo "icosphere:6 at 1920x1080 with shadows and msaa 4,$(awk '{printf "%.1f", $1 / 1024}' "$tmp/rss.txt")" >> "$tmp/memory.csv"
 
 python3 bench/performance_report.py "$tmp/step.json" "$tmp/render.csv" "$tmp/memory.csv" "$out" \
   "$(( $(date +%s) - start ))"
