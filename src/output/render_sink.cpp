@@ -29,7 +29,7 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
   const render::RenderSettings& settings = renderer_.settings();
   if (outputs_.write_frames) png_writer_.emplace(kPngQueueFrames);
   if (outputs_.video) {
-    video_ = std::make_unique<VideoPipe>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
+    video_ = std::make_unique<VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   }
   if (outputs_.figure_frames > 0) {
     figure_.emplace(evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame), settings.width_px,

@@ -1,7 +1,7 @@
 // The render command's frame sink: every frame of the run becomes a rendered image that goes to PNG
 // files (on the writer thread), an ffmpeg video and the figure, with each stage timed.
 //
-//   World ─► snapshot_surfaces ─► Renderer::draw ─► read_back ─┬─► VideoPipe (ffmpeg stdin)
+//   World ─► snapshot_surfaces ─► Renderer::draw ─► read_back ─┬─► VideoWriter thread ─► ffmpeg stdin
 //                                                              ├─► ContactSheet (chosen frames)
 //                                                              └─► PngWriter queue ─► frame_%04d.png
 #pragma once
@@ -15,7 +15,7 @@
 #include "frames/capturing_sink.hpp"
 #include "output/contact_sheet.hpp"
 #include "output/png_writer.hpp"
-#include "output/video_pipe.hpp"
+#include "output/video_writer.hpp"
 #include "render/renderer.hpp"
 
 namespace output {
@@ -37,7 +37,8 @@ struct RenderTimings {
   double snapshot_s = 0.0;   // World → FrameMesh
   double render_s = 0.0;     // normals, uploads, shadow and main passes, MSAA resolve, glFinish
   double read_back_s = 0.0;  // glReadPixels and the flip into an Image
-  double video_s = 0.0;      // writing frames into ffmpeg's pipe, and waiting for it to finish
+  double video_s = 0.0;      // render thread: handing frames to the video writer thread (a copy, or waiting
+                             // for its queue), and waiting for ffmpeg to finish
   double figure_s = 0.0;     // shrinking frames into the contact sheet and writing figure.png
   double queue_wait_s = 0.0; // render thread blocked on a full PNG queue
   PngWriterTimings png;      // on the writer thread: encode and store
@@ -72,7 +73,7 @@ class RenderSink final : public frames::CapturingFrameSink {
   int captured_index_ = 0;
   softbody::Image frame_;
   std::optional<PngWriter> png_writer_;
-  std::unique_ptr<VideoPipe> video_;
+  std::unique_ptr<VideoWriter> video_;  // ffmpeg fed from its own thread
   std::optional<ContactSheet> figure_;
   bool figure_written_ = false;
   RenderTimings timings_;
