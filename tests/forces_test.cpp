@@ -1,10 +1,13 @@
 // The force model: pressure as the exact gradient of the gas energy, springs and dampers in closed form.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "mesh/generators.hpp"
+#include "sim/finite_scan.hpp"
 #include "sim/forces.hpp"
 
 namespace {
@@ -91,6 +94,54 @@ TEST(Damper, ActsOnlyAlongTheSpring) {
   // f_0 = -c ((v_0 - v_1)·d̂) d̂, d̂ = (-1, 0, 0), (v_0 - v_1)·d̂ = 2 → f_0 = -3·2·(-1,0,0) = (6, 0, 0).
   EXPECT_NEAR((force[0] - Vec3(6, 0, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((force[0] + force[1]).norm(), 0.0, 1e-12);
+}
+
+// The fused edge loop World uses equals the two reference loops up to round-off, on a mesh large enough
+// for several edge blocks and a partial last block, with a coincident pair that must get no force.
+TEST(SpringDamper, FusedLoopEqualsSpringsPlusDampers) {
+  const mesh::TriMesh sphere = mesh::icosphere(3);  // 1920 edges: 30 blocks of 64
+  std::vector<Vec3> x = sphere.vertices, v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double s = static_cast<double>(i);
+    x[i] *= 1.0 + 0.1 * std::sin(s);
+    v[i] = Vec3(std::cos(s), std::sin(2 * s), 0.5 * std::cos(3 * s));
+  }
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& f : sphere.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      if (f[k] < f[(k + 1) % 3]) edges.push_back({f[k], f[(k + 1) % 3]});
+    }
+  }
+  edges.push_back({0, 0});  // coincident endpoints: no direction, no force
+  const std::vector<double> rest(edges.size(), 0.2);
+  std::vector<Vec3> reference(x.size(), Vec3::Zero()), fused(x.size(), Vec3::Zero());
+  sim::add_springs(edges, rest, 3000.0, x, reference);
+  sim::add_dampers(edges, 0.5, x, v, reference);
+  sim::add_spring_dampers(edges, rest, 3000.0, 0.5, x, v, fused);
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    worst = std::max(worst, (fused[i] - reference[i]).norm());
+    scale = std::max(scale, reference[i].norm());
+  }
+  // Different rounding only: a few ulps of the largest edge force summed over six edges.
+  EXPECT_LT(worst, 1e-12 * scale) << "worst " << worst << " of " << scale;
+  std::vector<Vec3> undamped(x.size(), Vec3::Zero()), springs(x.size(), Vec3::Zero());
+  sim::add_springs(edges, rest, 3000.0, x, springs);
+  sim::add_spring_dampers(edges, rest, 3000.0, 0.0, x, v, undamped);  // c = 0: the spring-only loop
+  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_LT((undamped[i] - springs[i]).norm(), 1e-12 * scale);
+}
+
+TEST(FiniteScan, FindsNaNAndInfinityAnywhere) {
+  std::vector<Vec3> values(100, Vec3(1, -2, 3));
+  EXPECT_TRUE(sim::all_finite(values));
+  EXPECT_TRUE(sim::all_finite(std::span<const Vec3>()));
+  values[57].z() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(sim::all_finite(values));
+  values[57].z() = 0.0;
+  values[99].x() = -std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(sim::all_finite(values));
+  values[99].x() = std::numeric_limits<double>::max();  // large but finite
+  EXPECT_TRUE(sim::all_finite(values));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
-#include "frames/frame_loop.hpp"
+#include "frames/overlapped_frame_loop.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
 #include "render/gl_context.hpp"
@@ -69,10 +69,11 @@ int run_render(const RenderOptions& options) {
   output::RenderSink sink(renderer, outputs);
 
   ProgressLine progress;
-  frames::FrameSink* sinks[] = {&sink};
+  frames::CapturingFrameSink* sinks[] = {&sink};
   frames::RunStats stats;
   try {
-    stats = frames::run_frames(run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); });
+    // The next frame steps on a worker thread while this one (the GL context's) renders the last.
+    stats = frames::run_frames_overlapped(run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); });
   } catch (...) {
     progress.clear();
     throw;

@@ -12,8 +12,8 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Simulates from frame `frame - 1` to frame `frame`: whole fixed steps, or the adaptive steps that land
-// exactly on the frame time.
+}  // namespace
+
 void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
   if (world.adaptive()) {
     world.advance_to(frame * clock.frame_interval_s);
@@ -21,8 +21,6 @@ void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
   }
   for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
 }
-
-}  // namespace
 
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,
                     const Progress& progress) {

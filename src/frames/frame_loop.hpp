@@ -17,6 +17,10 @@ struct RunStats {
   double step_wall_s = 0.0;  // wall-clock time spent stepping the world
 };
 
+// Simulates from frame `frame - 1` to frame `frame`: whole fixed steps, or the adaptive steps that land
+// exactly on the frame time.
+void advance_one_frame(sim::World& world, const FrameClock& clock, int frame);
+
 // Called after each frame with (frames done, frames in all); may be empty.
 using Progress = std::function<void(int, int)>;
 

@@ -29,7 +29,7 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
   const render::RenderSettings& settings = renderer_.settings();
   if (outputs_.write_frames) png_writer_.emplace(kPngQueueFrames);
   if (outputs_.video) {
-    video_ = std::make_unique<VideoPipe>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
+    video_ = std::make_unique<VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   }
   if (outputs_.figure_frames > 0) {
     figure_.emplace(evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame), settings.width_px,
@@ -37,10 +37,16 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
   }
 }
 
-void RenderSink::on_frame(int index, double /*time_s*/, const sim::World& world) {
+void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) {
   auto start = Clock::now();
   snapshot_surfaces(world, meshes_);
+  captured_index_ = index;
   lap(start, timings_.snapshot_s);
+}
+
+void RenderSink::deliver() {
+  const int index = captured_index_;
+  auto start = Clock::now();
   renderer_.draw(meshes_);
   lap(start, timings_.render_s);
   if (png_writer_) frame_ = png_writer_->recycled_image();

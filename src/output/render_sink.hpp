@@ -1,7 +1,7 @@
 // The render command's frame sink: every frame of the run becomes a rendered image that goes to PNG
 // files (on the writer thread), an ffmpeg video and the figure, with each stage timed.
 //
-//   World ─► snapshot_surfaces ─► Renderer::draw ─► read_back ─┬─► VideoPipe (ffmpeg stdin)
+//   World ─► snapshot_surfaces ─► Renderer::draw ─► read_back ─┬─► VideoWriter thread ─► ffmpeg stdin
 //                                                              ├─► ContactSheet (chosen frames)
 //                                                              └─► PngWriter queue ─► frame_%04d.png
 #pragma once
@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "frames/frame_sink.hpp"
+#include "frames/capturing_sink.hpp"
 #include "output/contact_sheet.hpp"
 #include "output/png_writer.hpp"
-#include "output/video_pipe.hpp"
+#include "output/video_writer.hpp"
 #include "render/renderer.hpp"
 
 namespace output {
@@ -37,18 +37,23 @@ struct RenderTimings {
   double snapshot_s = 0.0;   // World → FrameMesh
   double render_s = 0.0;     // normals, uploads, shadow and main passes, MSAA resolve, glFinish
   double read_back_s = 0.0;  // glReadPixels and the flip into an Image
-  double video_s = 0.0;      // writing frames into ffmpeg's pipe, and waiting for it to finish
+  double video_s = 0.0;      // render thread: handing frames to the video writer thread (a copy, or waiting
+                             // for its queue), and waiting for ffmpeg to finish
   double figure_s = 0.0;     // shrinking frames into the contact sheet and writing figure.png
   double queue_wait_s = 0.0; // render thread blocked on a full PNG queue
   PngWriterTimings png;      // on the writer thread: encode and store
 };
 
-class RenderSink final : public frames::FrameSink {
+class RenderSink final : public frames::CapturingFrameSink {
  public:
   // Starts the PNG writer and ffmpeg (when asked for); `renderer` must outlive the sink.
   RenderSink(render::Renderer& renderer, RenderOutputs outputs);
 
-  void on_frame(int index, double time_s, const sim::World& world) override;
+  // Copies the bodies' surfaces (positions and triangles) out of the world.
+  void capture(int index, double time_s, const sim::World& world) override;
+  // Renders the captured surfaces and hands the image to the outputs; never reads the world, so the
+  // world may step meanwhile (frames::run_frames_overlapped).
+  void deliver() override;
   // Complete: drains the PNG queue, finishes the video, writes figure.png, removes stale frames numbered
   // after the last one (left by an earlier, longer run, they would end up in `ffmpeg -i pattern`).
   // Incomplete: drains the PNG queue (those frames are valid) and abandons the video and the figure.
@@ -64,10 +69,11 @@ class RenderSink final : public frames::FrameSink {
 
   render::Renderer& renderer_;
   RenderOutputs outputs_;
-  std::vector<render::FrameMesh> meshes_;
+  std::vector<render::FrameMesh> meshes_;  // the captured frame
+  int captured_index_ = 0;
   softbody::Image frame_;
   std::optional<PngWriter> png_writer_;
-  std::unique_ptr<VideoPipe> video_;
+  std::unique_ptr<VideoWriter> video_;  // ffmpeg fed from its own thread
   std::optional<ContactSheet> figure_;
   bool figure_written_ = false;
   RenderTimings timings_;

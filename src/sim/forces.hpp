@@ -16,6 +16,9 @@ using softbody::Vec3;
 // Gravity: f_i += m_i g.
 void add_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
 
+// Gravity as the first term of the sum: f_i = m_i g (overwrites `force`).
+void set_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
+
 // Hooke springs: f_i += -k (|d| - L0) d̂ with d = x_i - x_j, and the opposite on j.
 void add_springs(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
                  std::span<const Vec3> x, std::span<Vec3> force);
@@ -23,6 +26,14 @@ void add_springs(std::span<const std::array<int, 2>> edges, std::span<const doub
 // Dampers along the springs: f_i += -c ((v_i - v_j)·d̂) d̂, and the opposite on j.
 void add_dampers(std::span<const std::array<int, 2>> edges, double c, std::span<const Vec3> x,
                  std::span<const Vec3> v, std::span<Vec3> force);
+
+// Springs and dampers in one pass over the edges (what World uses): with d = x_i - x_j, L = |d|,
+//   f_i = -k (L - L0) d/L - c ((v_i - v_j)·d) d/L²  =  [(-k (L - L0) L - c (v_i - v_j)·d) / L²] d,
+// one square root and one division per edge. Equal to add_springs + add_dampers up to round-off. The
+// edges go in blocks: gather the differences, compute the coefficients in a loop without indirection
+// (which the compiler vectorises), then scatter, so results do not depend on the vector width.
+void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
+                        double c, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force);
 
 // Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
@@ -33,8 +44,10 @@ double guarded_volume(double volume_m3, double rest_volume_m3);
 
 // Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each
 // corner. This is exactly +nRT ∂(ln V)/∂x_i, the negative gradient of E_gas = −nRT ln V, so the forces
-// on a closed mesh sum to zero. `area_vectors` is scratch of one entry per face. Returns V.
+// on a closed mesh sum to zero. `area_sums` is scratch of one entry per vertex (the sum of twice the area
+// vectors of its faces, from which V follows too); sized here, so no allocation once it has its size.
+// Returns V.
 double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_vectors, std::span<Vec3> force);
+                    std::vector<Vec3>& area_sums, std::span<Vec3> force);
 
 }  // namespace sim

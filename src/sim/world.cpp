@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "mesh/load.hpp"
 #include "sim/contact.hpp"
+#include "sim/finite_scan.hpp"
 #include "sim/forces.hpp"
 
 namespace sim {
@@ -31,7 +32,7 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
   body.topology = std::move(topology);
   state_.x.insert(state_.x.end(), x0.begin(), x0.end());
   state_.v.insert(state_.v.end(), x0.size(), v0);
-  area_scratch_.emplace_back(body.topology.faces.size());
+  area_scratch_.emplace_back(x0.size());
   bodies_.push_back(std::move(body));
   integrator_->restart();
 }
@@ -75,16 +76,16 @@ void World::advance_to(double end_time_s) {
 }
 
 void World::forces(const State& state, std::vector<Vec3>& force) {
-  force.assign(state.x.size(), Vec3::Zero());
+  force.resize(state.x.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     const Topology& topology = body.topology;
     const std::span<const Vec3> x(state.x.data() + body.first_vertex, body.vertex_count);
     const std::span<const Vec3> v(state.v.data() + body.first_vertex, body.vertex_count);
     const std::span<Vec3> f(force.data() + body.first_vertex, body.vertex_count);
-    add_gravity(topology.mass_kg, gravity_, f);
-    if (body.params.stiffness_N_per_m != 0.0) add_springs(topology.edges, topology.rest_length_m, body.params.stiffness_N_per_m, x, f);
-    if (body.params.damping_N_s_per_m != 0.0) add_dampers(topology.edges, body.params.damping_N_s_per_m, x, v, f);
+    set_gravity(topology.mass_kg, gravity_, f);  // starts the sum: no separate zeroing pass
+    const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
+    if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
     if (body.params.pressure_J != 0.0) {
       add_pressure(topology.faces, body.params.pressure_J, topology.rest_volume_m3, x, area_scratch_[b], f);
     }
@@ -113,6 +114,7 @@ void World::resolve_contacts() {
 }
 
 void World::check_finite() const {
+  if (all_finite(state_.x) && all_finite(state_.v)) return;  // the common case, in one vectorised pass
   for (const Body& body : bodies_) {
     for (int i = 0; i < body.vertex_count; ++i) {
       const int g = body.first_vertex + i;

@@ -84,7 +84,7 @@ class World final : public Dynamics {
   long long rejected_step_count_ = 0;
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
   std::vector<Vec3> force_scratch_;
-  std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per face
+  std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
   BodyContactSettings body_contact_;
   BodyCollider collider_;
 };

@@ -1,0 +1,31 @@
+// The benchmark scene: scenes/bounce.json's ball at a chosen icosphere level, integrator and switches.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace bench {
+
+// What a benchmark varies on top of bounce.json (springs, dampers, pressure, gravity, paper floor).
+struct BenchCase {
+  int level = 3;                                     // icosphere subdivision level (1..6)
+  scene::Integrator integrator = scene::Integrator::Symplectic;
+  bool pressure = true;                              // false: nRT = 0 (no volume or pressure pass)
+  bool damping = true;                               // false: c = 0 (no damper term)
+  bool floor = true;                                 // false: no floor (no contact pass)
+  bool on_floor = false;                             // true: starts touching the floor (centre at y = 1 m)
+};
+
+// The time step used at `level`: bounce.json's 1e-4 s up to level 4, then quartered per level, because
+// each level halves the edge length and quarters the vertex mass (the stiff modes speed up).
+double bench_dt_s(int level);
+
+// The scene for `c`, read from scenes/bounce.json and changed as `c` says.
+scene::Scene bench_scene(const BenchCase& c);
+
+// The world of bench_scene(c).
+sim::World bench_world(const BenchCase& c);
+
+}  // namespace bench

@@ -1,0 +1,19 @@
+// The frame loop with simulation and output overlapped: frame n is delivered while frame n + 1 steps.
+#pragma once
+
+#include <span>
+
+#include "frames/capturing_sink.hpp"
+#include "frames/frame_loop.hpp"
+
+namespace frames {
+
+// Same frames, same states and same sink calls as run_frames (capture then deliver, in frame order), but
+// while the sinks deliver frame n on the calling thread (the one that owns a GL context), a worker thread
+// steps the world to frame n + 1. On divergence every frame before the diverged one has been delivered;
+// the sinks are finished with complete = false and the DivergedError propagates, as with run_frames.
+// RunStats::step_wall_s is then the worker's stepping time, which overlaps the sinks' time.
+RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
+                               std::span<CapturingFrameSink* const> sinks, const Progress& progress = {});
+
+}  // namespace frames
