@@ -6,18 +6,32 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench_support/limits.hpp"
 #include "bench_support/stress.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli("bench_stress: stability stress sweep; each run must end stable or be stopped by the guard");
-  bool quick = false, maps = true;
+  bool quick = false, maps = true, limits = false;
+  int limit_steps = 20000;
   std::string out_dir = "out/stress";
   cli.add_flag("--quick", quick, "A short subset (about 200 runs, for ctest -L stress)");
   cli.add_option("--out", out_dir, "Output folder for stress.csv and the stability maps")->type_name("DIR");
   cli.add_flag("!--no-maps", maps, "Skip the gnuplot stability maps");
+  cli.add_flag("--limits", limits, "Instead: measure each integrator's stable dt and compare it with the estimate");
+  cli.add_option("--limit-steps", limit_steps, "Steps per trial of --limits (default 20000)");
   CLI11_PARSE(cli, argc, argv);
 
   std::filesystem::create_directories(out_dir);
+  if (limits) {
+    const auto rows = bench::measure_limits(bench::limit_bodies(), limit_steps);
+    for (const auto& r : rows) {
+      std::printf("%-15s %-11s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
+                  r.body.name.c_str(), r.body.mesh.c_str(), scene::to_string(r.integrator).c_str(), r.estimate_dt_s,
+                  r.measured_dt_s, r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
+    }
+    bench::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
+    return 0;
+  }
   const auto start = std::chrono::steady_clock::now();
   std::vector<bench::StressResult> results;
   int counts[3] = {0, 0, 0}, below_estimate_guarded = 0;

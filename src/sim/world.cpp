@@ -46,7 +46,7 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
 
 void World::step(double dt) {
   if (retry_) backup_ = state_;
-  if (auto found = integrate_and_check(dt)) {
+  if (auto found = substep(dt)) {
     if (!retry_ || !retry_with_substeps(dt)) throw_diverged(*found, dt);
   }
   time_s_ += dt;
@@ -59,14 +59,20 @@ std::optional<Divergence> World::integrate_and_check(double dt) {
   return guard_.check(bodies_, state_.x, state_.v);
 }
 
+std::optional<Divergence> World::substep(double dt) {
+  for (int s = 0; s < substeps_; ++s) {
+    if (auto found = integrate_and_check(dt / substeps_)) return found;
+  }
+  return std::nullopt;
+}
+
 bool World::retry_with_substeps(double dt) {
   constexpr int kMostSubsteps = 1024;
-  for (int n = 2; n <= kMostSubsteps; n *= 2) {
+  while (substeps_ < kMostSubsteps) {
+    substeps_ *= 2;
     state_ = backup_;
     integrator_->restart();
-    bool ok = true;
-    for (int s = 0; s < n && ok; ++s) ok = !integrate_and_check(dt / n);
-    if (ok) {
+    if (!substep(dt)) {
       ++retried_step_count_;
       return true;
     }

@@ -28,15 +28,17 @@ class World final : public Dynamics {
   void set_body_contact(const BodyContactSettings& settings) { body_contact_ = settings; }
 
   // One time step of dt seconds: integrate (forces evaluated inside) → body contacts → floor contact →
-  // guard (sim/guard.hpp). When the guard finds a divergence, the step is retried as 2, 4, .. 1024
-  // substeps if solver.retry is on; otherwise (or if those fail too) it throws softbody::DivergedError
-  // saying when, where, what, and which dt the estimate (sim/stability.hpp) finds stable.
+  // guard (sim/guard.hpp). When the guard finds a divergence and solver.retry is on, the step is redone
+  // from its start as 2, 4, .. 1024 substeps, and later steps keep the substep count that worked (a dt
+  // above the stable limit stays unstable). Otherwise, or if 1024 fail too, it throws
+  // softbody::DivergedError saying when, where, what, and which dt the estimate (sim/stability.hpp) finds stable.
   // Fixed-step integrators run exactly this path; an adaptive one takes a step of exactly dt.
   void step(double dt);
 
   // The step advance_to() tries first (solver.dt, or the "auto" estimate).
   void set_trial_dt(double dt) { adaptive_dt_s_ = dt; }
-  long long retried_step_count() const { return retried_step_count_; }  // solver.retry: steps split up
+  long long retried_step_count() const { return retried_step_count_; }  // solver.retry: steps redone
+  int substeps() const { return substeps_; }  // solver.retry: each step is now this many substeps
 
   // True when the integrator chooses its own steps (rk45): drive it with advance_to().
   bool adaptive() const { return integrator_->adaptive() != nullptr; }
@@ -79,7 +81,9 @@ class World final : public Dynamics {
   void resolve_contacts();
   // Integrate, resolve contacts, and ask the guard: the problem found, if any.
   std::optional<Divergence> integrate_and_check(double dt);
-  // After a failed step from backup_: 2, 4, .. substeps; false when even the smallest fail.
+  // dt as substeps_ substeps, each checked: the first problem found.
+  std::optional<Divergence> substep(double dt);
+  // After a failed step from backup_: twice the substeps until one works; false past 1024.
   bool retry_with_substeps(double dt);
   [[noreturn]] void throw_diverged(const Divergence& found, double dt) const;
 
@@ -102,6 +106,7 @@ class World final : public Dynamics {
   scene::Integrator integrator_kind_;
   bool retry_ = false;
   long long retried_step_count_ = 0;
+  int substeps_ = 1;
   State backup_;                              // the state before the step (retry, rk45)
   std::vector<Vec3> initial_x_;               // positions as built, for the stable-dt advice
 };
