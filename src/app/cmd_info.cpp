@@ -47,6 +47,10 @@ int run_info(const SceneOptions& options) {
   }
   std::printf("estimated stable dt (limiting body %d; auto uses %.2f x it; frame interval 1/%d s):\n",
               estimate.limiting_body, sim::kAutoDtSafety, run.scene.fps);
+  if (estimate.travel_dt_s != sim::StabilityEstimate::kUnlimited) {
+    std::printf("  (includes the floor-contact travel limit: dt <= %.4g s, a tenth of the shortest edge per step)\n",
+                estimate.travel_dt_s);
+  }
   std::printf("  %-10s  %-12s %-12s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt");
   for (int i = 0; i < 6; ++i) {
     const auto integrator = static_cast<scene::Integrator>(i);

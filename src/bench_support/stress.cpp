@@ -197,7 +197,7 @@ void write_stress_csv(const std::vector<StressResult>& results, const std::files
     std::string message = r.message;
     for (char& ch : message) if (ch == '"') ch = '\'';
     char row[512];
-    std::snprintf(row, sizeof row, "%s,%s,%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%lld,%.6g,%.4g,%.6g,",
+    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%lld,%.6g,%.4g,%.6g,",
                   c.group.c_str(), c.shape.c_str(), r.vertices, scene::to_string(c.integrator).c_str(),
                   c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s,
                   r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.steps, r.simulated_s,
@@ -217,35 +217,37 @@ std::vector<std::filesystem::path> write_stability_maps(const std::vector<Stress
         "set key outside bottom center horizontal\nset xrange [3:3e6]\nset yrange [5e-7:2e-2]\n";
   for (Integrator integrator : kIntegrators) {
     const std::string name = scene::to_string(integrator);
-    const std::filesystem::path data = dir / ("stability_map_" + name + ".dat");
-    std::ofstream out(data);
+    // One data file per series: gnuplot skips empty blocks of a multi-block file and renumbers the rest.
+    auto data = [&](const std::string& series) { return dir / ("stability_map_" + name + "_" + series + ".dat"); };
     for (Outcome o : {Outcome::Stable, Outcome::Guarded, Outcome::Failed}) {
-      out << "# " << to_string(o) << "\n";
+      std::ofstream out(data(to_string(o)));
+      out << "# stiffness [N/m], dt [s]: " << to_string(o) << " runs of the map group, c > 0\n";
       for (const StressResult& r : results) {
         if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 && r.outcome == o) {
           out << r.spec.stiffness_N_per_m << " " << r.dt_s << "\n";
         }
       }
-      out << "\n\n";
     }
-    out << "# estimate\n";
+    std::ofstream estimate(data("estimate"));
+    estimate << "# stiffness [N/m], estimated stable dt [s]\n";
     for (const StressResult& r : results) {
       if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 && r.spec.dt_s == 1e-6 &&
           std::isfinite(r.estimate_dt_s) && r.estimate_dt_s > 0) {
-        out << r.spec.stiffness_N_per_m << " " << r.estimate_dt_s << "\n";
+        estimate << r.spec.stiffness_N_per_m << " " << r.estimate_dt_s << "\n";
       }
     }
+    estimate.close();
     const std::filesystem::path png = dir / ("stability_map_" + name + ".png");
     gp << "set output '" << png.string() << "'\nset title '" << name
        << ": icosphere:1, 1 kg, c = 0.5 N s/m, nRT = 30 J, floor, 0.3 s'\n"
-       << "plot '" << data.string() << "' index 0 with points pt 7 ps 1.2 lc rgb '#2e8b57' title 'stable', "
-       << "'' index 1 with points pt 9 ps 1.4 lc rgb '#e69f00' title 'stopped by the guard', "
-       << "'' index 2 with points pt 2 ps 2 lc rgb '#d00000' title 'failed', "
-       << "'' index 3 with lines lw 2 lc rgb '#1f3a93' title 'estimated stable dt'\n";
+       << "plot '" << data("stable").string() << "' with points pt 7 ps 1.2 lc rgb '#2e8b57' title 'stable', '"
+       << data("guarded").string() << "' with points pt 9 ps 1.4 lc rgb '#e69f00' title 'stopped by the guard', '"
+       << data("failed").string() << "' with points pt 2 ps 2 lc rgb '#d00000' title 'failed', '"
+       << data("estimate").string() << "' with lines lw 2 lc rgb '#1f3a93' title 'estimated stable dt'\n";
     written.push_back(png);
   }
   gp.close();
-  const std::string command = "gnuplot '" + script.string() + "' 2>&1";
+  const std::string command = "gnuplot '" + script.string() + "' 2>/dev/null";
   if (std::system(command.c_str()) != 0) {
     std::fprintf(stderr, "warning: gnuplot failed or is missing; the maps' data and script are in %s\n", dir.c_str());
     return {};

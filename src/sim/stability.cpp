@@ -245,7 +245,26 @@ double stable_dt(scene::Integrator integrator, const ModeBounds& bounds) {
 }
 
 StabilityEstimate estimate_stability(const World& world) {
-  return estimate_stability(world.bodies(), world.state().x);
+  StabilityEstimate estimate = estimate_stability(world.bodies(), world.state().x);
+  if (!world.floor()) return estimate;
+  const double g = world.gravity().norm();
+  for (const Body& body : world.bodies()) {
+    const auto x = world.positions(body);
+    const auto v = world.velocities(body);
+    double speed = 0.0, height = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      speed = std::max(speed, v[i].norm());
+      height = std::max(height, x[i].y() - world.floor()->height_m);
+    }
+    speed += std::sqrt(2.0 * g * std::max(0.0, height));  // m/s, v² = 2 g h
+    if (speed > 0.0) {
+      const double travel = kTravelFraction * body_stats(body, x).edge_min_m / speed;
+      estimate.travel_dt_s = std::min(estimate.travel_dt_s, travel);
+    }
+  }
+  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticContactFactor;
+  for (double& dt : estimate.stable_dt_s) dt = std::min(dt, estimate.travel_dt_s);
+  return estimate;
 }
 
 StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<const Vec3> x) {
