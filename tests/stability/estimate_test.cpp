@@ -6,6 +6,7 @@
 #include "bench_support/limits.hpp"
 #include "bench_support/stable_dt.hpp"
 #include "sim/stability.hpp"
+#include "test_helpers.hpp"
 
 namespace {
 
@@ -63,6 +64,27 @@ TEST(Estimate, PowerIterationsLieBelowTheGershgorinBound) {
   const sim::ModeBounds b = sim::mode_bounds(world.bodies()[0], world.positions(world.bodies()[0]));
   EXPECT_LE(b.lambda_max_per_kg, b.lambda_gershgorin_per_kg);
   EXPECT_GT(b.lambda_max_per_kg, 0.3 * b.lambda_gershgorin_per_kg);
+}
+
+}  // namespace
+
+namespace {
+
+// `softbody info` prints the estimate per integrator, and `--set solver.dt=auto` picks 0.7 × it.
+TEST(InfoCommand, PrintsTheEstimateAndDtAutoUsesIt) {
+  const auto result = testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto");
+  EXPECT_EQ(result.exit_status, 0) << result.output;
+  for (const char* expected : {"642 vertices, 1920 springs", "lumped vertex masses", "omega_max", "euler       0.0001666",
+                               "implicit", "solver.dt = auto: 0.0001166 s (0.70 x the estimated stable dt of euler"}) {
+    EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
+  }
+}
+
+// Forward Euler without dampers has no dt to pick: a bad-input error naming the key, exit status 2.
+TEST(InfoCommand, DtAutoRefusesForwardEulerWithoutDampers) {
+  const auto result = testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto --set bodies.0.damping=0");
+  EXPECT_EQ(result.exit_status, 2) << result.output;
+  EXPECT_NE(result.output.find("solver.dt: \"auto\" found no stable dt for euler"), std::string::npos) << result.output;
 }
 
 }  // namespace
