@@ -269,9 +269,16 @@ StabilityEstimate estimate_stability(const World& world) {
       estimate.travel_dt_s = std::min(estimate.travel_dt_s, travel);
     }
   }
-  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticContactFactor;
+  scale_for_floor_contact(estimate);
   for (double& dt : estimate.stable_dt_s) dt = std::min(dt, estimate.travel_dt_s);
   return estimate;
+}
+
+void scale_for_floor_contact(StabilityEstimate& estimate) {
+  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticContactFactor;
+  for (int i = 0; i < 6; ++i) {
+    if (static_cast<scene::Integrator>(i) != scene::Integrator::Implicit) estimate.stable_dt_s[i] *= kContactMargin;
+  }
 }
 
 StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<const Vec3> x) {

@@ -82,6 +82,10 @@ constexpr double kTravelFraction = 0.1;
 // floor, while Verlet, rk4 and Euler keep theirs. Until that is understood its estimate with a floor is
 // scaled by this measured factor (docs/stability.md).
 constexpr double kSymplecticContactFactor = 0.2;
+// Every explicit method with floor contact: the projection moves vertices between steps, and forward
+// Euler's damper limit c/k is sharp; the sweep stopped runs at exactly 1.0 × the free-flight estimate
+// (scenes/bounce.json: free flight stable to 1.67e-4 s, with the floor diverging at 1.6e-4 s).
+constexpr double kContactMargin = 0.9;
 
 // The estimate for the world's current state (with the contact limit), or for bodies at positions `x`
 // (all bodies' vertices; spring, damper and gas limits only).
@@ -93,6 +97,9 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
 // without dampers (unstable at every dt), naming the key.
 double auto_dt(const StabilityEstimate& estimate, scene::Integrator integrator, double frame_interval_s,
                const std::string& scene_file);
+
+// Applies kSymplecticContactFactor and kContactMargin (what a floor costs; the travel limit needs velocities).
+void scale_for_floor_contact(StabilityEstimate& estimate);
 
 // "dt ≤ 1.23e-04 s (euler)"-style advice for a diverged run: the estimate for `integrator`, and implicit's.
 std::string stable_dt_advice(const StabilityEstimate& estimate, scene::Integrator integrator);

@@ -85,8 +85,9 @@ void World::throw_diverged(const Divergence& found, double dt) const {
   message << "diverged at t = " << time_s_ + dt << " s (step " << step_count_ + 1 << ", dt = " << dt << " s, "
           << scene::to_string(integrator_kind_) << "): body " << found.body;
   if (found.vertex >= 0) message << ", vertex " << found.vertex;
-  message << " " << found.what << "; "
-          << stable_dt_advice(estimate_stability(bodies_, initial_x_), integrator_kind_)
+  StabilityEstimate estimate = estimate_stability(bodies_, initial_x_);  // the start: this state is gone
+  if (floor_) scale_for_floor_contact(estimate);
+  message << " " << found.what << "; " << stable_dt_advice(estimate, integrator_kind_)
           << " (softbody info SCENE prints the estimate)";
   throw softbody::DivergedError(message.str());
 }
