@@ -27,5 +27,6 @@ Action register_bench(CLI::App& parent);
 // Makes `command` the accuracy benchmark (softbody bench accuracy, and build/bench_accuracy).
 Action add_accuracy_options(CLI::App& command);
 Action register_render(CLI::App& parent);
+Action register_info(CLI::App& parent);
 
 }  // namespace app

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   actions["export"] = app::register_export(cli);
   actions["bench"] = app::register_bench(cli);
   actions["render"] = app::register_render(cli);
+  actions["info"] = app::register_info(cli);
 
   try {
     cli.parse(argc, argv);

@@ -6,16 +6,27 @@
 #include <iostream>
 
 #include "scene/scene_json.hpp"
+#include "sim/stability.hpp"
 
 namespace app {
 
 PreparedRun prepare_run(const SceneOptions& options) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
   std::vector<std::string> notes;
-  const bool adaptive = scene.solver.integrator == scene::Integrator::Rk45;  // chooses its own steps
-  if (!clock.dt_note.empty() && !adaptive) notes.push_back(clock.dt_note);
   sim::World world = sim::build_world(scene, notes);
+  if (scene.solver.dt_auto) {
+    const sim::StabilityEstimate estimate = sim::estimate_stability(world);
+    scene.solver.dt_s = sim::auto_dt(estimate, scene.solver.integrator, 1.0 / scene.fps, scene.source.string());
+    world.set_trial_dt(scene.solver.dt_s);
+    char note[200];
+    std::snprintf(note, sizeof note, "solver.dt = auto: %.4g s (%.2f x the estimated stable dt of %s, %.4g s)",
+                  scene.solver.dt_s, sim::kAutoDtSafety, scene::to_string(scene.solver.integrator).c_str(),
+                  estimate.stable_dt(scene.solver.integrator));
+    notes.insert(notes.begin(), note);
+  }
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
+  const bool adaptive = scene.solver.integrator == scene::Integrator::Rk45;  // chooses its own steps
+  if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto) notes.push_back(clock.dt_note);
   for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }

@@ -154,7 +154,13 @@ Solver read_solver(ObjectReader& top) {
                                             {"rk4", Integrator::Rk4},
                                             {"rk45", Integrator::Rk45},
                                             {"implicit", Integrator::Implicit}});
-  solver.dt_s = r.number("dt", solver.dt_s, kPositive);
+  if (r.has("dt") && r.at("dt").is_string()) {
+    if (r.at("dt").get<std::string>() != "auto") r.fail(r.child("dt"), "expected a number > 0 or \"auto\"", &r.at("dt"));
+    solver.dt_auto = true;
+  } else {
+    solver.dt_s = r.number("dt", solver.dt_s, kPositive);
+  }
+  solver.retry = r.boolean("retry", solver.retry);
   solver.tolerance = r.number("tolerance", solver.tolerance, kPositive);
   r.reject_unknown();
   return solver;
@@ -193,6 +199,50 @@ std::string read_mesh_spec(ObjectReader& r, Body& body) {
   return spec;
 }
 
+// "stiffness": N/m, or {"youngs": Pa, "thickness": m} or {"frequency": Hz}.
+void read_stiffness(ObjectReader& body_reader, Body& body) {
+  if (!body_reader.has("stiffness") || !body_reader.at("stiffness").is_object()) {
+    body.stiffness_N_per_m = body_reader.number("stiffness", body.stiffness_N_per_m, kNonNegative);
+    return;
+  }
+  ObjectReader r(body_reader.at("stiffness"), body_reader.child("stiffness"), body_reader.file());
+  StiffnessIntent intent;
+  intent.youngs_Pa = r.number("youngs", 0.0, kPositive);
+  intent.thickness_m = r.number("thickness", intent.thickness_m, kPositive);
+  intent.frequency_Hz = r.number("frequency", 0.0, kPositive);
+  if ((intent.youngs_Pa > 0.0) == (intent.frequency_Hz > 0.0)) {
+    r.fail(body_reader.child("stiffness"), "expected exactly one of \"youngs\" (Pa, with \"thickness\" in m) or \"frequency\" (Hz)", nullptr);
+  }
+  r.reject_unknown();
+  body.stiffness_intent = intent;
+}
+
+// "damping": N·s/m, or {"ratio": ζ} (fraction of critical damping of the breathing mode).
+void read_damping(ObjectReader& body_reader, Body& body) {
+  if (!body_reader.has("damping") || !body_reader.at("damping").is_object()) {
+    body.damping_N_s_per_m = body_reader.number("damping", body.damping_N_s_per_m, kNonNegative);
+    return;
+  }
+  ObjectReader r(body_reader.at("damping"), body_reader.child("damping"), body_reader.file());
+  if (!r.has("ratio")) r.fail(r.child("ratio"), "expected a damping ratio >= 0 (1: critical)", nullptr);
+  body.damping_ratio = r.number("ratio", 0.0, kNonNegative);
+  r.reject_unknown();
+}
+
+// "pressure": nRT in J, or {"inflation": f, "start": "equilibrium" | "rest"}.
+void read_pressure(ObjectReader& body_reader, Body& body) {
+  if (!body_reader.has("pressure") || !body_reader.at("pressure").is_object()) {
+    body.pressure_J = body_reader.number("pressure", body.pressure_J, kNonNegative);
+    return;
+  }
+  ObjectReader r(body_reader.at("pressure"), body_reader.child("pressure"), body_reader.file());
+  PressureIntent intent;
+  intent.inflation = r.number("inflation", intent.inflation, Range{[](double x) { return x >= 0.0 && x < 1.0; }, " in [0, 1)"});
+  intent.start_at_equilibrium = r.choice<bool>("start", true, {{"equilibrium", true}, {"rest", false}});
+  r.reject_unknown();
+  body.pressure_intent = intent;
+}
+
 Body read_body(const json& node, const std::string& path, const fs::path& file) {
   ObjectReader r(node, path, file);
   Body body;
@@ -201,9 +251,9 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   body.scale = r.number("scale", body.scale, kPositive);
   body.velocity_m_per_s = r.vec3("velocity", body.velocity_m_per_s);
   body.mass_kg = r.number("mass", body.mass_kg, kPositive);
-  body.stiffness_N_per_m = r.number("stiffness", body.stiffness_N_per_m, kNonNegative);
-  body.damping_N_s_per_m = r.number("damping", body.damping_N_s_per_m, kNonNegative);
-  body.pressure_J = r.number("pressure", body.pressure_J, kNonNegative);
+  read_stiffness(r, body);
+  read_damping(r, body);
+  read_pressure(r, body);
   body.color = r.color("color", body.color);
   body.pattern = r.choice<Pattern>("pattern", body.pattern,
                                    {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});

@@ -8,8 +8,9 @@
 #include "core/errors.hpp"
 #include "mesh/load.hpp"
 #include "sim/contact.hpp"
-#include "sim/finite_scan.hpp"
 #include "sim/forces.hpp"
+#include "sim/intent.hpp"
+#include "sim/stability.hpp"
 
 namespace sim {
 
@@ -20,7 +21,11 @@ World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, co
     : gravity_(gravity_m_per_s2),
       floor_(floor),
       integrator_(make_integrator(solver.integrator, solver.tolerance)),
-      adaptive_dt_s_(solver.dt_s) {}
+      adaptive_dt_s_(solver.dt_s),
+      integrator_kind_(solver.integrator),
+      retry_(solver.retry) {
+  guard_.configure(floor_ ? std::optional<double>(floor_->height_m) : std::nullopt, gravity_.norm());
+}
 
 void World::add_body(Topology topology, const Params& params, const std::vector<Vec3>& x0, const Vec3& v0) {
   Body body;
@@ -34,43 +39,96 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
   state_.v.insert(state_.v.end(), x0.size(), v0);
   area_scratch_.emplace_back(x0.size());
   bodies_.push_back(std::move(body));
+  initial_x_.insert(initial_x_.end(), x0.begin(), x0.end());
   integrator_->restart();
+  guard_.rebase();
 }
 
 void World::step(double dt) {
-  integrator_->step(*this, state_, dt);
-  after_step(dt);
-}
-
-void World::after_step(double dt) {
-  resolve_contacts();
+  if (retry_) backup_ = state_;
+  if (auto found = substep(dt)) {
+    if (!retry_ || !retry_with_substeps(dt)) throw_diverged(*found, dt);
+  }
   time_s_ += dt;
   ++step_count_;
-  check_finite();
+}
+
+std::optional<Divergence> World::integrate_and_check(double dt) {
+  integrator_->step(*this, state_, dt);
+  resolve_contacts();
+  return guard_.check(bodies_, state_.x, state_.v);
+}
+
+std::optional<Divergence> World::substep(double dt) {
+  for (int s = 0; s < substeps_; ++s) {
+    if (auto found = integrate_and_check(dt / substeps_)) return found;
+  }
+  return std::nullopt;
+}
+
+bool World::retry_with_substeps(double dt) {
+  constexpr int kMostSubsteps = 1024;
+  while (substeps_ < kMostSubsteps) {
+    substeps_ *= 2;
+    state_ = backup_;
+    integrator_->restart();
+    if (!substep(dt)) {
+      ++retried_step_count_;
+      return true;
+    }
+  }
+  return false;
+}
+
+void World::throw_diverged(const Divergence& found, double dt) const {
+  std::ostringstream message;
+  message << "diverged at t = " << time_s_ + dt << " s (step " << step_count_ + 1 << ", dt = " << dt << " s, "
+          << scene::to_string(integrator_kind_) << "): body " << found.body;
+  if (found.vertex >= 0) message << ", vertex " << found.vertex;
+  StabilityEstimate estimate = estimate_stability(bodies_, initial_x_);  // the start: this state is gone
+  if (floor_) scale_for_floor_contact(estimate);
+  message << " " << found.what << "; " << stable_dt_advice(estimate, integrator_kind_)
+          << " (softbody info SCENE prints the estimate)";
+  throw softbody::DivergedError(message.str());
 }
 
 void World::advance_to(double end_time_s) {
   AdaptiveIntegrator& adaptive = *integrator_->adaptive();
+  std::optional<Divergence> last_finding;
   while (time_s_ < end_time_s) {
     const double remaining = end_time_s - time_s_;
     const bool last = adaptive_dt_s_ >= remaining;
     const double dt = last ? remaining : adaptive_dt_s_;
     constexpr double kSmallestStep = 1e-14;  // relative to the time: below this, t + dt == t in doubles
     if (dt <= kSmallestStep * std::max(1.0, end_time_s)) {
+      if (last_finding) throw_diverged(*last_finding, dt);
       std::ostringstream message;
       message << "diverged at t = " << time_s_ << " s (step " << step_count_ << "): the adaptive step size "
               << "fell to " << dt << " s; the motion is unstable or solver.tolerance is too small";
       throw softbody::DivergedError(message.str());
     }
+    backup_ = state_;
     const AdaptiveIntegrator::Attempt attempt = adaptive.attempt(*this, state_, dt);
     if (!attempt.accepted) {
       ++rejected_step_count_;
       adaptive_dt_s_ = attempt.next_dt_s;
       continue;
     }
+    resolve_contacts();
+    if (auto found = guard_.check(bodies_, state_.x, state_.v)) {
+      // The error estimate let a diverging step through: undo it and try a quarter of the step.
+      state_ = backup_;
+      integrator_->restart();
+      ++rejected_step_count_;
+      adaptive_dt_s_ = 0.25 * dt;
+      last_finding = found;
+      continue;
+    }
+    last_finding.reset();
     // A step clipped to the frame boundary says little about the natural step: keep the larger one.
     adaptive_dt_s_ = last ? std::max(attempt.next_dt_s, adaptive_dt_s_) : attempt.next_dt_s;
-    after_step(dt);
+    time_s_ += dt;
+    ++step_count_;
     if (last) time_s_ = end_time_s;  // exactly, whatever the round-off of the sum
   }
 }
@@ -113,22 +171,6 @@ void World::resolve_contacts() {
   if (touched > 0) integrator_->restart();
 }
 
-void World::check_finite() const {
-  if (all_finite(state_.x) && all_finite(state_.v)) return;  // the common case, in one vectorised pass
-  for (const Body& body : bodies_) {
-    for (int i = 0; i < body.vertex_count; ++i) {
-      const int g = body.first_vertex + i;
-      if (state_.x[g].allFinite() && state_.v[g].allFinite()) continue;
-      std::ostringstream message;
-      message << "diverged at t = " << time_s_ << " s (step " << step_count_ << "): body "
-              << (&body - bodies_.data()) << ", vertex " << i << " has a non-finite "
-              << (state_.x[g].allFinite() ? "velocity" : "position")
-              << "; try a smaller solver.dt or more damping";
-      throw softbody::DivergedError(message.str());
-    }
-  }
-}
-
 std::vector<SpringSet> World::spring_sets() const {
   std::vector<SpringSet> sets;
   for (const Body& body : bodies_) {
@@ -155,8 +197,10 @@ World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
     mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, context);
     notes.insert(notes.end(), loaded.notes.begin(), loaded.notes.end());
     const std::vector<Vec3> x0 = place_mesh(loaded.mesh, spec);
-    Params params{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J};
-    world.add_body(build_topology(x0, loaded.mesh.triangles, spec.mass_kg), params, x0, spec.velocity_m_per_s);
+    Topology topology = build_topology(x0, loaded.mesh.triangles, spec.mass_kg);
+    const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
+    const Params params = resolve_params(spec, topology, x0, key_path);
+    world.add_body(std::move(topology), params, x0, spec.velocity_m_per_s);
   }
   return world;
 }

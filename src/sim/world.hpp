@@ -10,6 +10,7 @@
 #include "scene/scene.hpp"
 #include "sim/body.hpp"
 #include "sim/body_collision.hpp"
+#include "sim/guard.hpp"
 #include "sim/integrators.hpp"
 
 namespace sim {
@@ -27,18 +28,26 @@ class World final : public Dynamics {
   void set_body_contact(const BodyContactSettings& settings) { body_contact_ = settings; }
 
   // One time step of dt seconds: integrate (forces evaluated inside) → body contacts → floor contact →
-  // check.
-  // Throws softbody::DivergedError when a position or velocity is no longer finite.
+  // guard (sim/guard.hpp). When the guard finds a divergence and solver.retry is on, the step is redone
+  // from its start as 2, 4, .. 1024 substeps, and later steps keep the substep count that worked (a dt
+  // above the stable limit stays unstable). Otherwise, or if 1024 fail too, it throws
+  // softbody::DivergedError saying when, where, what, and which dt the estimate (sim/stability.hpp) finds stable.
   // Fixed-step integrators run exactly this path; an adaptive one takes a step of exactly dt.
   void step(double dt);
+
+  // The step advance_to() tries first (solver.dt, or the "auto" estimate).
+  void set_trial_dt(double dt) { adaptive_dt_s_ = dt; }
+  long long retried_step_count() const { return retried_step_count_; }  // solver.retry: steps redone
+  int substeps() const { return substeps_; }  // solver.retry: each step is now this many substeps
 
   // True when the integrator chooses its own steps (rk45): drive it with advance_to().
   bool adaptive() const { return integrator_->adaptive() != nullptr; }
 
   // Adaptive integrators: steps of the size the error estimate proposes, each followed by floor contact
   // and the check like step(), the last one clipped so that time_s() lands exactly on `end_time_s`.
-  // Rejected attempts leave the state untouched and are counted. Throws softbody::DivergedError when the
-  // step size underflows (the motion became unstable or the tolerance is unreachable).
+  // Rejected attempts (error above the tolerance, or a step the guard rejects) leave the state untouched,
+  // are counted, and shrink the step. Throws softbody::DivergedError when the step size underflows (the
+  // motion became unstable or the tolerance is unreachable), with the guard's last finding.
   void advance_to(double end_time_s);
 
   // Dynamics: gravity, springs, dampers and pressure of every body, divided by the vertex masses.
@@ -54,6 +63,7 @@ class World final : public Dynamics {
   // rk45's first stage), so changing the state between steps is safe.
   State& state() {
     integrator_->restart();
+    guard_.rebase();
     return state_;
   }
   double time_s() const { return time_s_; }
@@ -69,8 +79,13 @@ class World final : public Dynamics {
 
  private:
   void resolve_contacts();
-  void check_finite() const;
-  void after_step(double dt);
+  // Integrate, resolve contacts, and ask the guard: the problem found, if any.
+  std::optional<Divergence> integrate_and_check(double dt);
+  // dt as substeps_ substeps, each checked: the first problem found.
+  std::optional<Divergence> substep(double dt);
+  // After a failed step from backup_: twice the substeps until one works; false past 1024.
+  bool retry_with_substeps(double dt);
+  [[noreturn]] void throw_diverged(const Divergence& found, double dt) const;
 
   Vec3 gravity_;
   std::optional<scene::Floor> floor_;
@@ -87,6 +102,13 @@ class World final : public Dynamics {
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
   BodyContactSettings body_contact_;
   BodyCollider collider_;
+  DivergenceGuard guard_;
+  scene::Integrator integrator_kind_;
+  bool retry_ = false;
+  long long retried_step_count_ = 0;
+  int substeps_ = 1;
+  State backup_;                              // the state before the step (retry, rk45)
+  std::vector<Vec3> initial_x_;               // positions as built, for the stable-dt advice
 };
 
 // Builds the world a scene describes: loads and validates every body's mesh, places it, and builds its

@@ -1,0 +1,74 @@
+// `softbody info SCENE [--set ...]`: mesh statistics, lumped masses, the fastest modes and, per
+// integrator, the estimated stable dt and the steps per frame it implies.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/prepared_run.hpp"
+#include "sim/stability.hpp"
+
+namespace app {
+namespace {
+
+void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& s, const sim::ModeBounds& b) {
+  std::printf("body %zu: %d vertices, %d springs, %d faces; valence %d..%d; edges %.4g..%.4g m; rest volume %.4g m^3\n",
+              index, s.vertices, s.edges, s.faces, s.valence_min, s.valence_max, s.edge_min_m, s.edge_max_m,
+              s.rest_volume_m3);
+  std::printf("  lumped vertex masses %.4g..%.4g kg (total %.4g kg); k = %.4g N/m, c = %.4g N s/m, nRT = %.4g J\n",
+              s.mass_min_kg, s.mass_max_kg, body.topology.total_mass_kg, body.params.stiffness_N_per_m,
+              body.params.damping_N_s_per_m, body.params.pressure_J);
+  std::printf("  lambda_max(M^-1 K/k) = %.4g 1/kg (power iterations; Gershgorin bound %.4g)\n", b.lambda_max_per_kg,
+              b.lambda_gershgorin_per_kg);
+  std::printf("  omega_max = %.4g rad/s (springs %.4g, gas %.4g), fastest-mode damping rate %.4g 1/s\n",
+              b.omega_max(), std::sqrt(b.omega2_springs), std::sqrt(b.omega2_gas), b.damping_rate);
+}
+
+void print_integrator(scene::Integrator integrator, double dt, double frame_interval_s) {
+  const std::string text = scene::to_string(integrator);
+  const char* name = text.c_str();
+  if (dt == 0.0) {
+    std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
+  } else if (dt == sim::StabilityEstimate::kUnlimited) {
+    std::printf("  %-10s  no limit (springs implicit, no gas term)\n", name);
+  } else {
+    const double steps = std::ceil(frame_interval_s / (sim::kAutoDtSafety * dt));
+    std::printf("  %-10s  %-12.4g %-12.4g %.0f\n", name, dt, sim::kAutoDtSafety * dt, steps);
+  }
+}
+
+int run_info(const SceneOptions& options) {
+  PreparedRun run = prepare_run(options);
+  const sim::StabilityEstimate estimate = sim::estimate_stability(run.world);
+  const auto& bodies = run.world.bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.positions(bodies[b])), estimate.bodies[b]);
+  }
+  std::printf("estimated stable dt (limiting body %d; auto uses %.2f x it; frame interval 1/%d s):\n",
+              estimate.limiting_body, sim::kAutoDtSafety, run.scene.fps);
+  if (estimate.travel_dt_s != sim::StabilityEstimate::kUnlimited) {
+    std::printf("  (includes the floor-contact travel limit: dt <= %.4g s, a tenth of the shortest edge per step)\n",
+                estimate.travel_dt_s);
+  }
+  std::printf("  %-10s  %-12s %-12s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt");
+  for (int i = 0; i < 6; ++i) {
+    const auto integrator = static_cast<scene::Integrator>(i);
+    print_integrator(integrator, estimate.stable_dt(integrator), run.clock.frame_interval_s);
+  }
+  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", scene::to_string(run.scene.solver.integrator).c_str(),
+              run.clock.dt_s, run.clock.steps_per_frame);
+  return 0;
+}
+
+}  // namespace
+
+Action register_info(CLI::App& parent) {
+  auto options = std::make_shared<SceneOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "info", "Print mesh statistics, lumped masses, the fastest modes and each integrator's stable dt");
+  add_scene_options(*command, *options);
+  return [options] { return run_info(*options); };
+}
+
+}  // namespace app

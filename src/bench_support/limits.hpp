@@ -1,0 +1,38 @@
+// Estimated against measured stable dt, per integrator, on a few named bodies in free flight.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace bench {
+
+struct LimitBody {
+  std::string name;
+  std::string mesh;  // generator spec (unit size, 1 kg)
+  double stiffness_N_per_m, damping_N_s_per_m, pressure_J;
+};
+
+struct LimitRow {
+  LimitBody body;
+  scene::Integrator integrator;
+  double estimate_dt_s;   // sim/stability.hpp
+  double measured_dt_s;   // largest stable dt found by bisection (3 %)
+  double unstable_dt_s;   // smallest unstable dt found
+};
+
+// The bodies of docs/stability.md's table: scenes/bounce.json's ball, a stiff undamped breathing sphere, a coarse stiff ball.
+std::vector<LimitBody> limit_bodies();
+
+// A world of `body` alone, no floor, gravity on, every vertex shaken by 0.5 m/s (rk45: fixed steps).
+sim::World limit_world(const LimitBody& body, scene::Integrator integrator);
+
+// Measures every explicit integrator (implicit has no spring limit) over `steps` steps per trial.
+std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int steps);
+
+void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::path& file);
+
+}  // namespace bench

@@ -1,0 +1,57 @@
+// The stability stress sweep: many short runs over stiffness, dt, mesh, pressure, damping, impact speed
+// and odd meshes for every integrator; each must end stable or be stopped by the divergence guard.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bench {
+
+struct StressCase {
+  std::string group;        // "map" (dt × stiffness grid), "mesh", "pressure", "damping", "drop", "odd", "retry"
+  std::string shape;        // a generator spec, or "flattened", "elongated", "tiny-triangles"
+  scene::Integrator integrator = scene::Integrator::Euler;
+  double stiffness_N_per_m = 3000.0;
+  double damping_N_s_per_m = 0.5;
+  double pressure_J = 30.0;
+  double drop_speed_m_per_s = 0.0;  // downward speed at the start; > 0 starts 1 m above the floor
+  bool retry = false;               // solver.retry
+  double dt_s = 0.0;                // > 0: this dt; 0: dt_factor × the estimate
+  double dt_factor = 1.0;
+};
+
+enum class Outcome { Stable, Guarded, Failed };
+std::string to_string(Outcome outcome);
+
+struct StressResult {
+  StressCase spec;
+  int vertices = 0;
+  double dt_s = 0.0;
+  double estimate_dt_s = 0.0;  // the stable-dt estimate for the case's integrator (inf: no limit)
+  Outcome outcome = Outcome::Failed;
+  long long steps = 0;
+  double simulated_s = 0.0;
+  double wall_s = 0.0;
+  double min_com_y_m = 0.0;    // lowest centre of mass seen (every step): a tunnelling body goes below 0
+  std::string message;         // the guard's message, or what failed
+};
+
+// The sweep: the full one (≥ 1000 runs) or a quick subset for ctest's `stress` label.
+std::vector<StressCase> stress_cases(bool quick);
+
+// Builds and runs one case; never throws (whatever goes wrong is the result's Failed outcome).
+StressResult run_stress_case(const StressCase& spec);
+
+// stress.csv, one row per run.
+void write_stress_csv(const std::vector<StressResult>& results, const std::filesystem::path& file);
+
+// stability_map_<integrator>.png per integrator (gnuplot), from the "map" group: dt against stiffness,
+// stable / guarded / failed, with the estimate drawn over it. Returns the files written (none without gnuplot).
+std::vector<std::filesystem::path> write_stability_maps(const std::vector<StressResult>& results,
+                                                        const std::filesystem::path& dir);
+
+}  // namespace bench

@@ -1,0 +1,123 @@
+// Resolving physical intent: breathing-mode Rayleigh quotient, lattice stiffness, equilibrium tensions.
+#include "sim/intent.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include "core/errors.hpp"
+
+namespace sim {
+namespace {
+
+// ∂V/∂x_i = Σ_{f∋i} A_f n̂_f / 3 for every vertex [m²].
+std::vector<Vec3> volume_gradient(const Topology& t, std::span<const Vec3> x) {
+  std::vector<Vec3> g(x.size(), Vec3::Zero());
+  for (const Triangle& f : t.faces) {
+    const Vec3 area_vector = 0.5 * (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+    for (int i : f) g[i] += area_vector / 3.0;
+  }
+  return g;
+}
+
+// Edge tensions t_e [N] per unit nRT that balance the gas at shape x, vertex by vertex:
+//   Σ_{e∋i} −t_e d̂_e(i) + (1/V) ∂V/∂x_i = 0,  d̂_e(i) the unit vector from the other end to i.
+// 3n equations for 3n − 6 tensions (a closed triangulated surface); rigid motions are balanced anyway, and
+// a convex polyhedron is infinitesimally rigid (Dehn), so the least-squares solution is exact there.
+std::vector<double> unit_gas_tensions(const Topology& t, std::span<const Vec3> x, double volume) {
+  const auto n = static_cast<Eigen::Index>(3 * x.size());
+  const auto m = static_cast<Eigen::Index>(t.edges.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(6 * t.edges.size());
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const auto [i, j] = t.edges[e];
+    const Vec3 d = (x[i] - x[j]).normalized();
+    for (int k = 0; k < 3; ++k) {
+      entries.emplace_back(3 * i + k, static_cast<Eigen::Index>(e), d[k]);
+      entries.emplace_back(3 * j + k, static_cast<Eigen::Index>(e), -d[k]);
+    }
+  }
+  Eigen::SparseMatrix<double> A(n, m);
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd rhs(n);
+  const std::vector<Vec3> g = volume_gradient(t, x);
+  for (std::size_t i = 0; i < x.size(); ++i) rhs.segment<3>(3 * static_cast<Eigen::Index>(i)) = g[i] / volume;
+  Eigen::LeastSquaresConjugateGradient<Eigen::SparseMatrix<double>> solver;
+  solver.setTolerance(1e-12);
+  solver.setMaxIterations(20000);
+  solver.compute(A);
+  const Eigen::VectorXd tension = solver.solve(rhs);
+  return {tension.data(), tension.data() + tension.size()};
+}
+
+double enclosed_volume_of(const Topology& t, std::span<const Vec3> x) {
+  double six_volume = 0.0;
+  for (const Triangle& f : t.faces) six_volume += (x[f[0]] - x[0]).dot((x[f[1]] - x[0]).cross(x[f[2]] - x[0]));
+  return six_volume / 6.0;
+}
+
+double stiffness_from_intent(const scene::StiffnessIntent& intent, double lambda_b) {
+  if (intent.youngs_Pa > 0.0) return std::sqrt(3.0) / 2.0 * intent.youngs_Pa * intent.thickness_m;  // N/m
+  const double omega = 2.0 * std::numbers::pi * intent.frequency_Hz;
+  return omega * omega / lambda_b;  // k = ω² / λ_b [N/m]
+}
+
+// nRT [J] for inflation f and, for start "equilibrium", the rest lengths L0 = L − t/k.
+double resolve_pressure(const scene::PressureIntent& intent, double k, Topology& t, std::span<const Vec3> x,
+                        const std::string& key_path) {
+  if (intent.inflation == 0.0) return 0.0;
+  if (k <= 0.0) throw softbody::InputError(key_path + ".pressure.inflation: needs springs (stiffness > 0)");
+  const double volume = enclosed_volume_of(t, x);
+  const std::vector<double> unit_tension = unit_gas_tensions(t, x, volume);
+  // Global balance (virtual work of the breathing mode): nRT Σ t¹_e L_e = k Σ (L − L0) L with the mean
+  // strain (L − L0)/L0 = f, i.e. L − L0 = L f / (1 + f).
+  double sum_tL = 0.0, sum_L2 = 0.0;
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    sum_tL += unit_tension[e] * t.rest_length_m[e];
+    sum_L2 += t.rest_length_m[e] * t.rest_length_m[e];
+  }
+  const double nRT = k * intent.inflation / (1.0 + intent.inflation) * sum_L2 / sum_tL;
+  if (!intent.start_at_equilibrium) {
+    return nRT;  // the mesh stays the springs' rest shape; the gas inflates the body to about (1 + f)
+  }
+  for (std::size_t e = 0; e < t.edges.size(); ++e) {
+    const double rest = t.rest_length_m[e] - nRT * unit_tension[e] / k;
+    if (!(rest > 0.0)) {
+      throw softbody::InputError(key_path + ".pressure: inflation " + std::to_string(intent.inflation) +
+                                 " needs a spring compressed below zero length on this mesh (expected a smaller "
+                                 "inflation or a convex mesh)");
+    }
+    t.rest_length_m[e] = rest;
+  }
+  return nRT;
+}
+
+}  // namespace
+
+double breathing_lambda(const Topology& topology, std::span<const Vec3> x) {
+  Vec3 centre = Vec3::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) centre += topology.mass_kg[i] * x[i];
+  centre /= topology.total_mass_kg;
+  double sum_L2 = 0.0, inertia = 0.0;
+  for (const auto& [i, j] : topology.edges) sum_L2 += (x[i] - x[j]).squaredNorm();
+  for (std::size_t i = 0; i < x.size(); ++i) inertia += topology.mass_kg[i] * (x[i] - centre).squaredNorm();
+  return sum_L2 / inertia;
+}
+
+Params resolve_params(const scene::Body& spec, Topology& topology, std::span<const Vec3> x, const std::string& key_path) {
+  Params params{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J};
+  const double lambda_b = breathing_lambda(topology, x);
+  if (spec.stiffness_intent) params.stiffness_N_per_m = stiffness_from_intent(*spec.stiffness_intent, lambda_b);
+  if (spec.damping_ratio) {
+    const double omega_b = std::sqrt(params.stiffness_N_per_m * lambda_b);
+    params.damping_N_s_per_m = omega_b > 0.0 ? 2.0 * *spec.damping_ratio * params.stiffness_N_per_m / omega_b : 0.0;
+  }
+  if (spec.pressure_intent) {
+    params.pressure_J = resolve_pressure(*spec.pressure_intent, params.stiffness_N_per_m, topology, x, key_path);
+  }
+  return params;
+}
+
+}  // namespace sim

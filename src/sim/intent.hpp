@@ -1,0 +1,35 @@
+// Physical intent to force constants: a body's stiffness, damping and gas from what the user means
+// (Young's modulus, a frequency, a damping ratio, an inflation), resolved against its mesh so that the
+// same intent behaves alike at every mesh resolution.
+//
+// The reference motion is the breathing (uniform scaling) mode u_i = x_i − c about the centre of mass c:
+// every spring stretches by its own length, so with k = 1
+//     λ_b = Σ_e L_e² / Σ_i m_i |x_i − c|²   [1/kg],   ω_b² = k λ_b   (Rayleigh quotient, exact for a sphere)
+// Both sums approximate surface integrals, so λ_b, and with it every rule below, is nearly independent of
+// the mesh resolution.
+#pragma once
+
+#include <span>
+
+#include "scene/scene.hpp"
+#include "sim/body.hpp"
+
+namespace sim {
+
+// λ_b of the breathing mode of the springs with k = 1 [1/kg].
+double breathing_lambda(const Topology& topology, std::span<const Vec3> x);
+
+// The body's force constants from `spec`: raw numbers where given, intent resolved otherwise:
+//   "youngs" E, "thickness" t:  k = (√3/2) E t   (a triangular spring lattice has the 2D Young's modulus
+//                                                 2k/√3 at any edge length; Ostoja-Starzewski 2002)
+//   "frequency" f:              k = (2π f)² / λ_b
+//   "damping" {"ratio": ζ}:     c = 2 ζ k / ω_b   (ζ ω = c λ / 2 for dampers along the springs)
+//   "pressure" {"inflation": f}: nRT and the springs' rest lengths such that the gas balances the springs
+//                                stretched by f (mean strain) at the initial shape, vertex by vertex
+//                                (start "equilibrium": no pop), or the rest lengths kept and nRT chosen
+//                                for that equilibrium (start "rest": the body inflates, the paper's pop).
+// May change topology.rest_length_m. Throws softbody::InputError (naming `key_path`) when the tension
+// solve needs a negative rest length.
+Params resolve_params(const scene::Body& spec, Topology& topology, std::span<const Vec3> x, const std::string& key_path);
+
+}  // namespace sim
