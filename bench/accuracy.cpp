@@ -1,9 +1,8 @@
 // build/bench_accuracy: the integrator accuracy benchmark as its own program (same as softbody bench accuracy).
-#include <iostream>
-
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/exit_status.hpp"
 #include "core/errors.hpp"
 
 int main(int argc, char** argv) {
@@ -15,16 +14,5 @@ int main(int argc, char** argv) {
     const int status = cli.exit(e);
     return status == 0 ? softbody::kExitOk : softbody::kExitBadInput;
   }
-  try {
-    return action();
-  } catch (const softbody::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return softbody::kExitBadInput;
-  } catch (const softbody::DivergedError& e) {
-    std::cerr << "diverged: " << e.what() << "\n";
-    return softbody::kExitDiverged;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return softbody::kExitFailure;
-  }
+  return app::run_reporting_errors(action);
 }

@@ -1,10 +1,10 @@
 // softbody's command line: dispatches to the subcommands and maps errors to exit statuses.
-#include <iostream>
 #include <map>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
+#include "app/exit_status.hpp"
 #include "core/errors.hpp"
 
 namespace {
@@ -32,17 +32,6 @@ int main(int argc, char** argv) {
     const int status = cli.exit(e);
     return status == 0 ? softbody::kExitOk : softbody::kExitBadInput;
   }
-  try {
-    for (const CLI::App* command : cli.get_subcommands()) return actions.at(command->get_name())();
-  } catch (const softbody::InputError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return softbody::kExitBadInput;
-  } catch (const softbody::DivergedError& e) {
-    std::cerr << "diverged: " << e.what() << "\n";
-    return softbody::kExitDiverged;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return softbody::kExitFailure;
-  }
+  for (const CLI::App* command : cli.get_subcommands()) return app::run_reporting_errors(actions.at(command->get_name()));
   return softbody::kExitFailure;
 }

@@ -3,17 +3,9 @@
 
 #include <chrono>
 
+#include "frames/wall_clock.hpp"
+
 namespace frames {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
-
 void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
   if (world.adaptive()) {
     world.advance_to(frame * clock.frame_interval_s);
@@ -27,7 +19,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
   RunStats stats;
   const long long steps_before = world.step_count();
   const long long rejected_before = world.rejected_step_count();
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   auto emit = [&](int index) {
     // Time from the frame index, not the accumulated step sum, so frame times carry no round-off drift.
     const double time_s = index * clock.frame_interval_s;
@@ -38,7 +30,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
   try {
     emit(0);
     for (int frame = 1; frame <= clock.frame_count; ++frame) {
-      const auto step_start = Clock::now();
+      const auto step_start = WallClock::now();
       advance_one_frame(world, clock, frame);
       stats.step_wall_s += seconds_since(step_start);
       stats.steps = world.step_count() - steps_before;

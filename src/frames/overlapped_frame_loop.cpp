@@ -2,25 +2,17 @@
 #include "frames/overlapped_frame_loop.hpp"
 
 #include <chrono>
+
+#include "frames/wall_clock.hpp"
 #include <future>
 
 namespace frames {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
-
 RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
                                std::span<CapturingFrameSink* const> sinks, const Progress& progress) {
   RunStats stats;
   const long long steps_before = world.step_count();
   const long long rejected_before = world.rejected_step_count();
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   auto capture = [&](int index) {
     for (CapturingFrameSink* sink : sinks) sink->capture(index, index * clock.frame_interval_s, world);
   };
@@ -34,7 +26,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
     for (int frame = 1; frame <= clock.frame_count; ++frame) {
       // The world is only touched by the worker until get(); the sinks work from their captured copy.
       std::future<double> stepping = std::async(std::launch::async, [&world, &clock, frame] {
-        const auto step_start = Clock::now();
+        const auto step_start = WallClock::now();
         advance_one_frame(world, clock, frame);
         return seconds_since(step_start);
       });
