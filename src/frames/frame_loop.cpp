@@ -12,6 +12,7 @@ void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
     return;
   }
   for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
+  world.check_state();  // the guard's full check before the frame is handed out
 }
 
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,

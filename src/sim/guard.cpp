@@ -98,6 +98,19 @@ double DivergenceGuard::budget(const Body& body, std::span<const Vec3> x, std::s
   return kinetic + spring + gas + fall + floor_J;
 }
 
+std::optional<Divergence> DivergenceGuard::check_finite(std::span<const Body> bodies, std::span<const Vec3> x,
+                                                        std::span<const Vec3> v) const {
+  if (all_finite(x) && all_finite(v)) return std::nullopt;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const Body& body = bodies[b];
+    if (auto found = non_finite(static_cast<int>(b), x.subspan(body.first_vertex, body.vertex_count),
+                                v.subspan(body.first_vertex, body.vertex_count))) {
+      return found;
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<Divergence> DivergenceGuard::check(std::span<const Body> bodies, std::span<const Vec3> x,
                                                  std::span<const Vec3> v) {
   const bool take_budget = budget_J_.size() != bodies.size();

@@ -50,13 +50,25 @@ void World::step(double dt) {
     if (!retry_ || !retry_with_substeps(dt)) throw_diverged(*found, dt);
   }
   time_s_ += dt;
+  last_dt_s_ = dt;
   ++step_count_;
 }
 
 std::optional<Divergence> World::integrate_and_check(double dt) {
   integrator_->step(*this, state_, dt);
   resolve_contacts();
-  return guard_.check(bodies_, state_.x, state_.v);
+  // Finite values every step; energy and volume every kFullCheckInterval steps (and before every frame,
+  // check_state()), or every step when a failed step is to be retried.
+  if (retry_ || ++steps_since_full_check_ >= kFullCheckInterval) {
+    steps_since_full_check_ = 0;
+    return guard_.check(bodies_, state_.x, state_.v);
+  }
+  return guard_.check_finite(bodies_, state_.x, state_.v);
+}
+
+void World::check_state() {
+  steps_since_full_check_ = 0;
+  if (auto found = guard_.check(bodies_, state_.x, state_.v)) throw_diverged(*found, 0.0);
 }
 
 std::optional<Divergence> World::substep(double dt) {
@@ -82,7 +94,10 @@ bool World::retry_with_substeps(double dt) {
 
 void World::throw_diverged(const Divergence& found, double dt) const {
   std::ostringstream message;
-  message << "diverged at t = " << time_s_ + dt << " s (step " << step_count_ + 1 << ", dt = " << dt << " s, "
+  // dt = 0: the state after the last counted step (check_state), else the step of dt being taken.
+  const bool counted = dt == 0.0;
+  message << "diverged at t = " << time_s_ + dt << " s (step " << step_count_ + (counted ? 0 : 1) << ", dt = "
+          << (counted ? last_dt_s_ : dt) << " s, "
           << scene::to_string(integrator_kind_) << "): body " << found.body;
   if (found.vertex >= 0) message << ", vertex " << found.vertex;
   StabilityEstimate estimate = estimate_stability(bodies_, initial_x_);  // the start: this state is gone

@@ -35,6 +35,12 @@ class World final : public Dynamics {
   // Fixed-step integrators run exactly this path; an adaptive one takes a step of exactly dt.
   void step(double dt);
 
+  // The guard's full check of the current state (energy and volume too), which step() runs only every
+  // kFullCheckInterval steps: the frame loops call it before handing a frame out, so that no frame of a
+  // diverged state is written. Throws softbody::DivergedError like step().
+  void check_state();
+  static constexpr int kFullCheckInterval = 8;  // steps between the guard's energy and volume checks
+
   // The step advance_to() tries first (solver.dt, or the "auto" estimate).
   void set_trial_dt(double dt) { adaptive_dt_s_ = dt; }
   long long retried_step_count() const { return retried_step_count_; }  // solver.retry: steps redone
@@ -103,6 +109,8 @@ class World final : public Dynamics {
   BodyContactSettings body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;
+  int steps_since_full_check_ = 0;
+  double last_dt_s_ = 0.0;  // the last fixed step taken, for messages
   scene::Integrator integrator_kind_;
   bool retry_ = false;
   long long retried_step_count_ = 0;
