@@ -105,7 +105,7 @@ struct Contact {
 // Applies one contact: positions moved apart along the normal and a normal (restitution) plus tangential
 // (Coulomb) impulse, both split between the vertex and the triangle's corners by inverse mass and
 // barycentric weight. The vertex gets +J, the corners −w_k J, so momentum is conserved exactly.
-void apply_contact(const Contact& c, const std::vector<double>& inverse_mass, State& state,
+void apply_contact(const Contact& c, std::span<const double> inverse_mass, State& state,
                    const BodyContactSettings& settings) {
   const double inv_p = inverse_mass[c.vertex];
   double denominator = inv_p;  // 1 / effective mass of the relative normal motion
@@ -137,9 +137,10 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 
 }  // namespace
 
-int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface, State& state,
+int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
+                                                     std::span<const double> inverse_mass, State& state,
                                                      const BodyContactSettings& settings) {
-  const double edge = mean_rest_edge(surface);
+  const double edge = mean_edge_m_[surface_index_];
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
   // holds the surface triangles there, and only moving vertices there are tested.
@@ -187,34 +188,37 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
                           best_point.weights, normal, thickness - height, 0.1 * search};
-    apply_contact(contact, inverse_mass_, state, settings);
+    apply_contact(contact, inverse_mass, state, settings);
     ++contacts;
   }
   return contacts;
 }
 
-int BodyCollider::resolve(const std::vector<Body>& bodies, State& state, const BodyContactSettings& settings) {
+int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
+                          const BodyContactSettings& settings) {
   if (bodies.size() < 2) return 0;
+  if (mean_edge_m_.size() != bodies.size()) {
+    mean_edge_m_.clear();
+    for (const Body& body : bodies) mean_edge_m_.push_back(mean_rest_edge(body));
+  }
   boxes_.resize(bodies.size());
-  inverse_mass_.resize(state.x.size());
   for (const Body& body : bodies) {
     Box& box = boxes_[&body - bodies.data()];
     box.lo = box.hi = state.x[body.first_vertex];
     for (int i = 0; i < body.vertex_count; ++i) {
       box.lo = box.lo.cwiseMin(state.x[body.first_vertex + i]);
       box.hi = box.hi.cwiseMax(state.x[body.first_vertex + i]);
-      inverse_mass_[body.first_vertex + i] = body.topology.inverse_mass[i];
     }
   }
   int contacts = 0;
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       if (a == b) continue;
-      const double margin = kSearchFraction * mean_rest_edge(bodies[b]);
+      const double margin = kSearchFraction * mean_edge_m_[b];
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
       surface_index_ = b;
-      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], state, settings);
+      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, settings);
     }
   }
   return contacts;

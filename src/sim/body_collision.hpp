@@ -21,7 +21,9 @@ struct BodyContactSettings {
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
-  int resolve(const std::vector<Body>& bodies, State& state, const BodyContactSettings& settings);
+  // `inverse_mass`: per vertex of `state`, all bodies (the world's own array).
+  int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
+              const BodyContactSettings& settings);
 
  private:
   struct Box {
@@ -34,8 +36,8 @@ class BodyCollider {
   };
 
   void build_grid(const Body& body, const State& state, const Box& box, double cell_size);
-  int resolve_vertices_against_triangles(const Body& moving, const Body& surface, State& state,
-                                         const BodyContactSettings& settings);
+  int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
+                                         State& state, const BodyContactSettings& settings);
   static constexpr int kMaxCellIndex = (1 << 21) - 1;  // 21 bits per axis in a cell key
   Eigen::Vector3i cell_of(const Vec3& p) const;         // clamped to the key's range
   static std::uint64_t cell_key(const Eigen::Vector3i& cell);
@@ -43,7 +45,7 @@ class BodyCollider {
   std::vector<Box> boxes_;          // per body, this step
   std::size_t moving_index_ = 0;    // the body whose vertices are tested
   std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
-  std::vector<double> inverse_mass_;  // per vertex, all bodies
+  std::vector<double> mean_edge_m_;  // per body, its mean rest edge (bodies never change): sets the search
   std::vector<Cell> cells_;
   std::vector<Box> triangle_boxes_;   // per surface triangle in the grid
   Vec3 grid_origin_ = Vec3::Zero();

@@ -172,7 +172,7 @@ void World::accelerations(const State& state, std::vector<Vec3>& a) {
 
 void World::resolve_contacts() {
   int touched = 0;
-  if (bodies_.size() > 1) touched += collider_.resolve(bodies_, state_, body_contact_);
+  if (bodies_.size() > 1) touched += collider_.resolve(bodies_, inverse_mass_, state_, body_contact_);
   if (floor_) {
     switch (floor_->contact) {
       case scene::ContactModel::Paper: touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
