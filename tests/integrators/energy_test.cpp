@@ -77,29 +77,8 @@ INSTANTIATE_TEST_SUITE_P(SymplecticMethods, BoundedEnergy,
                            return scene::to_string(test.param);
                          });
 
-// Two particles of mass m on one spring along x, released stretched: a single oscillator of
-// ω = sqrt(k / μ), μ = m/2. Forward Euler maps (x, v) by a matrix of determinant 1 + h²ω², and the
-// energy ½ μ v² + ½ k x² by exactly that factor every step (Hairer, Lubich & Wanner, Sect. I.1).
-TEST(ForwardEulerEnergy, GrowsByOnePlusHSquaredOmegaSquaredPerStep) {
-  const double m = 0.5, k = 200.0, h = 1e-3, rest = 1.0;
-  const double omega = std::sqrt(k / (m / 2));  // rad/s
-  sim::Topology topology;
-  topology.edges = {{0, 1}};
-  topology.rest_length_m = {rest};
-  topology.mass_kg = {m, m};
-  topology.inverse_mass = {1 / m, 1 / m};
-  topology.total_mass_kg = 2 * m;
-  sim::World world(Vec3::Zero(), std::nullopt, scene::Integrator::Euler);
-  world.add_body(topology, sim::Params{k, 0.0, 0.0}, {Vec3::Zero(), Vec3(rest + 0.05, 0, 0)}, Vec3::Zero());
-  const double e0 = total_energy(world);
-  const int steps = 2000;  // E grows 5×: below the divergence guard's 10× runaway limit (sim/guard.hpp)
-  for (int s = 0; s < steps; ++s) world.step(h);
-  const double expected = std::pow(1 + h * h * omega * omega, steps);
-  const double measured = total_energy(world) / e0;
-  std::printf("euler, oscillator h*omega = %.3f: E/E0 after %d steps = %.6f, (1 + h^2 omega^2)^n = %.6f\n",
-              h * omega, steps, measured, expected);
-  EXPECT_NEAR(measured, expected, 1e-9 * expected);
-}
+// Forward Euler's exact (1 + h²ω²) energy growth per step on a single oscillator is tested in
+// tests/euler_physics_test.cpp (TwoParticleSpring.EnergyGrowsByExactlyOnePlusHSquaredOmegaSquaredPerStep).
 
 // On the sphere every mode grows by its own (1 + h²ω²) per step: the energy rises steadily, unlike the
 // symplectic methods' bounded oscillation at the same step.
