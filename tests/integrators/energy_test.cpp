@@ -13,7 +13,6 @@ namespace {
 
 using integrator_tests::make_world;
 using integrator_tests::total_energy;
-using softbody::Vec3;
 
 // A small breathing sphere without dampers, gravity or floor: total energy (kinetic + spring + gas
 // −nRT ln(V/V0)) is exactly conserved by the equations of motion. It starts at rest in its spring rest
