@@ -117,8 +117,7 @@ double guarded_volume(double volume_m3, double rest_volume_m3) {
   return std::max(volume_m3, kMinimumVolumeFraction * rest_volume_m3);
 }
 
-double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_sums, std::span<Vec3> force) {
+double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums) {
   // Pass over the faces: twice the area vector of each face, 2A_f·n̂ = (x_b − x_a)×(x_c − x_a), summed at
   // its three corners: g_i = Σ_{f ∋ i} 2A_f·n̂.
   area_sums.assign(x.size(), Vec3::Zero());
@@ -132,9 +131,18 @@ double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_v
   // The volume from the same sums: x_a·(2A_f·n̂) = x_a·(x_b × x_c) is the same for each corner of f, so
   // 6V = Σ_f x_a·(2A_f·n̂) = ⅓ Σ_f (x_a + x_b + x_c)·(2A_f·n̂) = ⅓ Σ_i x_i·g_i, and Σ_i g_i = 0 on a closed
   // mesh lets x_i be taken relative to the first vertex (small round-off).
-  const double volume = sum_of_dots_from(x, area_sums, x[0]) / 18.0;
+  return x.empty() ? 0.0 : sum_of_dots_from(x, area_sums, x[0]) / 18.0;
+}
+
+double gas_force_per_area_sum(double nRT_J, double volume_m3, double rest_volume_m3) {
+  return nRT_J / guarded_volume(volume_m3, rest_volume_m3) / 6.0;  // P = nRT/V [Pa], a sixth of 2A·n̂ per corner
+}
+
+double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
+                    std::vector<Vec3>& area_sums, std::span<Vec3> force) {
+  const double volume = sum_area_vectors(faces, x, area_sums);
   // Then per vertex: P·A·n̂ of each adjacent face split over its three corners = (nRT / V) · g_i / 6.
-  const double per_corner = nRT_J / guarded_volume(volume, rest_volume_m3) / 6.0;
+  const double per_corner = gas_force_per_area_sum(nRT_J, volume, rest_volume_m3);
   for (std::size_t i = 0; i < x.size(); ++i) force[i] += per_corner * area_sums[i];
   return volume;
 }

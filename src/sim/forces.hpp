@@ -42,6 +42,14 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
 // The volume below which the gas law is evaluated at this floor instead (V → 0 would give P → ∞).
 double guarded_volume(double volume_m3, double rest_volume_m3);
 
+// The gas's face pass: area_sums_i = Σ_{f ∋ i} 2A_f·n̂_f, twice the area vectors of the faces around each
+// vertex (sized here), and the enclosed volume from the same sums, V = Σ_i x_i·g_i / 18 [m³].
+double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums);
+
+// The gas force on a vertex per unit of its area sum: f_i = (nRT / V) g_i / 6, P·A·n̂ of each face split
+// over its three corners [N/m²]; V is held at guarded_volume().
+double gas_force_per_area_sum(double nRT_J, double volume_m3, double rest_volume_m3);
+
 // Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each
 // corner. This is exactly +nRT ∂(ln V)/∂x_i, the negative gradient of E_gas = −nRT ln V, so the forces
 // on a closed mesh sum to zero. `area_sums` is scratch of one entry per vertex (the sum of twice the area

@@ -10,6 +10,11 @@
 
 namespace sim {
 
+void Dynamics::first_order_step(State& state, double dt, FirstOrderUpdate update, std::vector<Vec3>& scratch) {
+  accelerations(state, scratch);
+  for (std::size_t i = 0; i < state.x.size(); ++i) apply_first_order_update(update, dt, scratch[i], state.x[i], state.v[i]);
+}
+
 std::unique_ptr<Integrator> make_integrator(scene::Integrator kind, double tolerance) {
   switch (kind) {
     case scene::Integrator::Euler: return std::make_unique<ForwardEuler>();

@@ -26,6 +26,12 @@ struct SpringSet {
   int first_vertex = 0;
 };
 
+// The two first-order explicit updates, both from a = a(x, v) of the state at the start of the step.
+enum class FirstOrderUpdate {
+  Forward,     // x' = x + h v, v' = v + h a        (forward Euler)
+  Symplectic,  // v' = v + h a, x' = x + h v'       (semi-implicit Euler)
+};
+
 class Dynamics {
  public:
   virtual ~Dynamics() = default;
@@ -37,7 +43,22 @@ class Dynamics {
   virtual std::span<const double> vertex_masses() const = 0;
   // The spring-dampers of every body (the stiff, linearisable part of the forces).
   virtual std::vector<SpringSet> spring_sets() const = 0;
+  // One first-order step of `state` by dt. This default evaluates accelerations() into `scratch` and then
+  // updates every vertex; World overrides it to apply the update in its last per-vertex force pass
+  // (same arithmetic, same result bit for bit, one pass over the vertices fewer).
+  virtual void first_order_step(State& state, double dt, FirstOrderUpdate update, std::vector<Vec3>& scratch);
 };
+
+// x, v of one vertex after one first-order update with acceleration a.
+inline void apply_first_order_update(FirstOrderUpdate update, double dt, const Vec3& a, Vec3& x, Vec3& v) {
+  if (update == FirstOrderUpdate::Forward) {
+    x += dt * v;  // the old velocity: explicit in both
+    v += dt * a;
+  } else {
+    v += dt * a;
+    x += dt * v;  // the new velocity
+  }
+}
 
 class AdaptiveIntegrator;
 

@@ -148,26 +148,56 @@ void World::advance_to(double end_time_s) {
   }
 }
 
-void World::forces(const State& state, std::vector<Vec3>& force) {
-  force.resize(state.x.size());
+double World::partial_forces(std::size_t b, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f) {
+  const Body& body = bodies_[b];
+  const Topology& topology = body.topology;
+  set_gravity(topology.mass_kg, gravity_, f);  // starts the sum: no separate zeroing pass
+  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
+  if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
+  if (body.params.pressure_J == 0.0) return 0.0;
+  const double volume = sum_area_vectors(topology.faces, x, area_scratch_[b]);
+  return gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3);
+}
+
+template <class Use>
+void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use use) {
+  scratch.resize(state.x.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
-    const Topology& topology = body.topology;
-    const std::span<const Vec3> x(state.x.data() + body.first_vertex, body.vertex_count);
-    const std::span<const Vec3> v(state.v.data() + body.first_vertex, body.vertex_count);
-    const std::span<Vec3> f(force.data() + body.first_vertex, body.vertex_count);
-    set_gravity(topology.mass_kg, gravity_, f);  // starts the sum: no separate zeroing pass
-    const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
-    if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
-    if (body.params.pressure_J != 0.0) {
-      add_pressure(topology.faces, body.params.pressure_J, topology.rest_volume_m3, x, area_scratch_[b], f);
+    const auto first = static_cast<std::size_t>(body.first_vertex);
+    const auto count = static_cast<std::size_t>(body.vertex_count);
+    const std::span<Vec3> f(scratch.data() + first, count);
+    const double per_area_sum = partial_forces(b, {state.x.data() + first, count}, {state.v.data() + first, count}, f);
+    if (per_area_sum == 0.0) {
+      for (std::size_t i = 0; i < count; ++i) use(first + i, f[i]);
+    } else {
+      const std::vector<Vec3>& area_sums = area_scratch_[b];
+      for (std::size_t i = 0; i < count; ++i) use(first + i, Vec3(f[i] + per_area_sum * area_sums[i]));
     }
   }
 }
 
+void World::forces(const State& state, std::vector<Vec3>& force) {
+  visit_net_forces(state, force, [&](std::size_t i, const Vec3& f) { force[i] = f; });
+}
+
 void World::accelerations(const State& state, std::vector<Vec3>& a) {
-  forces(state, a);
-  for (std::size_t i = 0; i < a.size(); ++i) a[i] *= inverse_mass_[i];
+  visit_net_forces(state, a, [&](std::size_t i, const Vec3& f) { a[i] = f * inverse_mass_[i]; });
+}
+
+template <FirstOrderUpdate kUpdate>
+void World::fused_first_order_step(State& state, double dt, std::vector<Vec3>& scratch) {
+  visit_net_forces(state, scratch, [&](std::size_t i, const Vec3& f) {
+    apply_first_order_update(kUpdate, dt, f * inverse_mass_[i], state.x[i], state.v[i]);
+  });
+}
+
+void World::first_order_step(State& state, double dt, FirstOrderUpdate update, std::vector<Vec3>& scratch) {
+  if (update == FirstOrderUpdate::Forward) {
+    fused_first_order_step<FirstOrderUpdate::Forward>(state, dt, scratch);
+  } else {
+    fused_first_order_step<FirstOrderUpdate::Symplectic>(state, dt, scratch);
+  }
 }
 
 void World::resolve_contacts() {

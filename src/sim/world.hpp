@@ -61,6 +61,8 @@ class World final : public Dynamics {
 
   // Net force on every vertex of `state` [N] (what accelerations() divides by the masses).
   void forces(const State& state, std::vector<Vec3>& force) override;
+  // Forward or symplectic Euler with the update applied in the last per-vertex force pass.
+  void first_order_step(State& state, double dt, FirstOrderUpdate update, std::vector<Vec3>& scratch) override;
   std::span<const double> vertex_masses() const override { return mass_; }
   std::vector<SpringSet> spring_sets() const override;
 
@@ -84,6 +86,16 @@ class World final : public Dynamics {
   std::span<const Vec3> velocities(const Body& body) const;
 
  private:
+  // Body b's gravity, springs and dampers summed into f, and its gas's area sums into area_scratch_[b].
+  // Returns the gas force per area sum (nRT / V / 6), 0 without gas.
+  double partial_forces(std::size_t b, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f);
+  // Evaluates every body's forces (partial sums in `scratch`) and then, in one pass per body, hands each
+  // vertex's net force to use(i, f_i), i the world vertex index. `use` may overwrite scratch[i] and the
+  // body's own x_i, v_i: the body's forces are complete before its pass.
+  template <class Use>
+  void visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use use);
+  template <FirstOrderUpdate kUpdate>
+  void fused_first_order_step(State& state, double dt, std::vector<Vec3>& scratch);
   void resolve_contacts();
   // Integrate, resolve contacts, and ask the guard: the problem found, if any.
   std::optional<Divergence> integrate_and_check(double dt);
@@ -104,7 +116,6 @@ class World final : public Dynamics {
   long long step_count_ = 0;
   long long rejected_step_count_ = 0;
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
-  std::vector<Vec3> force_scratch_;
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
   BodyContactSettings body_contact_;
   BodyCollider collider_;

@@ -4,11 +4,7 @@
 namespace sim {
 
 void ForwardEuler::step(Dynamics& dynamics, State& state, double dt) {
-  dynamics.accelerations(state, a_);
-  for (std::size_t i = 0; i < state.x.size(); ++i) {
-    state.x[i] += dt * state.v[i];  // the old velocity: explicit in both
-    state.v[i] += dt * a_[i];
-  }
+  dynamics.first_order_step(state, dt, FirstOrderUpdate::Forward, a_);
 }
 
 }  // namespace sim

@@ -4,11 +4,7 @@
 namespace sim {
 
 void SymplecticEuler::step(Dynamics& dynamics, State& state, double dt) {
-  dynamics.accelerations(state, a_);
-  for (std::size_t i = 0; i < state.x.size(); ++i) {
-    state.v[i] += dt * a_[i];
-    state.x[i] += dt * state.v[i];  // the new velocity
-  }
+  dynamics.first_order_step(state, dt, FirstOrderUpdate::Symplectic, a_);
 }
 
 }  // namespace sim
