@@ -21,6 +21,7 @@ scene::Scene bench_scene(const BenchCase& c) {
   if (c.on_floor) body.position_m.y() = 1.0;
   s.solver.integrator = c.integrator;
   s.solver.dt_s = bench_dt_s(c.level);
+  s.solver.threads = c.threads;
   return s;
 }
 

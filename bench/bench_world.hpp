@@ -16,6 +16,7 @@ struct BenchCase {
   bool damping = true;                               // false: c = 0 (no damper term)
   bool floor = true;                                 // false: no floor (no contact pass)
   bool on_floor = false;                             // true: starts touching the floor (centre at y = 1 m)
+  int threads = 1;                                   // solver.threads (large bodies' force passes)
 };
 
 // The time step used at `level`: bounce.json's 1e-4 s up to level 4, then quartered per level, because

@@ -71,6 +71,17 @@ void BM_Ours(benchmark::State& st) {
   run_steps(st, c);
 }
 
+// Ours as in BM_Ours on `threads` threads (the same states bit for bit; only bodies of at least
+// sim::World::kChunkedMinVertices vertices use them). Args: {level, threads}.
+void BM_OursThreads(benchmark::State& st) {
+  BenchCase c;
+  c.level = static_cast<int>(st.range(0));
+  c.threads = static_cast<int>(st.range(1));
+  c.on_floor = true;
+  st.SetLabel("symplectic, " + std::to_string(c.threads) + " thread" + (c.threads > 1 ? "s" : ""));
+  run_steps(st, c);
+}
+
 // Bullet's btSoftBody on the same triangles, dt, mass, gravity and floor, starting on the floor. Args: {level}.
 void BM_Bullet(benchmark::State& st) {
   BenchCase c;
@@ -118,6 +129,7 @@ void register_comparison() {
 
 BENCHMARK(BM_Step)->Apply(step_args)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Skip)->Apply(skip_args)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_OursThreads)->ArgsProduct({{3, 4, 5, 6}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 int main(int argc, char** argv) {
   register_comparison();

@@ -78,6 +78,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{R"({ "solver": { "dt": 0 }, "bodies": [ { } ] })", "s.json: solver.dt: expected a finite number > 0"},
         BadInput{R"({ "solver": { "dt": -1e-4 }, "bodies": [ { } ] })", "s.json: solver.dt: expected a finite number > 0"},
         BadInput{R"({ "solver": { "integrator": "leapfrog" }, "bodies": [ { } ] })", "s.json: solver.integrator: expected one of \"euler\""},
+        BadInput{R"({ "solver": { "threads": -1 }, "bodies": [ { } ] })", "s.json: solver.threads: expected an integer in 0..256"},
         BadInput{R"({ "fps": 0, "bodies": [ { } ] })", "s.json: fps: expected an integer in 1..1000, got number 0"},
         BadInput{R"({ "fps": 29.97, "bodies": [ { } ] })", "s.json: fps: expected an integer in 1..1000"},
         BadInput{R"({ "duration": -3, "bodies": [ { } ] })", "s.json: duration: expected a finite number > 0"},

@@ -49,7 +49,7 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 }
 
 int run_render(const RenderOptions& options) {
-  PreparedRun run = prepare_run(options.scene);
+  PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
   scene::Scene& scene = run.scene;
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   output::check_frame_pattern(scene.output.pattern, scene.source.string());

@@ -10,8 +10,9 @@
 
 namespace app {
 
-PreparedRun prepare_run(const SceneOptions& options) {
+PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
+  if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
   sim::World world = sim::build_world(scene, notes);
   if (scene.solver.dt_auto) {

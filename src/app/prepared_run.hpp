@@ -19,7 +19,9 @@ struct PreparedRun {
 
 // Loads and validates the scene (with --set), plans the frame clock, builds the world, and prints
 // every note (rounded dt, fixed meshes) to stderr. Throws softbody::InputError on bad input.
-PreparedRun prepare_run(const SceneOptions& options);
+// `threads_when_auto`: the force threads when the scene leaves solver.threads at 0 (0: one per core);
+// render passes 1, because there the second core renders while the simulation runs beside it.
+PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto = 0);
 
 // One summary line on stdout: frames, steps, dt, integrator, vertices, wall time, steps per second,
 // then `what_was_written`.

@@ -37,6 +37,8 @@ struct Solver {
   bool retry = false;    // a step the divergence guard rejects is retried as two half steps (up to 1/1024)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
+  int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
+                    // on it (sim::World::kChunkedMinVertices)
 };
 
 struct Floor {

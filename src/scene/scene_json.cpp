@@ -162,6 +162,7 @@ Solver read_solver(ObjectReader& top) {
   }
   solver.retry = r.boolean("retry", solver.retry);
   solver.tolerance = r.number("tolerance", solver.tolerance, kPositive);
+  solver.threads = r.integer("threads", solver.threads, 0, 256);
   r.reject_unknown();
   return solver;
 }

@@ -1,6 +1,7 @@
 // The simulated world: bodies, gravity, floor, the shared state, and the step as a list of phases.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -40,6 +41,14 @@ class World final : public Dynamics {
   // diverged state is written. Throws softbody::DivergedError like step().
   void check_state();
   static constexpr int kFullCheckInterval = 8;  // steps between the guard's energy and volume checks
+
+  // Bodies of at least kChunkedMinVertices vertices have their force passes split into kForceChunks fixed
+  // parts (edges, faces, then vertices), each edge and face part summing into its own buffer, the buffers
+  // added in part order. The parts run on up to kForceChunks threads (solver.threads); the result depends
+  // on the parts, never on the number of threads. Smaller bodies: one pass each, on the calling thread.
+  static constexpr int kChunkedMinVertices = 2048;
+  static constexpr int kForceChunks = 2;
+  int force_threads() const { return threads_; }
 
   // The step advance_to() tries first (solver.dt, or the "auto" estimate).
   void set_trial_dt(double dt) { adaptive_dt_s_ = dt; }
@@ -94,6 +103,9 @@ class World final : public Dynamics {
   // body's own x_i, v_i: the body's forces are complete before its pass.
   template <class Use>
   void visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use use);
+  // visit_net_forces for one large body, in kForceChunks parts (see kChunkedMinVertices).
+  template <class Use>
+  void visit_chunked_body_forces(std::size_t b, const State& state, std::span<Vec3> f, Use& use);
   template <FirstOrderUpdate kUpdate>
   void fused_first_order_step(State& state, double dt, std::vector<Vec3>& scratch);
   void resolve_contacts();
@@ -117,6 +129,11 @@ class World final : public Dynamics {
   long long rejected_step_count_ = 0;
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
+  // Per body: the edge and face sums of parts 1 .. kForceChunks - 1 (part 0 sums into the shared buffers).
+  struct ChunkSums {
+    std::vector<std::vector<Vec3>> force, area;
+  };
+  std::vector<ChunkSums> chunk_sums_;
   BodyContactSettings body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;
@@ -124,6 +141,7 @@ class World final : public Dynamics {
   double last_dt_s_ = 0.0;  // the last fixed step taken, for messages
   scene::Integrator integrator_kind_;
   bool retry_ = false;
+  int threads_ = 1;  // for the parts of large bodies' force passes, 1 .. kForceChunks
   long long retried_step_count_ = 0;
   int substeps_ = 1;
   State backup_;                              // the state before the step (retry, rk45)
