@@ -72,7 +72,7 @@ void BM_Ours(benchmark::State& st) {
 }
 
 // Ours as in BM_Ours on `threads` threads (the same states bit for bit; only bodies of at least
-// sim::World::kChunkedMinVertices vertices use them). Args: {level, threads}.
+// sim::World::kParallelMinVertices vertices use them). Args: {level, threads}.
 void BM_OursThreads(benchmark::State& st) {
   BenchCase c;
   c.level = static_cast<int>(st.range(0));

@@ -38,7 +38,7 @@ struct Solver {
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
   int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
-                    // on it (sim::World::kChunkedMinVertices)
+                    // on it (sim::World::kParallelMinVertices)
 };
 
 struct Floor {

@@ -26,7 +26,8 @@ World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, co
       integrator_kind_(solver.integrator),
       retry_(solver.retry),
       threads_(std::clamp(solver.threads > 0 ? solver.threads : static_cast<int>(std::thread::hardware_concurrency()),
-                          1, kForceChunks)) {
+                          1, kMostForceThreads)),
+      part_runner_(std::make_unique<PartRunner>(threads_)) {
   guard_.configure(floor_ ? std::optional<double>(floor_->height_m) : std::nullopt, gravity_.norm());
 }
 
@@ -41,11 +42,6 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
   state_.x.insert(state_.x.end(), x0.begin(), x0.end());
   state_.v.insert(state_.v.end(), x0.size(), v0);
   area_scratch_.emplace_back(x0.size());
-  chunk_sums_.emplace_back();
-  if (x0.size() >= kChunkedMinVertices) {
-    chunk_sums_.back().force.assign(kForceChunks - 1, std::vector<Vec3>(x0.size()));
-    chunk_sums_.back().area.assign(kForceChunks - 1, std::vector<Vec3>(x0.size()));
-  }
   bodies_.push_back(std::move(body));
   initial_x_.insert(initial_x_.end(), x0.begin(), x0.end());
   integrator_->restart();
@@ -175,8 +171,8 @@ void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use
     const auto first = static_cast<std::size_t>(body.first_vertex);
     const auto count = static_cast<std::size_t>(body.vertex_count);
     const std::span<Vec3> f(scratch.data() + first, count);
-    if (count >= kChunkedMinVertices) {
-      visit_chunked_body_forces(b, state, f, use);
+    if (threads_ > 1 && count >= kParallelMinVertices) {
+      visit_body_forces_in_parallel(b, state, f, use);
       continue;
     }
     const double per_area_sum = partial_forces(b, {state.x.data() + first, count}, {state.v.data() + first, count}, f);
@@ -189,89 +185,36 @@ void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use
   }
 }
 
-namespace {
-
-// Part `part` of `count` items split into kParts nearly equal, consecutive ranges: [begin, end).
-struct Range {
-  std::size_t begin, end;
-};
-Range part_range(std::size_t count, int part, int parts) {
-  const auto p = static_cast<std::size_t>(part), n = static_cast<std::size_t>(parts);
-  return {count * p / n, count * (p + 1) / n};
-}
-
-template <class T>
-std::span<const T> part_of(const std::vector<T>& items, int part, int parts) {
-  const Range r = part_range(items.size(), part, parts);
-  return std::span<const T>(items).subspan(r.begin, r.end - r.begin);
-}
-
-}  // namespace
-
 template <class Use>
-void World::visit_chunked_body_forces(std::size_t b, const State& state, std::span<Vec3> f, Use& use) {
-  constexpr int kParts = kForceChunks;
+void World::visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, Use& use) {
   const Body& body = bodies_[b];
   const Topology& topology = body.topology;
   const auto first = static_cast<std::size_t>(body.first_vertex);
   const std::size_t n = f.size();
   const std::span<const Vec3> x(state.x.data() + first, n), v(state.v.data() + first, n);
   const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
-  const bool springs = k != 0.0 || c != 0.0, gas = body.params.pressure_J != 0.0;
-  ChunkSums& sums = chunk_sums_[b];
-  std::vector<Vec3>& area = area_scratch_[b];
-  auto force_part = [&](int part) { return part == 0 ? f : std::span<Vec3>(sums.force[part - 1]); };
-  auto area_part = [&](int part) { return part == 0 ? std::span<Vec3>(area) : std::span<Vec3>(sums.area[part - 1]); };
-
-  // 1. Each part: its edges into its force buffer (part 0's starts from gravity), its faces into its area buffer.
-#pragma omp parallel for num_threads(threads_) schedule(static, 1) if (threads_ > 1)
-  for (int part = 0; part < kParts; ++part) {
-    const std::span<Vec3> fp = force_part(part);
+  const bool gas = body.params.pressure_J != 0.0;
+  // 1. Gravity, springs and dampers into f on one thread; the gas's face pass into its area sums on the other.
+  double volume = 0.0;
+  part_runner_->run(2, [&](int part) {
     if (part == 0) {
-      set_gravity(topology.mass_kg, gravity_, fp);
+      set_gravity(topology.mass_kg, gravity_, f);
+      if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
+    } else if (gas) {
+      volume = sum_area_vectors(topology.faces, x, area_scratch_[b]);
+    }
+  });
+  // 2. The net force of each vertex, in two vertex ranges.
+  const double per_area_sum = gas ? gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3) : 0.0;
+  const std::vector<Vec3>& area_sums = area_scratch_[b];
+  part_runner_->run(2, [&](int part) {
+    const std::size_t begin = part == 0 ? 0 : n / 2, end = part == 0 ? n / 2 : n;
+    if (!gas) {
+      for (std::size_t i = begin; i < end; ++i) use(first + i, f[i]);
     } else {
-      std::fill(fp.begin(), fp.end(), Vec3::Zero());
+      for (std::size_t i = begin; i < end; ++i) use(first + i, Vec3(f[i] + per_area_sum * area_sums[i]));
     }
-    if (springs) {
-      const Range r = part_range(topology.edges.size(), part, kParts);
-      add_spring_dampers(part_of(topology.edges, part, kParts),
-                         std::span<const double>(topology.rest_length_m).subspan(r.begin, r.end - r.begin), k, c, x, v,
-                         fp);
-    }
-    if (gas) {
-      const std::span<Vec3> gp = area_part(part);
-      std::fill(gp.begin(), gp.end(), Vec3::Zero());
-      add_area_vectors(part_of(topology.faces, part, kParts), x, gp);
-    }
-  }
-  // 2. The gas: area sums added in part order, per vertex range, and the volume from them (6V = ⅓ Σ x·g).
-  double per_area_sum = 0.0;
-  if (gas) {
-    std::array<double, kParts> dots{};
-#pragma omp parallel for num_threads(threads_) schedule(static, 1) if (threads_ > 1)
-    for (int part = 0; part < kParts; ++part) {
-      const Range r = part_range(n, part, kParts);
-      for (std::size_t i = r.begin; i < r.end; ++i) {
-        for (int other = 1; other < kParts; ++other) area[i] += sums.area[other - 1][i];
-      }
-      dots[part] = sum_of_dots_from(x.subspan(r.begin, r.end - r.begin),
-                                    std::span<const Vec3>(area).subspan(r.begin, r.end - r.begin), x[0]);
-    }
-    double six_volume_times_3 = 0.0;
-    for (double d : dots) six_volume_times_3 += d;
-    per_area_sum = gas_force_per_area_sum(body.params.pressure_J, six_volume_times_3 / 18.0, topology.rest_volume_m3);
-  }
-  // 3. The net force of each vertex: the parts' sums in part order, plus the gas.
-#pragma omp parallel for num_threads(threads_) schedule(static, 1) if (threads_ > 1)
-  for (int part = 0; part < kParts; ++part) {
-    const Range r = part_range(n, part, kParts);
-    for (std::size_t i = r.begin; i < r.end; ++i) {
-      Vec3 total = f[i];
-      for (int other = 1; other < kParts; ++other) total += sums.force[other - 1][i];
-      if (gas) total += per_area_sum * area[i];
-      use(first + i, total);
-    }
-  }
+  });
 }
 
 void World::forces(const State& state, std::vector<Vec3>& force) {

@@ -13,6 +13,7 @@
 #include "sim/body_collision.hpp"
 #include "sim/guard.hpp"
 #include "sim/integrators.hpp"
+#include "sim/part_runner.hpp"
 
 namespace sim {
 
@@ -42,12 +43,13 @@ class World final : public Dynamics {
   void check_state();
   static constexpr int kFullCheckInterval = 8;  // steps between the guard's energy and volume checks
 
-  // Bodies of at least kChunkedMinVertices vertices have their force passes split into kForceChunks fixed
-  // parts (edges, faces, then vertices), each edge and face part summing into its own buffer, the buffers
-  // added in part order. The parts run on up to kForceChunks threads (solver.threads); the result depends
-  // on the parts, never on the number of threads. Smaller bodies: one pass each, on the calling thread.
-  static constexpr int kChunkedMinVertices = 2048;
-  static constexpr int kForceChunks = 2;
+  // Bodies of at least kParallelMinVertices vertices run their force passes on two threads when
+  // solver.threads allows: the edges (springs, dampers) on one while the faces (the gas's area sums and
+  // volume) run on the other, then the last per-vertex pass in two vertex ranges. Each sum is the one the
+  // single-threaded pass computes, in the same order, so the result is the same bit for bit. Smaller
+  // bodies do not pay for the hand-over.
+  static constexpr int kParallelMinVertices = 4096;
+  static constexpr int kMostForceThreads = 2;
   int force_threads() const { return threads_; }
 
   // The step advance_to() tries first (solver.dt, or the "auto" estimate).
@@ -103,9 +105,9 @@ class World final : public Dynamics {
   // body's own x_i, v_i: the body's forces are complete before its pass.
   template <class Use>
   void visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use use);
-  // visit_net_forces for one large body, in kForceChunks parts (see kChunkedMinVertices).
+  // visit_net_forces for one body on two threads (see kParallelMinVertices).
   template <class Use>
-  void visit_chunked_body_forces(std::size_t b, const State& state, std::span<Vec3> f, Use& use);
+  void visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, Use& use);
   template <FirstOrderUpdate kUpdate>
   void fused_first_order_step(State& state, double dt, std::vector<Vec3>& scratch);
   void resolve_contacts();
@@ -129,11 +131,6 @@ class World final : public Dynamics {
   long long rejected_step_count_ = 0;
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
-  // Per body: the edge and face sums of parts 1 .. kForceChunks - 1 (part 0 sums into the shared buffers).
-  struct ChunkSums {
-    std::vector<std::vector<Vec3>> force, area;
-  };
-  std::vector<ChunkSums> chunk_sums_;
   BodyContactSettings body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;
@@ -141,7 +138,8 @@ class World final : public Dynamics {
   double last_dt_s_ = 0.0;  // the last fixed step taken, for messages
   scene::Integrator integrator_kind_;
   bool retry_ = false;
-  int threads_ = 1;  // for the parts of large bodies' force passes, 1 .. kForceChunks
+  int threads_ = 1;  // for large bodies' force passes, 1 .. kMostForceThreads
+  std::unique_ptr<PartRunner> part_runner_;   // runs those parts (its workers start when first needed)
   long long retried_step_count_ = 0;
   int substeps_ = 1;
   State backup_;                              // the state before the step (retry, rk45)
