@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
   if (limits) {
     const auto rows = bench::measure_limits(bench::limit_bodies(), limit_steps);
     for (const auto& r : rows) {
-      std::printf("%-15s %-11s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
-                  r.body.name.c_str(), r.body.mesh.c_str(), scene::to_string(r.integrator).c_str(), r.estimate_dt_s,
+      std::printf("%-15s %-11s %-5s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
+                  r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free", scene::to_string(r.integrator).c_str(), r.estimate_dt_s,
                   r.measured_dt_s, r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     }
     bench::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
