@@ -280,6 +280,7 @@ void scale_for_floor_contact(StabilityEstimate& estimate, scene::ContactModel co
     if (static_cast<scene::Integrator>(i) != scene::Integrator::Implicit) estimate.stable_dt_s[i] *= kContactMargin;
   }
   if (contact != scene::ContactModel::Paper) return;
+  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticProjectionFactor;
   double& euler = estimate.stable_dt_s[static_cast<int>(scene::Integrator::Euler)];
   for (const ModeBounds& b : estimate.bodies) {
     if (b.damping_rate == 0.0 || b.omega2_springs == 0.0) continue;  // no dampers: already 0 (unstable)
