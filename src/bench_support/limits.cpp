@@ -1,6 +1,7 @@
 // Stable-dt table: the estimate next to a bisection on the real integrators.
 #include "bench_support/limits.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -13,14 +14,19 @@ namespace bench {
 std::vector<LimitBody> limit_bodies() {
   return {{"bounce ball", "icosphere:3", 3000.0, 0.5, 30.0},
           {"stiff undamped", "icosphere:2", 5000.0, 0.0, 100.0},
-          {"coarse damped", "icosphere:1", 1e4, 2.0, 30.0}};
+          {"coarse damped", "icosphere:1", 1e4, 2.0, 30.0},
+          {"fine ball", "icosphere:4", 3000.0, 0.5, 30.0}};
 }
 
-sim::World limit_world(const LimitBody& body, scene::Integrator integrator) {
+sim::World limit_world(const LimitBody& body, scene::Integrator integrator, bool floor) {
   const mesh::TriMesh m = mesh::generate(body.mesh);
+  double lowest = 0.0;
+  for (const sim::Vec3& p : m.vertices) lowest = std::min(lowest, p.y());
+  const double lift = floor ? 0.05 - lowest : 3.0;  // m
   std::vector<sim::Vec3> x0;
-  for (const sim::Vec3& p : m.vertices) x0.push_back(p + sim::Vec3(0.0, 3.0, 0.0));
-  sim::World world(sim::Vec3(0.0, -9.81, 0.0), std::nullopt, integrator);
+  for (const sim::Vec3& p : m.vertices) x0.push_back(p + sim::Vec3(0.0, lift, 0.0));
+  sim::World world(sim::Vec3(0.0, -9.81, 0.0), floor ? std::optional<scene::Floor>(scene::Floor{}) : std::nullopt,
+                   integrator);
   world.add_body(sim::build_topology(x0, m.triangles, 1.0),
                  {body.stiffness_N_per_m, body.damping_N_s_per_m, body.pressure_J}, x0, sim::Vec3::Zero());
   shake(world, 0.5);
@@ -30,17 +36,19 @@ sim::World limit_world(const LimitBody& body, scene::Integrator integrator) {
 std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int steps) {
   std::vector<LimitRow> rows;
   for (const LimitBody& body : bodies) {
-    for (scene::Integrator integrator : {scene::Integrator::Euler, scene::Integrator::Symplectic,
-                                         scene::Integrator::Verlet, scene::Integrator::Rk4, scene::Integrator::Rk45}) {
-      const double estimate = sim::estimate_stability(limit_world(body, integrator)).stable_dt(integrator);
-      LimitRow row{body, integrator, estimate, 0.0, 0.0};
-      if (estimate > 0.0) {
-        const StableDtMeasurement m =
-            measure_stable_dt([&] { return limit_world(body, integrator); }, 0.25 * estimate, 2.0 * estimate, steps);
-        row.measured_dt_s = m.stable_dt_s;
-        row.unstable_dt_s = m.unstable_dt_s;
+    for (bool floor : {false, true}) {
+      for (scene::Integrator integrator : {scene::Integrator::Euler, scene::Integrator::Symplectic,
+                                           scene::Integrator::Verlet, scene::Integrator::Rk4, scene::Integrator::Rk45}) {
+        const double estimate = sim::estimate_stability(limit_world(body, integrator, floor)).stable_dt(integrator);
+        LimitRow row{body, integrator, floor, estimate, 0.0, 0.0};
+        if (estimate > 0.0) {
+          const StableDtMeasurement m = measure_stable_dt([&] { return limit_world(body, integrator, floor); },
+                                                          0.1 * estimate, 2.0 * estimate, steps);
+          row.measured_dt_s = m.stable_dt_s;
+          row.unstable_dt_s = m.unstable_dt_s;
+        }
+        rows.push_back(row);
       }
-      rows.push_back(row);
     }
   }
   return rows;
@@ -48,13 +56,13 @@ std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int s
 
 void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::path& file) {
   std::ofstream out(file);
-  out << "body,mesh,stiffness,damping,pressure,integrator,estimate_dt,measured_stable_dt,measured_unstable_dt,"
+  out << "body,mesh,stiffness,damping,pressure,floor,integrator,estimate_dt,measured_stable_dt,measured_unstable_dt,"
          "estimate_over_measured\n";
   for (const LimitRow& r : rows) {
     char line[400];
-    std::snprintf(line, sizeof line, "%s,%s,%g,%g,%g,%s,%.4g,%.4g,%.4g,%.3f\n", r.body.name.c_str(),
+    std::snprintf(line, sizeof line, "%s,%s,%g,%g,%g,%s,%s,%.4g,%.4g,%.4g,%.3f\n", r.body.name.c_str(),
                   r.body.mesh.c_str(), r.body.stiffness_N_per_m, r.body.damping_N_s_per_m, r.body.pressure_J,
-                  scene::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
+                  r.floor ? "paper" : "none", scene::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
                   r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     out << line;
   }

@@ -191,16 +191,16 @@ StressResult run_stress_case(const StressCase& spec) {
 void write_stress_csv(const std::vector<StressResult>& results, const std::filesystem::path& file) {
   std::ofstream out(file);
   out << "group,shape,vertices,integrator,stiffness,damping,pressure,drop_speed,retry,dt,estimate_dt,"
-         "dt_over_estimate,outcome,steps,simulated_s,wall_s,min_com_y,message\n";
+         "dt_over_estimate,outcome,guarded_within_estimate,steps,simulated_s,wall_s,min_com_y,message\n";
   for (const StressResult& r : results) {
     const StressCase& c = r.spec;
     std::string message = r.message;
     for (char& ch : message) if (ch == '"') ch = '\'';
     char row[512];
-    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%lld,%.6g,%.4g,%.6g,",
+    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,",
                   c.group.c_str(), c.shape.c_str(), r.vertices, scene::to_string(c.integrator).c_str(),
                   c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s,
-                  r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.steps, r.simulated_s,
+                  r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.guarded_within_estimate() ? 1 : 0, r.steps, r.simulated_s,
                   r.wall_s, r.min_com_y_m);
     out << row << '"' << message << "\"\n";
   }

@@ -38,6 +38,12 @@ struct StressResult {
   double wall_s = 0.0;
   double min_com_y_m = 0.0;    // lowest centre of mass seen (every step): a tunnelling body goes below 0
   std::string message;         // the guard's message, or what failed
+  // The estimate's promise broken: stopped by the guard at a dt at or below the estimated stable dt
+  // (fixed-step runs; rk45 chooses its own steps). The sweep counts these as failures of the estimate.
+  bool guarded_within_estimate() const {
+    return outcome == Outcome::Guarded && !spec_adaptive() && dt_s <= estimate_dt_s;
+  }
+  bool spec_adaptive() const { return spec.integrator == scene::Integrator::Rk45; }
 };
 
 // The sweep: the full one (≥ 1000 runs) or a quick subset for ctest's `stress` label.

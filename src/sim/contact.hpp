@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "core/vec.hpp"
 
@@ -12,8 +13,9 @@ using softbody::Vec3;
 
 // The paper's collision response (Matyka & Ollila 2003, Sect. 2.5): a vertex found below the floor
 // gets the impulse J = m Δv with Δv = −2v, i.e. its whole velocity is reflected (v ← −v), and it is put
-// back on the floor. Returns the number of vertices that were below.
-int resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v);
+// back on the floor. Returns the number of vertices that were below; appends their indices to `reversed`
+// when given (the integrator may need to know whose motion was reversed: Integrator::velocities_reversed).
+int resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>* reversed = nullptr);
 
 struct FrictionContact {
   double height_m = 0.0;

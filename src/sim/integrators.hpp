@@ -69,6 +69,10 @@ class Integrator {
   virtual void step(Dynamics& dynamics, State& state, double dt) = 0;
   // The state was changed from outside (a contact projection, a user): forget what was cached about it.
   virtual void restart() {}
+  // The floor reversed the whole velocity of these vertices (the paper's response, v ← −v, after restart()).
+  // For an integrator whose velocity lives at the same time as the positions this is the time reversal of
+  // the vertex's motion and needs nothing; symplectic Euler, whose velocity is half a step off, overrides it.
+  virtual void velocities_reversed(std::span<const int> /*vertices*/) {}
   // Non-null for integrators that choose their own step size.
   virtual AdaptiveIntegrator* adaptive() { return nullptr; }
 };

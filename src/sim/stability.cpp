@@ -239,6 +239,7 @@ double stable_dt(scene::Integrator integrator, const ModeBounds& bounds) {
   if (mu_max == 0.0 && bounds.damping_rate == 0.0) return StabilityEstimate::kUnlimited;  // free particles
   // Forward Euler without dampers: ρ² = 1 + h²ω² > 1 at every h (the tolerance above would hide it).
   if (integrator == scene::Integrator::Euler && bounds.damping_rate == 0.0) return 0.0;
+  const double margin = integrator == scene::Integrator::Euler ? kSharpLimitMargin : 1.0;
   // Modes from λ_max down to 1e-6 λ_max, with μ and γ both proportional to λ.
   double limit = StabilityEstimate::kUnlimited;
   constexpr int kSamples = 25;
@@ -248,7 +249,7 @@ double stable_dt(scene::Integrator integrator, const ModeBounds& bounds) {
     limit = std::min(limit, mode_limit(integrator, mu, share * bounds.damping_rate));
     if (limit == 0.0) break;
   }
-  return limit;
+  return margin * limit;
 }
 
 StabilityEstimate estimate_stability(const World& world) {
@@ -269,15 +270,24 @@ StabilityEstimate estimate_stability(const World& world) {
       estimate.travel_dt_s = std::min(estimate.travel_dt_s, travel);
     }
   }
-  scale_for_floor_contact(estimate);
+  scale_for_floor_contact(estimate, world.floor()->contact);
   for (double& dt : estimate.stable_dt_s) dt = std::min(dt, estimate.travel_dt_s);
   return estimate;
 }
 
-void scale_for_floor_contact(StabilityEstimate& estimate) {
-  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticContactFactor;
+void scale_for_floor_contact(StabilityEstimate& estimate, scene::ContactModel contact) {
   for (int i = 0; i < 6; ++i) {
     if (static_cast<scene::Integrator>(i) != scene::Integrator::Implicit) estimate.stable_dt_s[i] *= kContactMargin;
+  }
+  if (contact != scene::ContactModel::Paper) return;
+  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticProjectionFactor;
+  double& euler = estimate.stable_dt_s[static_cast<int>(scene::Integrator::Euler)];
+  for (const ModeBounds& b : estimate.bodies) {
+    if (b.damping_rate == 0.0 || b.omega2_springs == 0.0) continue;  // no dampers: already 0 (unstable)
+    const double c_over_k = b.damping_rate / b.omega2_springs;       // γ/ω² = cλ/(kλ) [s]
+    const double zeta = b.damping_rate / (2.0 * std::sqrt(b.omega2_springs));  // of the fastest mode
+    euler = std::min(euler, c_over_k * (zeta < kPaperEulerZeta ? kPaperEulerFractionLightDamping
+                                                                : kPaperEulerFractionHeavyDamping));
   }
 }
 

@@ -105,7 +105,7 @@ void World::throw_diverged(const Divergence& found, double dt) const {
           << scene::to_string(integrator_kind_) << "): body " << found.body;
   if (found.vertex >= 0) message << ", vertex " << found.vertex;
   StabilityEstimate estimate = estimate_stability(bodies_, initial_x_);  // the start: this state is gone
-  if (floor_) scale_for_floor_contact(estimate);
+  if (floor_) scale_for_floor_contact(estimate, floor_->contact);
   message << " " << found.what << "; " << stable_dt_advice(estimate, integrator_kind_)
           << " (softbody info SCENE prints the estimate)";
   throw softbody::DivergedError(message.str());
@@ -245,7 +245,10 @@ void World::resolve_contacts() {
   if (bodies_.size() > 1) touched += collider_.resolve(bodies_, inverse_mass_, state_, body_contact_);
   if (floor_) {
     switch (floor_->contact) {
-      case scene::ContactModel::Paper: touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v); break;
+      case scene::ContactModel::Paper:
+        reversed_.clear();
+        touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v, &reversed_);
+        break;
       case scene::ContactModel::Friction:
         touched += resolve_floor_friction({floor_->height_m, floor_->restitution, floor_->friction}, state_.x, state_.v);
         break;
@@ -254,6 +257,9 @@ void World::resolve_contacts() {
   // The projection moved the state under the integrator: caches of the old state are stale. A step with
   // such an event is only first order, whatever the integrator (see integrators.hpp).
   if (touched > 0) integrator_->restart();
+  if (floor_ && floor_->contact == scene::ContactModel::Paper && !reversed_.empty()) {
+    integrator_->velocities_reversed(reversed_);
+  }
 }
 
 std::vector<SpringSet> World::spring_sets() const {

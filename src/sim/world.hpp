@@ -131,6 +131,7 @@ class World final : public Dynamics {
   long long rejected_step_count_ = 0;
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
+  std::vector<int> reversed_;                     // vertices the paper's floor response reversed this step
   BodyContactSettings body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;

@@ -39,7 +39,7 @@ TEST(Guard, MessageSaysWhenWhereWhatAndWhichDtIsStable) {
   EXPECT_EQ(message.rfind("diverged at t = ", 0), 0u);
   EXPECT_NE(message.find("dt = 0.0002 s, euler): body 0, vertex "), std::string::npos);
   EXPECT_NE(message.find("runaway speed"), std::string::npos);
-  EXPECT_NE(message.find("estimated stable: dt <= 0.000167 s for euler"), std::string::npos);
+  EXPECT_NE(message.find("estimated stable: dt <= 0.00015 s for euler"), std::string::npos);
   EXPECT_NE(message.find("for implicit"), std::string::npos);
 }
 

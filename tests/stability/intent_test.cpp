@@ -89,6 +89,56 @@ TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
   EXPECT_LT(worst, 0.10);
 }
 
+// The period of the breathing mode that `"stiffness": {"frequency": f}` sets (k = (2πf)²/λ_b with λ_b the
+// Rayleigh quotient of uniform scaling, sim/intent.cpp). Springs only (no gas, no dampers, no gravity, no
+// floor), started at the rest shape with the breathing velocity v_i = ε (x_i − c), ε = 0.01 1/s (relative
+// amplitude ε/ω ≈ 5e-4: linear). The breathing coordinate s(t) = Σ m_i (x_i − c)·(X_i − c) / Σ m_i |X_i − c|² − 1
+// starts at 0 upwards and crosses 0 every half period; the period is the time between the first and the last
+// crossing over the number of half periods between them. Velocity Verlet at 0.2 × its estimated stable dt
+// (period error (hω)²/24 ≈ 1e-5 for the breathing mode). Uniform scaling is not exactly a mode of an
+// icosphere (valence-5 and -6 vertices), so s(t) mixes in other symmetric modes; the Rayleigh quotient is
+// their energy-weighted mean ω², and the measured period is within 1 % of 1/f (measured: 1.0018 / f on
+// icosphere:2, 1.0045 / f on icosphere:4).
+double measured_breathing_period(const std::string& mesh, double frequency_Hz, int half_periods) {
+  sim::World world = world_from_text(R"({ "gravity": [0, 0, 0], "solver": { "integrator": "verlet" },
+    "bodies": [ { "mesh": ")" + mesh + R"(", "stiffness": { "frequency": )" + std::to_string(frequency_Hz) +
+                                     R"( }, "damping": 0, "pressure": 0 } ] })");
+  const sim::Body& body = world.bodies()[0];
+  const std::vector<double>& m = body.topology.mass_kg;
+  const std::vector<softbody::Vec3> rest(world.positions(body).begin(), world.positions(body).end());
+  const softbody::Vec3 centre = sim::diagnose(world, 0).com_m;
+  double inertia = 0.0;  // Σ m |X − c|² [kg m²]
+  for (std::size_t i = 0; i < rest.size(); ++i) inertia += m[i] * (rest[i] - centre).squaredNorm();
+  for (std::size_t i = 0; i < rest.size(); ++i) world.state().v[i] = 0.01 * (rest[i] - centre);
+  auto breathing = [&] {
+    const softbody::Vec3 c = sim::diagnose(world, 0).com_m;
+    double s = 0.0;
+    for (std::size_t i = 0; i < rest.size(); ++i) s += m[i] * (world.state().x[i] - c).dot(rest[i] - centre);
+    return s / inertia - 1.0;
+  };
+  const double dt = 0.2 * sim::estimate_stability(world).stable_dt(scene::Integrator::Verlet);
+  std::vector<double> crossings;
+  double previous = breathing(), t = 0.0;
+  for (int step = 0; crossings.size() < static_cast<std::size_t>(half_periods) + 1 && step < 10'000'000; ++step) {
+    world.step(dt);
+    t += dt;
+    const double now = breathing();
+    if (step > 0 && (previous > 0.0) != (now > 0.0)) crossings.push_back(t - dt * now / (now - previous));
+    previous = now;
+  }
+  return 2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+TEST(Intent, FrequencyIntentSetsTheBreathingPeriodOnEveryMesh) {
+  constexpr double kFrequency_Hz = 3.0;
+  for (const char* mesh : {"icosphere:2", "icosphere:4"}) {
+    const double period = measured_breathing_period(mesh, kFrequency_Hz, 6);
+    std::printf("%s, frequency %.1f Hz: measured breathing period %.5f s (1/f = %.5f s, ratio %.4f)\n", mesh,
+                kFrequency_Hz, period, 1.0 / kFrequency_Hz, period * kFrequency_Hz);
+    EXPECT_NEAR(period * kFrequency_Hz, 1.0, 0.01) << mesh;
+  }
+}
+
 TEST(Intent, BadIntentNamesTheKey) {
   try {
     testing_support::scene_from_text(R"({ "bodies": [ { "stiffness": { "youngs": 1e6, "frequency": 3 } } ] })");
