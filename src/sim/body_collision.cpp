@@ -59,9 +59,15 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 
 }  // namespace
 
-Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
-  const Vec3 scaled = ((p - grid_origin_) / cell_size_).array().floor().cwiseMax(0.0).cwiseMin(double(kMaxCellIndex));
-  return scaled.cast<int>();
+// Cell k along an axis holds [origin + k·size, origin + (k + 1)·size): k = ⌊(p − origin) / size⌋ clamped to
+// [0, kMaxCellIndex]; for s = (p − origin) / size ≥ 0 the floor is the truncation, and s < 0 gives 0.
+inline Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
+  Eigen::Vector3i cell;
+  for (int k = 0; k < 3; ++k) {
+    const double scaled = (p[k] - grid_origin_[k]) / cell_size_;
+    cell[k] = scaled <= 0.0 ? 0 : scaled >= double{kMaxCellIndex} ? kMaxCellIndex : static_cast<int>(scaled);
+  }
+  return cell;
 }
 
 void BodyCollider::build_grid(const Body& surface, const State& state, const Box& region, double search,
