@@ -1,6 +1,7 @@
 // Builds the benchmark worlds from scenes/bounce.json, so that benchmarks and the CLI run the same physics.
 #include "bench_world.hpp"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -28,6 +29,27 @@ scene::Scene bench_scene(const BenchCase& c) {
 sim::World bench_world(const BenchCase& c) {
   std::vector<std::string> notes;
   return sim::build_world(bench_scene(c), notes);
+}
+
+scene::Scene contact_scene(bool touching) {
+  using softbody::Vec3;
+  scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/pile.json");
+  s.solver.integrator = scene::Integrator::Symplectic;
+  // Pillows are 1 m tall (y in [-0.5, 0.5]) and 1.6 m wide; the ball has radius 0.45 m. Stacked, each
+  // body's lowest point sits on the highest point of the one below; apart, all rest on the floor 2 m apart.
+  const std::array<Vec3, 4> stacked = {Vec3(0, 0.5, 0), Vec3(0.15, 1.5, 0.05), Vec3(-0.1, 2.5, -0.05),
+                                       Vec3(0.1, 3.45, 0)};
+  const std::array<Vec3, 4> apart = {Vec3(-3, 0.5, 0), Vec3(-1, 0.5, 0), Vec3(1, 0.5, 0), Vec3(3, 0.45, 0)};
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) s.bodies.at(b).position_m = (touching ? stacked : apart).at(b);
+  return s;
+}
+
+sim::World contact_world(bool touching, int settle_steps) {
+  std::vector<std::string> notes;
+  const scene::Scene s = contact_scene(touching);
+  sim::World world = sim::build_world(s, notes);
+  for (int i = 0; i < settle_steps; ++i) world.step(s.solver.dt_s);
+  return world;
 }
 
 }  // namespace bench

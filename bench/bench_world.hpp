@@ -29,4 +29,12 @@ scene::Scene bench_scene(const BenchCase& c);
 // The world of bench_scene(c).
 sim::World bench_world(const BenchCase& c);
 
+// scenes/pile.json's bodies (three pillows and a ball, 1800 vertices) on its friction floor, either stacked
+// (each resting on the one below: body–body contact in every step) or set apart in a row on the floor (the
+// same bodies and floor contact, no body–body contact). Symplectic Euler at the scene's dt.
+scene::Scene contact_scene(bool touching);
+
+// The world of contact_scene(touching), advanced `settle_steps` steps so that the stack has come into contact.
+sim::World contact_world(bool touching, int settle_steps);
+
 }  // namespace bench

@@ -43,7 +43,7 @@ def micros(r):
 
 
 runs = medians(step_json)
-step_rows, skip_rows, cmp_rows, thread_rows = [], [], {}, {}
+step_rows, skip_rows, cmp_rows, thread_rows, contact_rows = [], [], {}, {}, {}
 for name, r in runs.items():
     parts = name.split("/")
     vertices = int(r["vertices"])
@@ -56,6 +56,8 @@ for name, r in runs.items():
     elif parts[0] == "BM_OursThreads":  # wall time: the second thread's work is in it
         scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[r["time_unit"]]
         thread_rows.setdefault(int(parts[1]), {})[int(parts[2])] = (vertices, r["real_time"] * scale)
+    elif parts[0] == "BM_Contact":  # 1: stacked (touching), 0: the same bodies apart
+        contact_rows["stacked" if parts[1] == "1" else "apart"] = (vertices, us)
     elif parts[0] in ("BM_Ours", "BM_Bullet"):
         cmp_rows.setdefault(int(parts[1]), {})[parts[0]] = (vertices, us, vsps)
 step_rows.sort(key=lambda row: (INTEGRATORS.index(row[0]), row[1]))
@@ -93,6 +95,15 @@ with open(os.path.join(out, "perf_threads.csv"), "w", newline="") as f:
         (n, one), (_, two) = thread_rows[level][1], thread_rows[level][2]
         thread_table.append((level, n, one, two, one / two))
         w.writerow([level, n, f"{one:.3f}", f"{two:.3f}", f"{one / two:.2f}"])
+
+contact_table = []
+if "stacked" in contact_rows and "apart" in contact_rows:
+    (n, stacked), (_, apart) = contact_rows["stacked"], contact_rows["apart"]
+    contact_table = [(n, stacked, apart, stacked - apart)]
+    with open(os.path.join(out, "perf_contact.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["vertices", "stacked_us_per_step", "apart_us_per_step", "contact_us_per_step"])
+        w.writerow([n, f"{stacked:.3f}", f"{apart:.3f}", f"{stacked - apart:.3f}"])
 
 render_rows = list(csv.DictReader(open(render_csv)))
 with open(os.path.join(out, "perf_render.csv"), "w", newline="") as f:
@@ -141,6 +152,12 @@ md.append("| case | µs/step |")
 md.append("|---|---|")
 for row in skip_rows:
     md.append(f"| {row[0]} | {row[3]:.1f} |")
+if contact_table:
+    md.append("\n### Body–body contact (scenes/pile.json's four bodies, symplectic, µs per step)\n")
+    md.append("| vertices | stacked (touching) | apart | contact search and response |")
+    md.append("|---|---|---|---|")
+    for n, stacked, apart, contact in contact_table:
+        md.append(f"| {n} | {stacked:.1f} | {apart:.1f} | {contact:.1f} |")
 md.append("\n### Render pipeline (`softbody render scenes/bounce.json`, ms per frame)\n")
 md.append("| size | shadows | MSAA | simulate | render | read-back | encode (writer thread) | end to end | fps | "
           "end to end / (render + read-back) |")
@@ -153,7 +170,7 @@ md.append("\n### Peak memory\n")
 for case, mib in memory:
     md.append(f"- {case}: {mib} MiB peak RSS")
 md.append("\nCSVs: `docs/perf_bullet.csv`, `docs/perf_threads.csv`, `docs/perf_step.csv`, `docs/perf_skip.csv`, `docs/perf_render.csv`, "
-          "`docs/perf_memory.csv`.")
+          "`docs/perf_contact.csv`, `docs/perf_memory.csv`.")
 
 path = os.path.join(out, "performance.md")
 text = open(path).read() if os.path.exists(path) else "# Performance\n\n<!-- results:begin -->\n<!-- results:end -->\n"

@@ -2,6 +2,7 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "bench_world.hpp"
@@ -107,6 +108,28 @@ void BM_Bullet(benchmark::State& st) {
                                                          benchmark::Counter::kIsRate);
 }
 
+// Body–body contact: scenes/pile.json's four bodies (1800 vertices) stacked, each resting on the one below,
+// against the same bodies apart on the floor; the difference is the contact search and response. The
+// stack is first settled for kContactSettleSteps steps (0.04 s) so that every measured step has contact;
+// the settled state is made once and copied. Args: {1 stacked, 0 apart}.
+constexpr int kContactSettleSteps = 2000;
+
+void BM_Contact(benchmark::State& st) {
+  const bool touching = st.range(0) == 1;
+  static std::array<std::optional<sim::State>, 2> settled;
+  auto& cached = settled.at(touching ? 1 : 0);
+  if (!cached) cached = bench::contact_world(touching, kContactSettleSteps).state();
+  sim::World world = bench::contact_world(touching, 0);
+  world.state() = *cached;
+  const double dt = bench::contact_scene(touching).solver.dt_s;
+  for (auto _ : st) world.step(dt);
+  const auto vertices = static_cast<double>(world.state().x.size());
+  st.SetLabel(touching ? "stacked" : "apart");
+  st.counters["vertices"] = vertices;
+  st.counters["vertex_steps_per_s"] = benchmark::Counter(vertices * static_cast<double>(st.iterations()),
+                                                         benchmark::Counter::kIsRate);
+}
+
 void step_args(benchmark::internal::Benchmark* b) {
   for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
     for (int level = 1; level <= 6; ++level) b->Args({i, level});
@@ -129,6 +152,7 @@ void register_comparison() {
 
 BENCHMARK(BM_Step)->Apply(step_args)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Skip)->Apply(skip_args)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Contact)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_OursThreads)->ArgsProduct({{5, 6}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 int main(int argc, char** argv) {

@@ -59,36 +59,68 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 
 }  // namespace
 
-Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
-  const Vec3 scaled = ((p - grid_origin_) / cell_size_).array().floor().cwiseMax(0.0).cwiseMin(double(kMaxCellIndex));
-  return scaled.cast<int>();
+// Cell k along an axis holds [origin + k·size, origin + (k + 1)·size): k = ⌊(p − origin) / size⌋ clamped to
+// [0, kMaxCellIndex]; for s = (p − origin) / size ≥ 0 the floor is the truncation, and s < 0 gives 0.
+inline Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
+  Eigen::Vector3i cell;
+  for (int k = 0; k < 3; ++k) {
+    const double scaled = (p[k] - grid_origin_[k]) / cell_size_;
+    cell[k] = scaled <= 0.0 ? 0 : scaled >= double{kMaxCellIndex} ? kMaxCellIndex : static_cast<int>(scaled);
+  }
+  return cell;
 }
 
-std::uint64_t BodyCollider::cell_key(const Eigen::Vector3i& cell) {
-  return (static_cast<std::uint64_t>(cell.x()) << 42) | (static_cast<std::uint64_t>(cell.y()) << 21) |
-         static_cast<std::uint64_t>(cell.z());
-}
-
-void BodyCollider::build_grid(const Body& surface, const State& state, const Box& region, double cell_size) {
-  cell_size_ = cell_size;
+void BodyCollider::build_grid(const Body& surface, const State& state, const Box& region, double search,
+                              double cell_size) {
   grid_origin_ = region.lo;
-  cells_.clear();
-  triangle_boxes_.resize(surface.topology.faces.size());
+  // Vertices tested lie in the region, so a query never reaches past the cell of region.hi + search: the
+  // table ends there and triangle boxes are clipped to it. Past kMaxGridCells the cells double in size
+  // (only for a huge overlap of fine meshes; the same contacts, found among more candidates).
+  const Vec3 top_corner = region.hi + Vec3::Constant(search);
+  Eigen::Vector3i top;
+  for (cell_size_ = cell_size;; cell_size_ *= 2) {
+    top = cell_of(top_corner);
+    const std::int64_t cells = std::int64_t{top.x() + 1} * (top.y() + 1) * (top.z() + 1);
+    if (cells <= kMaxGridCells) break;
+  }
+  grid_cells_ = top + Eigen::Vector3i::Ones();
+  const std::size_t face_count = surface.topology.faces.size();
+  triangle_boxes_.resize(face_count);
+  tested_by_.assign(face_count, -1);
+  grid_triangles_.clear();
+  cell_start_.assign(static_cast<std::size_t>(grid_cells_.prod()) + 1, 0);
+  // Pass 1: each triangle's box and cells, counted per cell (in cell_start_[c + 1]).
   const Vec3* x = state.x.data() + surface.first_vertex;
-  for (std::size_t f = 0; f < surface.topology.faces.size(); ++f) {
+  for (std::size_t f = 0; f < face_count; ++f) {
     const Triangle& t = surface.topology.faces[f];
     const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
     const Vec3 hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
     if ((hi.array() < region.lo.array()).any() || (lo.array() > region.hi.array()).any()) continue;
     triangle_boxes_[f] = {lo, hi};
-    const Eigen::Vector3i first = cell_of(lo), last = cell_of(hi);
+    const Eigen::Vector3i first = cell_of(lo), last = cell_of(hi).cwiseMin(top);
+    grid_triangles_.push_back({static_cast<int>(f), first, last});
     for (int cx = first.x(); cx <= last.x(); ++cx) {
       for (int cy = first.y(); cy <= last.y(); ++cy) {
-        for (int cz = first.z(); cz <= last.z(); ++cz) cells_.push_back({cell_key({cx, cy, cz}), static_cast<int>(f)});
+        for (int cz = first.z(); cz <= last.z(); ++cz) ++cell_start_[static_cast<std::size_t>(cell_index(cx, cy, cz)) + 1];
       }
     }
   }
-  std::sort(cells_.begin(), cells_.end());
+  // Pass 2: counts → starts (prefix sum), then the triangles placed in ascending index order per cell.
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  cell_triangles_.resize(static_cast<std::size_t>(cell_start_.back()));
+  for (const TriangleCells& g : grid_triangles_) {
+    for (int cx = g.first.x(); cx <= g.last.x(); ++cx) {
+      for (int cy = g.first.y(); cy <= g.last.y(); ++cy) {
+        for (int cz = g.first.z(); cz <= g.last.z(); ++cz) {
+          // cell_start_[c] runs ahead as the cell fills; shifted back below.
+          cell_triangles_[static_cast<std::size_t>(cell_start_[static_cast<std::size_t>(cell_index(cx, cy, cz))]++)] =
+              g.triangle;
+        }
+      }
+    }
+  }
+  for (std::size_t c = cell_start_.size() - 1; c > 0; --c) cell_start_[c] = cell_start_[c - 1];
+  cell_start_[0] = 0;
 }
 
 namespace {
@@ -148,7 +180,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
   const Box& surface_box = boxes_[surface_index_];
   const Box region{moving_box.lo.cwiseMax(surface_box.lo) - Vec3::Constant(search),
                    moving_box.hi.cwiseMin(surface_box.hi) + Vec3::Constant(search)};
-  build_grid(surface, state, region, std::max(2 * search, kCellFraction * edge));
+  build_grid(surface, state, region, search, std::max(2 * search, kCellFraction * edge));
   const Vec3* x_surface = state.x.data() + surface.first_vertex;
   int contacts = 0;
   for (int i = 0; i < moving.vertex_count; ++i) {
@@ -159,21 +191,26 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     double best_distance = search;
     int best = -1;
     ClosestPoint best_point{};
-    const Eigen::Vector3i first = cell_of(p - Vec3::Constant(search)), last = cell_of(p + Vec3::Constant(search));
+    const Eigen::Vector3i first = cell_of(p - Vec3::Constant(search));
+    const Eigen::Vector3i last = cell_of(p + Vec3::Constant(search)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
     for (int cx = first.x(); cx <= last.x(); ++cx) {
       for (int cy = first.y(); cy <= last.y(); ++cy) {
         for (int cz = first.z(); cz <= last.z(); ++cz) {
-          auto range = std::equal_range(cells_.begin(), cells_.end(), Cell{cell_key({cx, cy, cz}), 0},
-                                        [](const Cell& a, const Cell& b) { return a.key < b.key; });
-          for (auto it = range.first; it != range.second; ++it) {
-            const Box& box = triangle_boxes_[it->triangle];  // cheap reject: the box is farther than the best
+          const auto c = static_cast<std::size_t>(cell_index(cx, cy, cz));
+          for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+            const int f = cell_triangles_[static_cast<std::size_t>(k)];
+            // A triangle in several of these cells is tested once: a second test gives the same distance,
+            // which can neither beat the best nor tie it with a lower index.
+            if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
+            tested_by_[static_cast<std::size_t>(f)] = i;
+            const Box& box = triangle_boxes_[static_cast<std::size_t>(f)];  // cheap reject: the box is farther than the best
             if ((p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm() > best_distance * best_distance) continue;
-            const Triangle& t = surface.topology.faces[it->triangle];
+            const Triangle& t = surface.topology.faces[static_cast<std::size_t>(f)];
             const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
             const double distance = (p - q.point).norm();
-            if (distance < best_distance || (distance == best_distance && it->triangle < best)) {
+            if (distance < best_distance || (distance == best_distance && f < best)) {
               best_distance = distance;
-              best = it->triangle;
+              best = f;
               best_point = q;
             }
           }

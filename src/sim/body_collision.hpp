@@ -1,6 +1,7 @@
 // Contact between bodies: the vertices of each body against the triangles of every other body whose
-// bounding box overlaps it. Broad phase: bounding boxes, then a uniform grid of triangles (sorted cell
-// keys, rebuilt each step without allocating). Narrow phase: closest point on the nearest triangle.
+// bounding box overlaps it. Broad phase: bounding boxes, then a uniform grid of triangles (a dense cell
+// table over the pair's overlap region, counting-sorted, rebuilt each step without allocating). Narrow
+// phase: closest point on the nearest triangle, each triangle tested once per vertex.
 // Applied after each step, like the floor; a single body costs nothing (no search at all).
 #pragma once
 
@@ -29,25 +30,31 @@ class BodyCollider {
   struct Box {
     Vec3 lo, hi;
   };
-  struct Cell {
-    std::uint64_t key;
-    int triangle;
-    bool operator<(const Cell& other) const { return key < other.key || (key == other.key && triangle < other.triangle); }
-  };
 
-  void build_grid(const Body& body, const State& state, const Box& box, double cell_size);
+  void build_grid(const Body& body, const State& state, const Box& region, double search, double cell_size);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const BodyContactSettings& settings);
-  static constexpr int kMaxCellIndex = (1 << 21) - 1;  // 21 bits per axis in a cell key
-  Eigen::Vector3i cell_of(const Vec3& p) const;         // clamped to the key's range
-  static std::uint64_t cell_key(const Eigen::Vector3i& cell);
+  static constexpr int kMaxCellIndex = (1 << 21) - 1;     // per axis, as the cell keys of the old sorted grid
+  static constexpr std::int64_t kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
+  Eigen::Vector3i cell_of(const Vec3& p) const;            // clamped to [0, kMaxCellIndex]
+  int cell_index(int cx, int cy, int cz) const { return (cx * grid_cells_.y() + cy) * grid_cells_.z() + cz; }
 
   std::vector<Box> boxes_;          // per body, this step
   std::size_t moving_index_ = 0;    // the body whose vertices are tested
   std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
   std::vector<double> mean_edge_m_;  // per body, its mean rest edge (bodies never change): sets the search
-  std::vector<Cell> cells_;
+  // The grid over the pair's overlap region, dense and compressed (counting sort): cell c holds the surface
+  // triangles cell_triangles_[cell_start_[c] .. cell_start_[c + 1]), in ascending index order.
+  std::vector<int> cell_start_;       // grid_cells_ product + 1 entries
+  std::vector<int> cell_triangles_;
+  struct TriangleCells {
+    int triangle;
+    Eigen::Vector3i first, last;  // the cells its box covers (inclusive)
+  };
+  std::vector<TriangleCells> grid_triangles_;  // the surface triangles whose boxes meet the region
   std::vector<Box> triangle_boxes_;   // per surface triangle in the grid
+  std::vector<int> tested_by_;        // per surface triangle: the last moving vertex that tested it (-1: none)
+  Eigen::Vector3i grid_cells_ = Eigen::Vector3i::Ones();  // cells per axis
   Vec3 grid_origin_ = Vec3::Zero();
   double cell_size_ = 1.0;
 };
