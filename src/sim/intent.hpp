@@ -22,8 +22,11 @@ double breathing_lambda(const Topology& topology, std::span<const Vec3> x);
 // The body's force constants from `spec`: raw numbers where given, intent resolved otherwise:
 //   "youngs" E, "thickness" t:  k = (√3/2) E t   (a triangular spring lattice has the 2D Young's modulus
 //                                                 2k/√3 at any edge length; Ostoja-Starzewski 2002)
-//   "frequency" f:              k = (2π f)² / λ_b
-//   "damping" {"ratio": ζ}:     c = 2 ζ k / ω_b   (ζ ω = c λ / 2 for dampers along the springs)
+//   "frequency" f:              k = (2π f)² / λ, the breathing mode at f: λ = λ_b for springs alone;
+//                               with "pressure" {"inflation": f_i, "start": "equilibrium"} the gas stiffens
+//                               the mode, λ = λ_b (1 + f_i/(1 + f_i)) (d²(−nRT ln V)/ds² = 3 nRT for V ∝ (1+s)³)
+//   "damping" {"ratio": ζ}:     c = 2 ζ ω_b / λ_b with ω_b² = k λ   (dampers act along the springs:
+//                               the breathing mode's damping rate is c λ_b = 2 ζ ω_b)
 //   "pressure" {"inflation": f}: nRT and the springs' rest lengths such that the gas balances the springs
 //                                stretched by f (mean strain) at the initial shape, vertex by vertex
 //                                (start "equilibrium": no pop), or the rest lengths kept and nRT chosen
