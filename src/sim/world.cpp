@@ -49,7 +49,10 @@ void World::add_body(Topology topology, const Params& params, const std::vector<
 }
 
 void World::step(double dt) {
-  if (retry_) backup_ = state_;
+  if (retry_) {
+    backup_ = state_;
+    backup_reversed_ = reversed_;  // what the integrator was told about the backed-up state
+  }
   if (auto found = substep(dt)) {
     if (!retry_ || !retry_with_substeps(dt)) throw_diverged(*found, dt);
   }
@@ -88,6 +91,7 @@ bool World::retry_with_substeps(double dt) {
     substeps_ *= 2;
     state_ = backup_;
     integrator_->restart();
+    if (!backup_reversed_.empty()) integrator_->velocities_reversed(backup_reversed_);
     if (!substep(dt)) {
       ++retried_step_count_;
       return true;

@@ -82,6 +82,7 @@ class World final : public Dynamics {
   // rk45's first stage), so changing the state between steps is safe.
   State& state() {
     integrator_->restart();
+    reversed_.clear();  // the integrator was told to forget them
     guard_.rebase();
     return state_;
   }
@@ -132,6 +133,7 @@ class World final : public Dynamics {
   double adaptive_dt_s_ = 1e-4;               // the step advance_to() tries next
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
   std::vector<int> reversed_;                     // vertices the paper's floor response reversed this step
+  std::vector<int> backup_reversed_;              // reversed_ when backup_ was taken (retry)
   BodyContactSettings body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;

@@ -21,7 +21,8 @@ namespace sim {
 // integrator's own terms negates the velocity at x_{n+1}, v_{n+1} = v_{n+½} + (h/2) a_{n+1}: the stored
 // velocity becomes −v_{n+½} − h a_{n+1}, so the next kick gives exactly −v_{n+½}. A reversed vertex
 // therefore skips its next kick; then the floor costs symplectic Euler nothing (measured: as free flight).
-// restart() forgets the list (the state was replaced): after a retried step every vertex is kicked once.
+// restart() forgets the list (the state was replaced); World::step tells it again after restoring a
+// backed-up state for a retry.
 class SymplecticEuler final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
