@@ -167,6 +167,22 @@ double World::partial_forces(std::size_t b, std::span<const Vec3> x, std::span<c
   return gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3);
 }
 
+namespace {
+
+// Hands vertices [begin, end) of a body their net force, use(first + i, f_i + per_area_sum · g_i), with
+// g the gas's area sums (per_area_sum = 0: no gas, g not read).
+template <class Use>
+void hand_out_net_forces(std::size_t first, std::size_t begin, std::size_t end, std::span<const Vec3> f,
+                         std::span<const Vec3> area_sums, double per_area_sum, Use& use) {
+  if (per_area_sum == 0.0) {
+    for (std::size_t i = begin; i < end; ++i) use(first + i, f[i]);
+  } else {
+    for (std::size_t i = begin; i < end; ++i) use(first + i, Vec3(f[i] + per_area_sum * area_sums[i]));
+  }
+}
+
+}  // namespace
+
 template <class Use>
 void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use use) {
   scratch.resize(state.x.size());
@@ -180,12 +196,7 @@ void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use
       continue;
     }
     const double per_area_sum = partial_forces(b, {state.x.data() + first, count}, {state.v.data() + first, count}, f);
-    if (per_area_sum == 0.0) {
-      for (std::size_t i = 0; i < count; ++i) use(first + i, f[i]);
-    } else {
-      const std::vector<Vec3>& area_sums = area_scratch_[b];
-      for (std::size_t i = 0; i < count; ++i) use(first + i, Vec3(f[i] + per_area_sum * area_sums[i]));
-    }
+    hand_out_net_forces(first, 0, count, f, area_scratch_[b], per_area_sum, use);
   }
 }
 
@@ -210,14 +221,9 @@ void World::visit_body_forces_in_parallel(std::size_t b, const State& state, std
   });
   // 2. The net force of each vertex, in two vertex ranges.
   const double per_area_sum = gas ? gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3) : 0.0;
-  const std::vector<Vec3>& area_sums = area_scratch_[b];
   part_runner_->run(2, [&](int part) {
     const std::size_t begin = part == 0 ? 0 : n / 2, end = part == 0 ? n / 2 : n;
-    if (!gas) {
-      for (std::size_t i = begin; i < end; ++i) use(first + i, f[i]);
-    } else {
-      for (std::size_t i = begin; i < end; ++i) use(first + i, Vec3(f[i] + per_area_sum * area_sums[i]));
-    }
+    hand_out_net_forces(first, begin, end, f, area_scratch_[b], per_area_sum, use);
   });
 }
 
