@@ -73,9 +73,8 @@ void spring_damper_block(std::span<const std::array<int, 2>> edges, const double
   }
 }
 
-}  // namespace
-
-// Four partial sums rather than one long chain of dependent additions.
+// Σ_i (x_i − origin)·g_i in four partial sums (vertex i into sum i mod 4), added in a fixed order at the
+// end: bit-identical every run, without one long chain of dependent additions.
 double sum_of_dots_from(std::span<const Vec3> x, std::span<const Vec3> g, const Vec3& origin) {
   double sum0 = 0.0, sum1 = 0.0, sum2 = 0.0, sum3 = 0.0;
   std::size_t i = 0;
@@ -88,6 +87,8 @@ double sum_of_dots_from(std::span<const Vec3> x, std::span<const Vec3> g, const 
   for (; i < x.size(); ++i) sum0 += (x[i] - origin).dot(g[i]);
   return (sum0 + sum1) + (sum2 + sum3);
 }
+
+}  // namespace
 
 void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
                         double c, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force) {
@@ -116,7 +117,10 @@ double guarded_volume(double volume_m3, double rest_volume_m3) {
   return std::max(volume_m3, kMinimumVolumeFraction * rest_volume_m3);
 }
 
-void add_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::span<Vec3> area_sums) {
+double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums) {
+  // Pass over the faces: twice the area vector of each face, 2A_f·n̂ = (x_b − x_a)×(x_c − x_a), summed at
+  // its three corners: g_i = Σ_{f ∋ i} 2A_f·n̂.
+  area_sums.assign(x.size(), Vec3::Zero());
   for (const auto& [a, b, c] : faces) {
     const Vec3 xa = x[a];
     const Vec3 twice_area = (x[b] - xa).cross(x[c] - xa);
@@ -124,11 +128,6 @@ void add_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, 
     area_sums[b] += twice_area;
     area_sums[c] += twice_area;
   }
-}
-
-double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums) {
-  area_sums.assign(x.size(), Vec3::Zero());
-  add_area_vectors(faces, x, area_sums);
   // The volume from the same sums: x_a·(2A_f·n̂) = x_a·(x_b × x_c) is the same for each corner of f, so
   // 6V = Σ_f x_a·(2A_f·n̂) = ⅓ Σ_f (x_a + x_b + x_c)·(2A_f·n̂) = ⅓ Σ_i x_i·g_i, and Σ_i g_i = 0 on a closed
   // mesh lets x_i be taken relative to the first vertex (small round-off).

@@ -42,14 +42,6 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
 // The volume below which the gas law is evaluated at this floor instead (V → 0 would give P → ∞).
 double guarded_volume(double volume_m3, double rest_volume_m3);
 
-// Adds twice the area vector of every face, 2A_f·n̂_f = (x_b − x_a)×(x_c − x_a), to each of its corners:
-// area_sums_i += Σ_{f ∋ i} 2A_f·n̂_f (one chunk of the faces; the caller zeroes area_sums).
-void add_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::span<Vec3> area_sums);
-
-// Σ_i (x_i − origin)·g_i in four partial sums (element i into sum i mod 4) added in a fixed order:
-// bit-identical every run. With g the area sums and origin any point, 6V = ⅓ of it on a closed mesh.
-double sum_of_dots_from(std::span<const Vec3> x, std::span<const Vec3> g, const Vec3& origin);
-
 // The gas's face pass: area_sums_i = Σ_{f ∋ i} 2A_f·n̂_f, twice the area vectors of the faces around each
 // vertex (sized here), and the enclosed volume from the same sums, V = Σ_i x_i·g_i / 18 [m³].
 double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums);

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include "core/errors.hpp"
+#include "sim/forces.hpp"
 
 namespace sim {
 namespace {
@@ -53,12 +54,6 @@ std::vector<double> unit_gas_tensions(const Topology& t, std::span<const Vec3> x
   return {tension.data(), tension.data() + tension.size()};
 }
 
-double enclosed_volume_of(const Topology& t, std::span<const Vec3> x) {
-  double six_volume = 0.0;
-  for (const Triangle& f : t.faces) six_volume += (x[f[0]] - x[0]).dot((x[f[1]] - x[0]).cross(x[f[2]] - x[0]));
-  return six_volume / 6.0;
-}
-
 double stiffness_from_intent(const scene::StiffnessIntent& intent, double lambda) {
   if (intent.youngs_Pa > 0.0) return std::sqrt(3.0) / 2.0 * intent.youngs_Pa * intent.thickness_m;  // N/m
   const double omega = 2.0 * std::numbers::pi * intent.frequency_Hz;
@@ -73,7 +68,7 @@ struct GasPerStiffness {
 
 GasPerStiffness gas_per_stiffness(const scene::PressureIntent& intent, const Topology& t, std::span<const Vec3> x) {
   GasPerStiffness gas;
-  gas.unit_tension = unit_gas_tensions(t, x, enclosed_volume_of(t, x));
+  gas.unit_tension = unit_gas_tensions(t, x, enclosed_volume(t.faces, x));
   // Global balance (virtual work of the breathing mode): nRT Σ t¹_e L_e = k Σ (L − L0) L with the mean
   // strain (L − L0)/L0 = f, i.e. L − L0 = L f / (1 + f).
   double sum_tL = 0.0, sum_L2 = 0.0;

@@ -156,15 +156,18 @@ void World::advance_to(double end_time_s) {
   }
 }
 
-double World::partial_forces(std::size_t b, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f) {
-  const Body& body = bodies_[b];
+void World::spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f) const {
   const Topology& topology = body.topology;
   set_gravity(topology.mass_kg, gravity_, f);  // starts the sum: no separate zeroing pass
   const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
   if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
+}
+
+double World::gas_face_pass(std::size_t b, std::span<const Vec3> x) {
+  const Body& body = bodies_[b];
   if (body.params.pressure_J == 0.0) return 0.0;
-  const double volume = sum_area_vectors(topology.faces, x, area_scratch_[b]);
-  return gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3);
+  const double volume = sum_area_vectors(body.topology.faces, x, area_scratch_[b]);
+  return gas_force_per_area_sum(body.params.pressure_J, volume, body.topology.rest_volume_m3);
 }
 
 namespace {
@@ -195,7 +198,9 @@ void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use
       visit_body_forces_in_parallel(b, state, f, use);
       continue;
     }
-    const double per_area_sum = partial_forces(b, {state.x.data() + first, count}, {state.v.data() + first, count}, f);
+    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    spring_forces(body, x, v, f);
+    const double per_area_sum = gas_face_pass(b, x);
     hand_out_net_forces(first, 0, count, f, area_scratch_[b], per_area_sum, use);
   }
 }
@@ -203,24 +208,19 @@ void World::visit_net_forces(const State& state, std::vector<Vec3>& scratch, Use
 template <class Use>
 void World::visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, Use& use) {
   const Body& body = bodies_[b];
-  const Topology& topology = body.topology;
   const auto first = static_cast<std::size_t>(body.first_vertex);
   const std::size_t n = f.size();
   const std::span<const Vec3> x(state.x.data() + first, n), v(state.v.data() + first, n);
-  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
-  const bool gas = body.params.pressure_J != 0.0;
   // 1. Gravity, springs and dampers into f on one thread; the gas's face pass into its area sums on the other.
-  double volume = 0.0;
+  double per_area_sum = 0.0;
   part_runner_->run(2, [&](int part) {
     if (part == 0) {
-      set_gravity(topology.mass_kg, gravity_, f);
-      if (k != 0.0 || c != 0.0) add_spring_dampers(topology.edges, topology.rest_length_m, k, c, x, v, f);
-    } else if (gas) {
-      volume = sum_area_vectors(topology.faces, x, area_scratch_[b]);
+      spring_forces(body, x, v, f);
+    } else {
+      per_area_sum = gas_face_pass(b, x);
     }
   });
   // 2. The net force of each vertex, in two vertex ranges.
-  const double per_area_sum = gas ? gas_force_per_area_sum(body.params.pressure_J, volume, topology.rest_volume_m3) : 0.0;
   part_runner_->run(2, [&](int part) {
     const std::size_t begin = part == 0 ? 0 : n / 2, end = part == 0 ? n / 2 : n;
     hand_out_net_forces(first, begin, end, f, area_scratch_[b], per_area_sum, use);

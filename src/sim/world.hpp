@@ -1,7 +1,6 @@
 // The simulated world: bodies, gravity, floor, the shared state, and the step as a list of phases.
 #pragma once
 
-#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -98,9 +97,11 @@ class World final : public Dynamics {
   std::span<const Vec3> velocities(const Body& body) const;
 
  private:
-  // Body b's gravity, springs and dampers summed into f, and its gas's area sums into area_scratch_[b].
-  // Returns the gas force per area sum (nRT / V / 6), 0 without gas.
-  double partial_forces(std::size_t b, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f);
+  // A body's gravity, springs and dampers, summed into f (overwritten).
+  void spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> f) const;
+  // Body b's gas: its area sums into area_scratch_[b]; returns the gas force per area sum (nRT / V / 6),
+  // 0 without gas.
+  double gas_face_pass(std::size_t b, std::span<const Vec3> x);
   // Evaluates every body's forces (partial sums in `scratch`) and then, in one pass per body, hands each
   // vertex's net force to use(i, f_i), i the world vertex index. `use` may overwrite scratch[i] and the
   // body's own x_i, v_i: the body's forces are complete before its pass.
