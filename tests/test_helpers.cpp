@@ -23,16 +23,19 @@ void run_steps(sim::World& world, long long n, double dt) {
   for (long long i = 0; i < n; ++i) world.step(dt);
 }
 
-CommandResult run_softbody(const std::string& arguments) {
-  const std::string command = "cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE " " + arguments + " 2>&1";
+CommandResult run_shell(const std::string& command) {
   CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer{};
   while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
   const int status = ::pclose(pipe);
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+CommandResult run_softbody(const std::string& arguments) {
+  return run_shell("cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE " " + arguments);
 }
 
 std::string data_path(const std::string& name) { return std::string(SOFTBODY_TEST_DATA) + "/" + name; }

@@ -25,6 +25,9 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
+// Runs a shell command line, capturing its stdout and stderr together.
+CommandResult run_shell(const std::string& command);
+
 // Runs the softbody executable with `arguments` (shell words), from the source directory.
 CommandResult run_softbody(const std::string& arguments);
 

@@ -2,31 +2,17 @@
 // simulation side never needs OpenGL.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 #include "output/png_codec.hpp"
 #include "test_context.hpp"
+#include "test_helpers.hpp"
 
 namespace {
 
-struct CommandResult {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult run_command(const std::string& command) {
-  CommandResult result;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = ::pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing_support::CommandResult;
+using testing_support::run_shell;
 
 // Single-quoted for the shell (test paths hold no quote). Built with += : GCC 12 at -O3 reports a false
 // -Wrestrict on "'" + std::string.
@@ -52,30 +38,30 @@ int count_frame_files(const std::filesystem::path& dir) {
 
 TEST(RenderCommand, OddWidthIsBadInputNamingTheKey) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_odd_width");
-  const CommandResult result = run_command(render_command(out, "--set render.width=161"));
-  EXPECT_EQ(result.status, 2) << result.output;
+  const CommandResult result = run_shell(render_command(out, "--set render.width=161"));
+  EXPECT_EQ(result.exit_status, 2) << result.output;
   EXPECT_NE(result.output.find("render.width"), std::string::npos) << result.output;
   EXPECT_EQ(count_frame_files(out), 0);
 }
 
 TEST(RenderCommand, VideoHasAsManyFramesAsThePngSequence) {
-  if (run_command("ffprobe -version").status != 0) GTEST_SKIP() << "ffprobe is not installed";
+  if (run_shell("ffprobe -version").exit_status != 0) GTEST_SKIP() << "ffprobe is not installed";
   const std::filesystem::path out = render_test::fresh_output_dir("cli_video");
   const std::filesystem::path video = out / "track.mp4";
-  const CommandResult result = run_command(render_command(out, "--video " + quoted(video)));
-  ASSERT_EQ(result.status, 0) << result.output;
-  const CommandResult probe = run_command("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+  const CommandResult result = run_shell(render_command(out, "--video " + quoted(video)));
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  const CommandResult probe = run_shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
                                           "stream=nb_read_frames,width,height,pix_fmt -of csv=p=0 " + quoted(video));
-  ASSERT_EQ(probe.status, 0) << probe.output;
+  ASSERT_EQ(probe.exit_status, 0) << probe.output;
   EXPECT_EQ(count_frame_files(out), 11);
   EXPECT_EQ(probe.output, "160,120,yuv420p,11\n");
 }
 
 TEST(RenderCommand, VideoWithoutPngsWritesNoFrames) {
-  if (run_command("ffmpeg -version").status != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  if (run_shell("ffmpeg -version").exit_status != 0) GTEST_SKIP() << "ffmpeg is not installed";
   const std::filesystem::path out = render_test::fresh_output_dir("cli_no_png");
-  const CommandResult result = run_command(render_command(out, "--no-png --video " + quoted(out / "v.mp4")));
-  ASSERT_EQ(result.status, 0) << result.output;
+  const CommandResult result = run_shell(render_command(out, "--no-png --video " + quoted(out / "v.mp4")));
+  ASSERT_EQ(result.exit_status, 0) << result.output;
   EXPECT_EQ(count_frame_files(out), 0);
   EXPECT_TRUE(std::filesystem::exists(out / "v.mp4"));
   EXPECT_TRUE(std::filesystem::exists(out / "figure.png"));
@@ -83,8 +69,8 @@ TEST(RenderCommand, VideoWithoutPngsWritesNoFrames) {
 
 TEST(RenderCommand, MissingFfmpegIsAClearFailureAndLeavesNoVideo) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_no_ffmpeg");
-  const CommandResult result = run_command("PATH=/nonexistent " + render_command(out, "--video " + quoted(out / "v.mp4")));
-  EXPECT_EQ(result.status, 1) << result.output;
+  const CommandResult result = run_shell("PATH=/nonexistent " + render_command(out, "--video " + quoted(out / "v.mp4")));
+  EXPECT_EQ(result.exit_status, 1) << result.output;
   EXPECT_NE(result.output.find("ffmpeg"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(out / "v.mp4"));
 }
@@ -92,9 +78,9 @@ TEST(RenderCommand, MissingFfmpegIsAClearFailureAndLeavesNoVideo) {
 TEST(RenderCommand, DivergedRunKeepsItsValidFramesAndWritesNoVideo) {
   // A time step far too large for the stiffness: the run diverges after a few frames (exit status 3).
   const std::filesystem::path out = render_test::fresh_output_dir("cli_diverged");
-  const CommandResult result = run_command(render_command(
+  const CommandResult result = run_shell(render_command(
       out, "--set solver.dt=0.01 --set bodies.0.stiffness=1e6 --video " + quoted(out / "v.mp4")));
-  EXPECT_EQ(result.status, 3) << result.output;
+  EXPECT_EQ(result.exit_status, 3) << result.output;
   const int frames = count_frame_files(out);
   EXPECT_GE(frames, 1);
   EXPECT_LT(frames, 11);
@@ -113,8 +99,8 @@ TEST(RenderCommand, RerunRemovesFramesLeftByALongerRun) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_stale");
   ASSERT_TRUE(std::filesystem::copy_file(std::filesystem::path(SOFTBODY_GOLDEN_DIR) / "ball_in_the_air.png",
                                          out / "frame_0011.png"));
-  const CommandResult result = run_command(render_command(out));
-  ASSERT_EQ(result.status, 0) << result.output;
+  const CommandResult result = run_shell(render_command(out));
+  ASSERT_EQ(result.exit_status, 0) << result.output;
   EXPECT_EQ(count_frame_files(out), 11);
 }
 
@@ -122,8 +108,8 @@ TEST(SimulationSide, CoreLibraryCallsNoOpenGl) {
   // softbody_core (scene, mesh, sim, frames, outputs) and so `softbody simulate` must work where no GL
   // context can be made. Structural check: no object in the core library references an OSMesa or GL
   // function (`nm -u` lists the symbols it needs from elsewhere).
-  const CommandResult symbols = run_command("nm -u --format=just-symbols " + quoted(SOFTBODY_CORE_LIBRARY));
-  ASSERT_EQ(symbols.status, 0) << symbols.output;
+  const CommandResult symbols = run_shell("nm -u --format=just-symbols " + quoted(SOFTBODY_CORE_LIBRARY));
+  ASSERT_EQ(symbols.exit_status, 0) << symbols.output;
   ASSERT_NE(symbols.output.find("png_"), std::string::npos) << "nm listed nothing useful";
   std::size_t line_start = 0;
   while (line_start < symbols.output.size()) {
@@ -142,10 +128,10 @@ TEST(SimulationSide, SimulateRunsWithoutADisplayOrRenderer) {
   // OSMesaCreateContextAttribs), so a `simulate` that made one would fail here.
   const std::filesystem::path out = render_test::fresh_output_dir("cli_simulate");
   const CommandResult result =
-      run_command("DISPLAY= GALLIUM_DRIVER=none " + quoted(SOFTBODY_EXE) + " simulate " +
+      run_shell("DISPLAY= GALLIUM_DRIVER=none " + quoted(SOFTBODY_EXE) + " simulate " +
                   quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") + " --csv " +
                   quoted(out / "track.csv"));
-  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(result.exit_status, 0) << result.output;
   EXPECT_TRUE(std::filesystem::exists(out / "track.csv"));
 }
 
