@@ -34,7 +34,7 @@ sim::World bench_world(const BenchCase& c) {
 scene::Scene contact_scene(bool touching) {
   using softbody::Vec3;
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/pile.json");
-  s.solver.integrator = scene::Integrator::Symplectic;
+  s.solver.integrator = sim::IntegratorKind::Symplectic;
   // Pillows are 1 m tall (y in [-0.5, 0.5]) and 1.6 m wide; the ball has radius 0.45 m. Stacked, each
   // body's lowest point sits on the highest point of the one below; apart, all rest on the floor 2 m apart.
   const std::array<Vec3, 4> stacked = {Vec3(0, 0.5, 0), Vec3(0.15, 1.5, 0.05), Vec3(-0.1, 2.5, -0.05),

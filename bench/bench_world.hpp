@@ -11,7 +11,7 @@ namespace bench {
 // What a benchmark varies on top of bounce.json (springs, dampers, pressure, gravity, paper floor).
 struct BenchCase {
   int level = 3;                                     // icosphere subdivision level (1..6)
-  scene::Integrator integrator = scene::Integrator::Symplectic;
+  sim::IntegratorKind integrator = sim::IntegratorKind::Symplectic;
   bool pressure = true;                              // false: nRT = 0 (no volume or pressure pass)
   bool damping = true;                               // false: c = 0 (no damper term)
   bool floor = true;                                 // false: no floor (no contact pass)

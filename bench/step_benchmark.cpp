@@ -13,9 +13,9 @@ namespace {
 
 using bench::BenchCase;
 
-constexpr std::array kIntegrators = {scene::Integrator::Euler,  scene::Integrator::Symplectic,
-                                     scene::Integrator::Verlet, scene::Integrator::Rk4,
-                                     scene::Integrator::Rk45,   scene::Integrator::Implicit};
+constexpr std::array kIntegrators = {sim::IntegratorKind::Euler,  sim::IntegratorKind::Symplectic,
+                                     sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4,
+                                     sim::IntegratorKind::Rk45,   sim::IntegratorKind::Implicit};
 
 // Steps the world of `c` once per iteration; a diverged world (not expected at bench_dt_s) is rebuilt
 // and counted in the "rebuilds" counter, so a number is never silently taken from a blown-up state.
@@ -45,7 +45,7 @@ void BM_Step(benchmark::State& st) {
   BenchCase c;
   c.integrator = kIntegrators.at(static_cast<std::size_t>(st.range(0)));
   c.level = static_cast<int>(st.range(1));
-  st.SetLabel(scene::to_string(c.integrator));
+  st.SetLabel(sim::to_string(c.integrator));
   run_steps(st, c);
 }
 

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     const auto rows = bench::measure_limits(bench::limit_bodies(), limit_steps);
     for (const auto& r : rows) {
       std::printf("%-15s %-11s %-5s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
-                  r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free", scene::to_string(r.integrator).c_str(), r.estimate_dt_s,
+                  r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free", sim::to_string(r.integrator).c_str(), r.estimate_dt_s,
                   r.measured_dt_s, r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     }
     bench::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
@@ -44,11 +44,11 @@ int main(int argc, char** argv) {
     if (r.guarded_within_estimate()) {
       ++below_estimate_guarded;
       std::fprintf(stderr, "GUARDED AT OR BELOW THE ESTIMATE %s %s %s dt=%.3g (estimate %.3g): %s\n", c.group.c_str(),
-                   c.shape.c_str(), scene::to_string(c.integrator).c_str(), r.dt_s, r.estimate_dt_s, r.message.c_str());
+                   c.shape.c_str(), sim::to_string(c.integrator).c_str(), r.dt_s, r.estimate_dt_s, r.message.c_str());
     }
     if (r.outcome == bench::Outcome::Failed) {
       std::fprintf(stderr, "FAILED %s %s %s dt=%.3g: %s\n", c.group.c_str(), c.shape.c_str(),
-                   scene::to_string(c.integrator).c_str(), r.dt_s, r.message.c_str());
+                   sim::to_string(c.integrator).c_str(), r.dt_s, r.message.c_str());
     }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

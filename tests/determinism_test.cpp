@@ -48,7 +48,7 @@ TEST(Determinism, StateHashMatchesCheckedInValue) {
 }
 
 // A body of 10242 vertices (icosphere:5), above World::kParallelMinVertices: its force passes run on two threads.
-sim::World large_body_world(int threads, scene::Integrator integrator) {
+sim::World large_body_world(int threads, sim::IntegratorKind integrator) {
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
   s.bodies.at(0).mesh = "icosphere:5";
   s.solver.threads = threads;
@@ -59,13 +59,13 @@ sim::World large_body_world(int threads, scene::Integrator integrator) {
 
 TEST(Determinism, LargeBodyStateDoesNotDependOnThreadCount) {
   static_assert(sim::World::kParallelMinVertices <= 10242);
-  for (scene::Integrator integrator : {scene::Integrator::Symplectic, scene::Integrator::Rk4}) {
+  for (sim::IntegratorKind integrator : {sim::IntegratorKind::Symplectic, sim::IntegratorKind::Rk4}) {
     sim::World one = large_body_world(1, integrator), two = large_body_world(2, integrator);
     EXPECT_EQ(one.force_threads(), 1);
     EXPECT_EQ(two.force_threads(), 2);
     testing_support::run_steps(one, 300, 2e-5);
     testing_support::run_steps(two, 300, 2e-5);
-    EXPECT_EQ(state_hash(one.state()), state_hash(two.state())) << scene::to_string(integrator);
+    EXPECT_EQ(state_hash(one.state()), state_hash(two.state())) << sim::to_string(integrator);
   }
 }
 

@@ -23,7 +23,7 @@ sim::World two_particle_spring(double m, double k, double rest_length, double am
   topology.mass_kg = {m, m};
   topology.inverse_mass = {1 / m, 1 / m};
   topology.total_mass_kg = 2 * m;
-  sim::World world(Vec3::Zero(), std::nullopt, scene::Integrator::Euler);
+  sim::World world(Vec3::Zero(), std::nullopt, sim::IntegratorKind::Euler);
   world.add_body(topology, sim::Params{k, 0.0, 0.0}, {Vec3::Zero(), Vec3(rest_length + amplitude, 0, 0)}, Vec3::Zero());
   return world;
 }

@@ -20,20 +20,16 @@ struct AccuracyCommand {
   bench::AccuracyOptions options;
 };
 
-std::vector<scene::Integrator> parse_integrators(const std::string& option, const std::vector<std::string>& names) {
-  std::vector<scene::Integrator> chosen;
+std::vector<sim::IntegratorKind> parse_integrators(const std::string& option, const std::vector<std::string>& names) {
+  std::vector<sim::IntegratorKind> chosen;
   for (const std::string& name : names) {
-    bool known = false;
-    for (scene::Integrator i : bench::AccuracyOptions{}.integrators) {
-      if (scene::to_string(i) == name) {
-        chosen.push_back(i);
-        known = true;
-      }
+    const std::optional<sim::IntegratorKind> integrator = sim::integrator_named(name);
+    if (!integrator) {
+      std::string expected;
+      for (const sim::IntegratorInfo& known : sim::kIntegrators) expected += (expected.empty() ? "" : ", ") + std::string(known.name);
+      throw softbody::InputError(option + ": unknown integrator '" + name + "' (expected one of " + expected + ")");
     }
-    if (!known) {
-      throw softbody::InputError(option + ": unknown integrator '" + name +
-                                 "' (expected euler, symplectic, verlet, rk4, rk45 or implicit)");
-    }
+    chosen.push_back(*integrator);
   }
   return chosen;
 }

@@ -25,8 +25,8 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
               b.omega_max(), std::sqrt(b.omega2_springs), std::sqrt(b.omega2_gas), b.damping_rate);
 }
 
-void print_integrator(scene::Integrator integrator, double dt, double frame_interval_s) {
-  const std::string text = scene::to_string(integrator);
+void print_integrator(sim::IntegratorKind integrator, double dt, double frame_interval_s) {
+  const std::string text = sim::to_string(integrator);
   const char* name = text.c_str();
   if (dt == 0.0) {
     std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
@@ -52,11 +52,10 @@ int run_info(const SceneOptions& options) {
                 estimate.travel_dt_s);
   }
   std::printf("  %-10s  %-12s %-12s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt");
-  for (int i = 0; i < 6; ++i) {
-    const auto integrator = static_cast<scene::Integrator>(i);
-    print_integrator(integrator, estimate.stable_dt(integrator), run.clock.frame_interval_s);
+  for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
+    print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s);
   }
-  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", scene::to_string(run.scene.solver.integrator).c_str(),
+  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", sim::to_string(run.scene.solver.integrator).c_str(),
               run.clock.dt_s, run.clock.steps_per_frame);
   return 0;
 }

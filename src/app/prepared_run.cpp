@@ -21,26 +21,26 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
     world.set_trial_dt(scene.solver.dt_s);
     char note[200];
     std::snprintf(note, sizeof note, "solver.dt = auto: %.4g s (%.2f x the estimated stable dt of %s, %.4g s)",
-                  scene.solver.dt_s, sim::kAutoDtSafety, scene::to_string(scene.solver.integrator).c_str(),
+                  scene.solver.dt_s, sim::kAutoDtSafety, sim::to_string(scene.solver.integrator).c_str(),
                   estimate.stable_dt(scene.solver.integrator));
     notes.insert(notes.begin(), note);
   }
   const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
-  const bool adaptive = scene.solver.integrator == scene::Integrator::Rk45;  // chooses its own steps
+  const bool adaptive = scene.solver.integrator == sim::IntegratorKind::Rk45;  // chooses its own steps
   if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto) notes.push_back(clock.dt_note);
   for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }
 
 void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written) {
-  const scene::Solver& solver = run.scene.solver;
+  const sim::Solver& solver = run.scene.solver;
   char steps[160];
-  if (solver.integrator == scene::Integrator::Rk45) {
+  if (solver.integrator == sim::IntegratorKind::Rk45) {
     std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,
                   stats.rejected_steps, solver.tolerance);
   } else {
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (%s)", stats.steps, run.clock.dt_s,
-                  scene::to_string(solver.integrator).c_str());
+                  sim::to_string(solver.integrator).c_str());
   }
   std::printf("%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(), stats.frames,
               steps, run.world.state().x.size(), stats.wall_s,

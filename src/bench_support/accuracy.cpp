@@ -14,6 +14,12 @@
 #include "sim/world.hpp"
 
 namespace bench {
+
+std::vector<sim::IntegratorKind> every_integrator() {
+  std::vector<sim::IntegratorKind> all;
+  for (const sim::IntegratorInfo& integrator : sim::kIntegrators) all.push_back(integrator.kind);
+  return all;
+}
 namespace {
 
 using softbody::Vec3;
@@ -46,7 +52,7 @@ struct Trajectory {
   bool diverged = false;
 };
 
-scene::Scene with_solver(scene::Scene scene, scene::Integrator integrator, double dt_s, double tolerance) {
+scene::Scene with_solver(scene::Scene scene, sim::IntegratorKind integrator, double dt_s, double tolerance) {
   scene.solver.integrator = integrator;
   scene.solver.dt_s = dt_s;
   scene.solver.tolerance = tolerance;
@@ -78,7 +84,7 @@ Trajectory simulate(const scene::Scene& scene, double duration_s) {
 // RMS of |a − b| over frames [first_frame, last] and every vertex.
 // `integrator` at fixed steps (World::step, also for rk45: its fifth-order formula without error control,
 // not the adaptive advance_to), frames recorded like simulate() does.
-Trajectory fixed_step_run(const scene::Scene& scene, scene::Integrator integrator, double dt_s, double duration_s) {
+Trajectory fixed_step_run(const scene::Scene& scene, sim::IntegratorKind integrator, double dt_s, double duration_s) {
   const frames::FrameClock clock = frames::plan_frames(duration_s, scene.fps, dt_s);
   std::vector<std::string> notes;
   sim::World world = sim::build_world(with_solver(scene, integrator, dt_s, 1.0), notes);
@@ -143,8 +149,8 @@ class Benchmark {
   AccuracyResult run() {
     const auto start = std::chrono::steady_clock::now();
     compute_reference();
-    for (scene::Integrator integrator : options_.integrators) {
-      if (integrator == scene::Integrator::Rk45) {
+    for (sim::IntegratorKind integrator : options_.integrators) {
+      if (integrator == sim::IntegratorKind::Rk45) {
         sweep_tolerances();
       } else {
         sweep_steps(integrator);
@@ -163,7 +169,7 @@ class Benchmark {
   void compute_reference() {
     const double dt = options_.reference_dt_s > 0.0 ? options_.reference_dt_s : scene_.solver.dt_s / 10.0;
     const double duration = result_.duration_s;
-    const scene::Integrator method = options_.reference_integrator;
+    const sim::IntegratorKind method = options_.reference_integrator;
     const Trajectory fine = fixed_step_run(scene_, method, dt, duration);
     const Trajectory check = fixed_step_run(scene_, method, 2.0 * dt, duration);
     if (fine.diverged || check.diverged) {
@@ -174,8 +180,8 @@ class Benchmark {
     vertices_ = fine.positions.size() / static_cast<std::size_t>(frame_count() + 1);
     result_.vertices = vertices_;
     result_.body_size_m = body_size({fine.positions.begin(), fine.positions.begin() + static_cast<long>(vertices_)});
-    result_.reference.method = method == scene::Integrator::Rk45 ? "rk45 fixed step (5th order)"
-                                                                 : scene::to_string(method) + " fixed step";
+    result_.reference.method = method == sim::IntegratorKind::Rk45 ? "rk45 fixed step (5th order)"
+                                                                 : sim::to_string(method) + " fixed step";
     result_.reference.dt_s = fine.dt_s;
     result_.reference.uncertainty_m = rms_distance(fine.positions, check.positions, vertices_, 1);
     result_.reference.wall_s = fine.step_wall_s + check.step_wall_s;
@@ -190,7 +196,7 @@ class Benchmark {
     return frames::plan_frames(result_.duration_s, scene_.fps, scene_.solver.dt_s).frame_count;
   }
 
-  AccuracyRun measure(scene::Integrator integrator, double dt, double tolerance) {
+  AccuracyRun measure(sim::IntegratorKind integrator, double dt, double tolerance) {
     const Trajectory t = timed_run(with_solver(scene_, integrator, dt, tolerance), result_.duration_s);
     AccuracyRun run;
     run.integrator = integrator;
@@ -210,7 +216,7 @@ class Benchmark {
     }
     char line[200];
     std::snprintf(line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s",
-                  scene::to_string(integrator).c_str(), run.dt_s,
+                  sim::to_string(integrator).c_str(), run.dt_s,
                   tolerance > 0.0 ? (" (tol " + std::to_string(tolerance) + ")").c_str() : "",
                   to_string(run.status).c_str(), run.rms_error_m, run.final_error_m, run.steps, run.wall_s);
     say(line);
@@ -221,7 +227,7 @@ class Benchmark {
   // Below floor_factor × the reference's uncertainty a run measures the reference: stop refining.
   static bool at_reference_floor(const AccuracyRun& run) { return run.status == RunStatus::AtReference; }
 
-  void sweep_steps(scene::Integrator integrator) {
+  void sweep_steps(sim::IntegratorKind integrator) {
     double dt = options_.coarsest_factor * scene_.solver.dt_s;
     for (int k = 0; k < options_.max_runs; ++k, dt /= 2.0) {
       const AccuracyRun run = measure(integrator, dt, 0.0);
@@ -232,7 +238,7 @@ class Benchmark {
   void sweep_tolerances() {
     double tolerance = options_.rk45_loosest_tolerance;
     for (int k = 0; k < options_.max_runs; ++k, tolerance /= 10.0) {
-      const AccuracyRun run = measure(scene::Integrator::Rk45, scene_.solver.dt_s, tolerance);
+      const AccuracyRun run = measure(sim::IntegratorKind::Rk45, scene_.solver.dt_s, tolerance);
       if (run.wall_s > options_.run_budget_s || at_reference_floor(run)) break;
     }
   }

@@ -11,13 +11,16 @@
 
 namespace bench {
 
+// Every integrator of sim::kIntegrators, in its order.
+std::vector<sim::IntegratorKind> every_integrator();
+
 struct AccuracyOptions {
   double duration_s = 0.0;          // simulated span; 0: the scene's duration
   double reference_dt_s = 0.0;      // reference step; 0: solver.dt / 10
   // The reference's method, at fixed steps: rk45 means Dormand–Prince's 5th-order formula without error
   // control. With contact events every method is first order at best, so a cheaper method at a finer
   // step can make the better reference there (docs/integrators.md).
-  scene::Integrator reference_integrator = scene::Integrator::Rk45;
+  sim::IntegratorKind reference_integrator = sim::IntegratorKind::Rk45;
   double coarsest_factor = 32.0;    // fixed-step sweeps start at this × solver.dt, then halve
   int max_runs = 12;                // per integrator
   double run_budget_s = 3.0;        // stop refining an integrator once one run takes longer than this
@@ -26,9 +29,7 @@ struct AccuracyOptions {
   // status at_reference, not plotted, and the sweep stops. 100 on smooth scenes; lower it where no
   // converged reference can be had (contact), to see the curves at all (the summary then says so).
   double floor_factor = 100.0;
-  std::vector<scene::Integrator> integrators = {scene::Integrator::Euler,  scene::Integrator::Symplectic,
-                                                scene::Integrator::Verlet, scene::Integrator::Rk4,
-                                                scene::Integrator::Rk45,   scene::Integrator::Implicit};
+  std::vector<sim::IntegratorKind> integrators = every_integrator();  // the methods compared, in this order
 };
 
 // Status of one run: ok; diverged (a non-finite state, or rk45's step underflowed); blown_up (finite, but
@@ -38,7 +39,7 @@ enum class RunStatus { Ok, Diverged, BlownUp, AtReference };
 std::string to_string(RunStatus status);
 
 struct AccuracyRun {
-  scene::Integrator integrator = scene::Integrator::Euler;
+  sim::IntegratorKind integrator = sim::IntegratorKind::Euler;
   double dt_s = 0.0;          // the step used (frame-aligned); rk45: the mean accepted step
   double tolerance = 0.0;     // rk45 only, else 0
   long long steps = 0;        // accepted steps

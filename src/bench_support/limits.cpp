@@ -18,14 +18,14 @@ std::vector<LimitBody> limit_bodies() {
           {"fine ball", "icosphere:4", 3000.0, 0.5, 30.0}};
 }
 
-sim::World limit_world(const LimitBody& body, scene::Integrator integrator, bool floor) {
+sim::World limit_world(const LimitBody& body, sim::IntegratorKind integrator, bool floor) {
   const mesh::TriMesh m = mesh::generate(body.mesh);
   double lowest = 0.0;
   for (const sim::Vec3& p : m.vertices) lowest = std::min(lowest, p.y());
   const double lift = floor ? 0.05 - lowest : 3.0;  // m
   std::vector<sim::Vec3> x0;
   for (const sim::Vec3& p : m.vertices) x0.push_back(p + sim::Vec3(0.0, lift, 0.0));
-  sim::World world(sim::Vec3(0.0, -9.81, 0.0), floor ? std::optional<scene::Floor>(scene::Floor{}) : std::nullopt,
+  sim::World world(sim::Vec3(0.0, -9.81, 0.0), floor ? std::optional<sim::Floor>(sim::Floor{}) : std::nullopt,
                    integrator);
   world.add_body(sim::build_topology(x0, m.triangles, 1.0),
                  {body.stiffness_N_per_m, body.damping_N_s_per_m, body.pressure_J}, x0, sim::Vec3::Zero());
@@ -37,8 +37,8 @@ std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int s
   std::vector<LimitRow> rows;
   for (const LimitBody& body : bodies) {
     for (bool floor : {false, true}) {
-      for (scene::Integrator integrator : {scene::Integrator::Euler, scene::Integrator::Symplectic,
-                                           scene::Integrator::Verlet, scene::Integrator::Rk4, scene::Integrator::Rk45}) {
+      for (sim::IntegratorKind integrator : {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
+                                           sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4, sim::IntegratorKind::Rk45}) {
         const double estimate = sim::estimate_stability(limit_world(body, integrator, floor)).stable_dt(integrator);
         LimitRow row{body, integrator, floor, estimate, 0.0, 0.0};
         if (estimate > 0.0) {
@@ -62,7 +62,7 @@ void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::
     char line[400];
     std::snprintf(line, sizeof line, "%s,%s,%g,%g,%g,%s,%s,%.4g,%.4g,%.4g,%.3f\n", r.body.name.c_str(),
                   r.body.mesh.c_str(), r.body.stiffness_N_per_m, r.body.damping_N_s_per_m, r.body.pressure_J,
-                  r.floor ? "paper" : "none", scene::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
+                  r.floor ? "paper" : "none", sim::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
                   r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     out << line;
   }

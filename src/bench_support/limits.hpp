@@ -18,7 +18,7 @@ struct LimitBody {
 
 struct LimitRow {
   LimitBody body;
-  scene::Integrator integrator;
+  sim::IntegratorKind integrator;
   bool floor;             // resting on the paper floor (else free flight)
   double estimate_dt_s;   // sim/stability.hpp
   double measured_dt_s;   // largest stable dt found by bisection (3 %)
@@ -31,7 +31,7 @@ std::vector<LimitBody> limit_bodies();
 
 // A world of `body` alone, gravity on, every vertex shaken by 0.5 m/s (rk45: fixed steps): in free flight,
 // or (`floor`) 5 cm above the paper floor, so that it lands and rests on it within the trial.
-sim::World limit_world(const LimitBody& body, scene::Integrator integrator, bool floor = false);
+sim::World limit_world(const LimitBody& body, sim::IntegratorKind integrator, bool floor = false);
 
 // Measures every explicit integrator (implicit has no spring limit), in free flight and on the floor, over
 // `steps` steps per trial.

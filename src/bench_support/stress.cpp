@@ -18,11 +18,9 @@
 namespace bench {
 namespace {
 
-using scene::Integrator;
+using sim::IntegratorKind;
 using softbody::Vec3;
 
-constexpr Integrator kIntegrators[] = {Integrator::Euler, Integrator::Symplectic, Integrator::Verlet,
-                                       Integrator::Rk4,   Integrator::Rk45,       Integrator::Implicit};
 constexpr double kMapDuration_s = 0.3, kGroupDuration_s = 0.5;
 constexpr long long kMostSteps = 3000;   // fixed-step runs: at most this many steps (tiny dt: a short run)
 constexpr long long kMostAdaptiveSteps = 20000;
@@ -54,11 +52,11 @@ sim::World build_case_world(const StressCase& c) {
   const double clearance = c.drop_speed_m_per_s > 0.0 ? 1.0 : 0.05;  // m between the floor and the body
   std::vector<Vec3> x0;
   for (const Vec3& p : m.vertices) x0.push_back(p + Vec3(0.0, clearance - lowest, 0.0));
-  scene::Solver solver;
+  sim::Solver solver;
   solver.integrator = c.integrator;
   solver.tolerance = 1e-4;
   solver.retry = c.retry;
-  sim::World world(Vec3(0.0, -9.81, 0.0), scene::Floor{}, solver);
+  sim::World world(Vec3(0.0, -9.81, 0.0), sim::Floor{}, solver);
   world.add_body(sim::build_topology(x0, m.triangles, 1.0), {c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J}, x0,
                  Vec3(0.0, -c.drop_speed_m_per_s, 0.0));
   shake(world, 0.3);
@@ -120,7 +118,8 @@ std::vector<StressCase> stress_cases(bool quick) {
                                               : std::vector<double>{1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
   std::vector<double> dts;
   for (int i = 0; i <= (quick ? 4 : 12); ++i) dts.push_back(1e-6 * std::pow(10.0, i * (quick ? 1.0 : 1.0 / 3.0)));
-  for (Integrator integrator : kIntegrators) {
+  for (const sim::IntegratorInfo& listed : sim::kIntegrators) {
+    const IntegratorKind integrator = listed.kind;
     for (double damping : quick ? std::vector<double>{0.5} : std::vector<double>{0.5, 0.0}) {
       for (double k : stiffness) {
         for (double dt : dts) {
@@ -145,7 +144,7 @@ std::vector<StressCase> stress_cases(bool quick) {
       for (const char* shape : {"flattened", "elongated", "tiny-triangles", "cube:3", "torus:16,8"}) {
         add({"odd", shape});
       }
-      if (integrator != Integrator::Rk45 && integrator != Integrator::Implicit) {
+      if (integrator != IntegratorKind::Rk45 && integrator != IntegratorKind::Implicit) {
         StressCase retry{"retry", "icosphere:2", integrator, 3000.0, 0.5, 30.0, 20.0, true};
         add(retry);
       }
@@ -198,7 +197,7 @@ void write_stress_csv(const std::vector<StressResult>& results, const std::files
     for (char& ch : message) if (ch == '"') ch = '\'';
     char row[512];
     std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,",
-                  c.group.c_str(), c.shape.c_str(), r.vertices, scene::to_string(c.integrator).c_str(),
+                  c.group.c_str(), c.shape.c_str(), r.vertices, sim::to_string(c.integrator).c_str(),
                   c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s,
                   r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.guarded_within_estimate() ? 1 : 0, r.steps, r.simulated_s,
                   r.wall_s, r.min_com_y_m);
@@ -215,8 +214,9 @@ std::vector<std::filesystem::path> write_stability_maps(const std::vector<Stress
   gp << "set terminal pngcairo size 720,540 font ',11'\nset logscale xy\nset format x '10^{%L}'\n"
         "set format y '10^{%L}'\nset xlabel 'spring stiffness k [N/m]'\nset ylabel 'time step dt [s]'\n"
         "set key outside bottom center horizontal\nset xrange [3:3e6]\nset yrange [5e-7:2e-2]\n";
-  for (Integrator integrator : kIntegrators) {
-    const std::string name = scene::to_string(integrator);
+  for (const sim::IntegratorInfo& listed : sim::kIntegrators) {
+    const IntegratorKind integrator = listed.kind;
+    const std::string name = sim::to_string(integrator);
     // One data file per series: gnuplot skips empty blocks of a multi-block file and renumbers the rest.
     auto data = [&](const std::string& series) { return dir / ("stability_map_" + name + "_" + series + ".dat"); };
     for (Outcome o : {Outcome::Stable, Outcome::Guarded, Outcome::Failed}) {

@@ -14,7 +14,7 @@ namespace bench {
 struct StressCase {
   std::string group;        // "map" (dt × stiffness grid), "mesh", "pressure", "damping", "drop", "odd", "retry"
   std::string shape;        // a generator spec, or "flattened", "elongated", "tiny-triangles"
-  scene::Integrator integrator = scene::Integrator::Euler;
+  sim::IntegratorKind integrator = sim::IntegratorKind::Euler;
   double stiffness_N_per_m = 3000.0;
   double damping_N_s_per_m = 0.5;
   double pressure_J = 30.0;
@@ -43,7 +43,7 @@ struct StressResult {
   bool guarded_within_estimate() const {
     return outcome == Outcome::Guarded && !spec_adaptive() && dt_s <= estimate_dt_s;
   }
-  bool spec_adaptive() const { return spec.integrator == scene::Integrator::Rk45; }
+  bool spec_adaptive() const { return spec.integrator == sim::IntegratorKind::Rk45; }
 };
 
 // The sweep: the full one (≥ 1000 runs) or a quick subset for ctest's `stress` label.

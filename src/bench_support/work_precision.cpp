@@ -27,7 +27,7 @@ struct Curve {
   std::vector<double> log_time, log_error;
 };
 
-Curve curve_of(const AccuracyResult& result, scene::Integrator integrator) {
+Curve curve_of(const AccuracyResult& result, sim::IntegratorKind integrator) {
   std::vector<std::pair<double, double>> points;
   for (const AccuracyRun& run : result.runs) {
     if (run.integrator != integrator || run.status != RunStatus::Ok || run.wall_s <= 0.0 || run.rms_error_m <= 0.0) {
@@ -55,8 +55,8 @@ double error_at(const Curve& curve, double t) {
   return (1.0 - w) * curve.log_error[i - 1] + w * curve.log_error[i];
 }
 
-std::vector<scene::Integrator> integrators_in(const AccuracyResult& result) {
-  std::vector<scene::Integrator> seen;
+std::vector<sim::IntegratorKind> integrators_in(const AccuracyResult& result) {
+  std::vector<sim::IntegratorKind> seen;
   for (const AccuracyRun& run : result.runs) {
     if (std::find(seen.begin(), seen.end(), run.integrator) == seen.end()) seen.push_back(run.integrator);
   }
@@ -85,17 +85,17 @@ std::string gnuplot_script(const AccuracyResult& result, const fs::path& png) {
     if (run.status == RunStatus::Ok) smallest = std::min(smallest, run.rms_error_m);
   }
   gp << "set xrange [" << format("%.6g", std::max(smallest, 1e-16) / 3.0) << ":*]\n";
-  std::vector<scene::Integrator> plotted;
-  for (scene::Integrator integrator : integrators_in(result)) {
+  std::vector<sim::IntegratorKind> plotted;
+  for (sim::IntegratorKind integrator : integrators_in(result)) {
     if (!curve_of(result, integrator).log_time.empty()) plotted.push_back(integrator);
   }
   gp << "plot ";
   for (std::size_t i = 0; i < plotted.size(); ++i) {
     gp << (i ? ", " : "") << "'-' using 1:2 with linespoints lw 2 pt " << (i + 4) << " title '"
-       << scene::to_string(plotted[i]) << "'";
+       << sim::to_string(plotted[i]) << "'";
   }
   gp << "\n";
-  for (scene::Integrator integrator : plotted) {
+  for (sim::IntegratorKind integrator : plotted) {
     for (const AccuracyRun& run : result.runs) {
       if (run.integrator != integrator || run.status != RunStatus::Ok) continue;
       gp << format("%.6e", run.rms_error_m) << " " << format("%.6e", run.wall_s) << "\n";
@@ -112,7 +112,7 @@ std::string accuracy_csv(const AccuracyResult& result) {
   csv << kAccuracyCsvHeader << "\n";
   for (const AccuracyRun& run : result.runs) {
     const bool finite = run.status != RunStatus::Diverged;
-    csv << scene::to_string(run.integrator) << "," << format("%.6e", run.dt_s) << ","
+    csv << sim::to_string(run.integrator) << "," << format("%.6e", run.dt_s) << ","
         << (run.tolerance > 0.0 ? format("%.1e", run.tolerance) : "") << "," << run.steps << ","
         << run.rejected_steps << "," << format("%.6f", run.wall_s) << ","
         << (finite ? format("%.6e", run.rms_error_m) : "") << "," << (finite ? format("%.6e", run.final_error_m) : "")
@@ -121,10 +121,10 @@ std::string accuracy_csv(const AccuracyResult& result) {
   return csv.str();
 }
 
-std::vector<EqualTimeRatio> equal_time_ratios(const AccuracyResult& result, scene::Integrator baseline) {
+std::vector<EqualTimeRatio> equal_time_ratios(const AccuracyResult& result, sim::IntegratorKind baseline) {
   const Curve base = curve_of(result, baseline);
   std::vector<EqualTimeRatio> ratios;
-  for (scene::Integrator method : integrators_in(result)) {
+  for (sim::IntegratorKind method : integrators_in(result)) {
     if (method == baseline) continue;
     const Curve other = curve_of(result, method);
     EqualTimeRatio ratio;
@@ -180,7 +180,7 @@ std::string accuracy_summary(const AccuracyResult& result) {
         << (smallest < 100.0 * result.reference.uncertainty_m ? "; NOT converged enough: below 100x" : "") << ")";
   }
   out << "\n";
-  for (scene::Integrator integrator : integrators_in(result)) {
+  for (sim::IntegratorKind integrator : integrators_in(result)) {
     int ok = 0, failed = 0;
     const AccuracyRun* best = nullptr;
     for (const AccuracyRun& run : result.runs) {
@@ -192,7 +192,7 @@ std::string accuracy_summary(const AccuracyResult& result) {
       ++ok;
       if (best == nullptr || run.rms_error_m < best->rms_error_m) best = &run;
     }
-    out << "  " << scene::to_string(integrator) << ": " << ok << " runs ok, " << failed
+    out << "  " << sim::to_string(integrator) << ": " << ok << " runs ok, " << failed
         << " diverged, blown up or at the reference's floor";
     if (best != nullptr) {
       out << "; smallest error " << format("%.2e", best->rms_error_m) << " m in " << format("%.3f", best->wall_s)
@@ -201,8 +201,8 @@ std::string accuracy_summary(const AccuracyResult& result) {
     out << "\n";
   }
   out << "error of euler / error of method at equal wall time (log-log interpolation):\n";
-  for (const EqualTimeRatio& r : equal_time_ratios(result, scene::Integrator::Euler)) {
-    out << "  " << scene::to_string(r.method) << ": ";
+  for (const EqualTimeRatio& r : equal_time_ratios(result, sim::IntegratorKind::Euler)) {
+    out << "  " << sim::to_string(r.method) << ": ";
     if (r.samples == 0) {
       out << "no shared time range with euler\n";
       continue;

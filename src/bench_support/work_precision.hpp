@@ -19,14 +19,14 @@ std::string accuracy_csv(const AccuracyResult& result);
 // Error of `method` against `baseline` at equal wall time: both work-precision curves interpolated
 // linearly in log(time)–log(error), compared at every run time inside both curves' time ranges.
 struct EqualTimeRatio {
-  scene::Integrator method = scene::Integrator::Euler;
+  sim::IntegratorKind method = sim::IntegratorKind::Euler;
   int samples = 0;             // 0: the two curves share no time range
   double time_lo_s = 0.0, time_hi_s = 0.0;  // the shared range
   double ratio_min = 0.0;      // baseline error / method error, smallest over the samples
   double ratio_max = 0.0;
   double ratio_geomean = 0.0;
 };
-std::vector<EqualTimeRatio> equal_time_ratios(const AccuracyResult& result, scene::Integrator baseline);
+std::vector<EqualTimeRatio> equal_time_ratios(const AccuracyResult& result, sim::IntegratorKind baseline);
 
 // A human summary: reference check, every integrator's best error, the equal-time ratios against euler.
 std::string accuracy_summary(const AccuracyResult& result);

@@ -8,51 +8,11 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "sim/settings.hpp"
 
 namespace scene {
 
 using softbody::Vec3;
-
-// Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in docs/integrators.md.
-enum class Integrator {
-  Euler,       // forward Euler (Matyka & Ollila 2003, Eq. 11): first order
-  Symplectic,  // semi-implicit Euler: v from the force, then x from the new v; first order, symplectic
-  Verlet,      // velocity Verlet: second order, one force evaluation per step
-  Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
-  Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
-  Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
-};
-
-// How vertices below the floor are handled.
-enum class ContactModel {
-  Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
-  Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
-};
-
-struct Solver {
-  Integrator integrator = Integrator::Euler;
-  double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
-                       // (rk45: only the first trial step; it then chooses its own)
-  bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/stability.hpp)
-  bool retry = false;    // a step the divergence guard rejects is retried as two half steps (up to 1/1024)
-  double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
-                            // and velocities [m/s]
-  int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
-                    // on it (sim::World::kParallelMinVertices)
-};
-
-struct Floor {
-  double height_m = 0.0;  // the plane y = height_m
-  ContactModel contact = ContactModel::Paper;
-  double restitution = 0.5;  // friction model: normal speed kept after an impact (0 inelastic .. 1 elastic)
-  double friction = 0.5;     // friction model: Coulomb coefficient μ (static = sliding)
-};
-
-// Contact between bodies (vertices of one against the triangles of another), when there are several.
-struct Collisions {
-  double restitution = 0.3;  // normal speed kept after an impact
-  double friction = 0.5;     // Coulomb μ
-};
 
 // A pattern painted on a body in its own (initial-shape) coordinates, so that its rotation shows.
 enum class Pattern { None, Checker, Stripes };
@@ -117,18 +77,15 @@ struct Scene {
   std::string name = "scene";
   double duration_s = 3.0;             // simulated seconds
   int fps = 30;                        // frames per simulated second
-  Solver solver;
+  sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
-  std::optional<Floor> floor;          // no floor when absent
+  std::optional<sim::Floor> floor;     // no floor when absent
   std::vector<Body> bodies;
-  Collisions collisions;
+  sim::BodyContact collisions;         // between bodies, when there are several
   RenderSettings render;
   Camera camera;
   Light light;
   Output output;
 };
-
-std::string to_string(Integrator integrator);
-std::string to_string(ContactModel contact);
 
 }  // namespace scene

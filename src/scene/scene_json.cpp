@@ -143,17 +143,15 @@ class ObjectReader {
   std::set<std::string> known_;
 };
 
-Solver read_solver(ObjectReader& top) {
-  Solver solver;
+sim::Solver read_solver(ObjectReader& top) {
+  sim::Solver solver;
   if (!top.has("solver")) return solver;
   ObjectReader r(top.at("solver"), "solver", top.file());
-  solver.integrator = r.choice<Integrator>("integrator", solver.integrator,
-                                           {{"euler", Integrator::Euler},
-                                            {"symplectic", Integrator::Symplectic},
-                                            {"verlet", Integrator::Verlet},
-                                            {"rk4", Integrator::Rk4},
-                                            {"rk45", Integrator::Rk45},
-                                            {"implicit", Integrator::Implicit}});
+  std::vector<std::pair<std::string, sim::IntegratorKind>> integrators;
+  for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
+    integrators.emplace_back(integrator.name, integrator.kind);
+  }
+  solver.integrator = r.choice<sim::IntegratorKind>("integrator", solver.integrator, integrators);
   if (r.has("dt") && r.at("dt").is_string()) {
     if (r.at("dt").get<std::string>() != "auto") r.fail(r.child("dt"), "expected a number > 0 or \"auto\"", &r.at("dt"));
     solver.dt_auto = true;
@@ -167,15 +165,15 @@ Solver read_solver(ObjectReader& top) {
   return solver;
 }
 
-std::optional<Floor> read_floor(ObjectReader& top) {
+std::optional<sim::Floor> read_floor(ObjectReader& top) {
   if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
   ObjectReader r(top.at("floor"), "floor", top.file());
-  Floor floor;
+  sim::Floor floor;
   floor.height_m = r.number("height", floor.height_m);
-  floor.contact = r.choice<ContactModel>("contact", floor.contact,
-                                         {{"paper", ContactModel::Paper}, {"friction", ContactModel::Friction}});
-  floor.restitution = r.number("restitution", floor.restitution, kUnitInterval);
-  floor.friction = r.number("friction", floor.friction, kNonNegative);
+  floor.contact = r.choice<sim::FloorContact>(
+      "contact", floor.contact, {{"paper", sim::FloorContact::Paper}, {"friction", sim::FloorContact::Friction}});
+  floor.material.restitution = r.number("restitution", floor.material.restitution, kUnitInterval);
+  floor.material.friction = r.number("friction", floor.material.friction, kNonNegative);
   r.reject_unknown();
   return floor;
 }
@@ -273,12 +271,12 @@ std::vector<Body> read_bodies(ObjectReader& top) {
   return bodies;
 }
 
-Collisions read_collisions(ObjectReader& top) {
-  Collisions collisions;
+sim::BodyContact read_collisions(ObjectReader& top) {
+  sim::BodyContact collisions;
   if (!top.has("collisions")) return collisions;
   ObjectReader r(top.at("collisions"), "collisions", top.file());
-  collisions.restitution = r.number("restitution", collisions.restitution, kUnitInterval);
-  collisions.friction = r.number("friction", collisions.friction, kNonNegative);
+  collisions.material.restitution = r.number("restitution", collisions.material.restitution, kUnitInterval);
+  collisions.material.friction = r.number("friction", collisions.material.friction, kNonNegative);
   r.reject_unknown();
   return collisions;
 }
@@ -382,26 +380,6 @@ Scene load_scene(const fs::path& file, const std::vector<std::string>& overrides
   json document = parse_scene_text(text.str(), file);
   for (const std::string& assignment : overrides) apply_override(document, assignment);
   return scene_from_json(document, file);
-}
-
-std::string to_string(Integrator integrator) {
-  switch (integrator) {
-    case Integrator::Euler: return "euler";
-    case Integrator::Symplectic: return "symplectic";
-    case Integrator::Verlet: return "verlet";
-    case Integrator::Rk4: return "rk4";
-    case Integrator::Rk45: return "rk45";
-    case Integrator::Implicit: return "implicit";
-  }
-  return "?";
-}
-
-std::string to_string(ContactModel contact) {
-  switch (contact) {
-    case ContactModel::Paper: return "paper";
-    case ContactModel::Friction: return "friction";
-  }
-  return "?";
 }
 
 }  // namespace scene

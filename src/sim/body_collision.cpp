@@ -6,6 +6,8 @@
 #include <array>
 #include <numbers>
 
+#include "sim/contact_response.hpp"
+
 namespace sim {
 namespace {
 
@@ -138,7 +140,7 @@ struct Contact {
 // (Coulomb) impulse, both split between the vertex and the triangle's corners by inverse mass and
 // barycentric weight. The vertex gets +J, the corners −w_k J, so momentum is conserved exactly.
 void apply_contact(const Contact& c, std::span<const double> inverse_mass, State& state,
-                   const BodyContactSettings& settings) {
+                   const ContactMaterial& material) {
   const double inv_p = inverse_mass[c.vertex];
   double denominator = inv_p;  // 1 / effective mass of the relative normal motion
   for (int k = 0; k < 3; ++k) denominator += c.weights[k] * c.weights[k] * inverse_mass[c.corners[k]];
@@ -150,14 +152,14 @@ void apply_contact(const Contact& c, std::span<const double> inverse_mass, State
   const Vec3 relative = state.v[c.vertex] - surface_velocity;
   const double normal_speed = relative.dot(c.normal);
   if (normal_speed >= 0.0) return;  // separating already
-  const double target = -normal_speed > settings.resting_speed_m_per_s ? -settings.restitution * normal_speed : 0.0;
+  const double target = separating_speed(normal_speed, material);
   const double normal_impulse = (target - normal_speed) / denominator;  // kg·m/s
   const Vec3 tangential = relative - normal_speed * c.normal;
   const double tangential_speed = tangential.norm();
   Vec3 impulse = normal_impulse * c.normal;
   if (tangential_speed > 0.0) {
     const double stopping_impulse = tangential_speed / denominator;
-    impulse -= std::min(settings.friction * normal_impulse, stopping_impulse) / tangential_speed * tangential;
+    impulse -= friction_impulse(material, normal_impulse, stopping_impulse) / tangential_speed * tangential;
   }
   state.v[c.vertex] += inv_p * impulse;
   for (int k = 0; k < 3; ++k) state.v[c.corners[k]] -= c.weights[k] * inverse_mass[c.corners[k]] * impulse;
@@ -171,7 +173,7 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
-                                                     const BodyContactSettings& settings) {
+                                                     const ContactMaterial& material) {
   const double edge = mean_edge_m_[surface_index_];
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
@@ -225,14 +227,14 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
                           best_point.weights, normal, thickness - height, 0.1 * search};
-    apply_contact(contact, inverse_mass, state, settings);
+    apply_contact(contact, inverse_mass, state, material);
     ++contacts;
   }
   return contacts;
 }
 
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-                          const BodyContactSettings& settings) {
+                          const ContactMaterial& material) {
   if (bodies.size() < 2) return 0;
   if (mean_edge_m_.size() != bodies.size()) {
     mean_edge_m_.clear();
@@ -255,7 +257,7 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
       surface_index_ = b;
-      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, settings);
+      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, material);
     }
   }
   return contacts;

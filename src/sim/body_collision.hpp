@@ -10,21 +10,16 @@
 #include <vector>
 
 #include "sim/body.hpp"
+#include "sim/settings.hpp"
 
 namespace sim {
-
-struct BodyContactSettings {
-  double restitution = 0.3;            // normal speed kept after an impact
-  double friction = 0.5;               // Coulomb μ
-  double resting_speed_m_per_s = 0.05; // slower approaches are resting contact: no bounce
-};
 
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
   // `inverse_mass`: per vertex of `state`, all bodies (the world's own array).
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-              const BodyContactSettings& settings);
+              const ContactMaterial& material);
 
  private:
   struct Box {
@@ -33,7 +28,7 @@ class BodyCollider {
 
   void build_grid(const Body& body, const State& state, const Box& region, double search, double cell_size);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
-                                         State& state, const BodyContactSettings& settings);
+                                         State& state, const ContactMaterial& material);
   static constexpr int kMaxCellIndex = (1 << 21) - 1;     // per axis, as the cell keys of the old sorted grid
   static constexpr std::int64_t kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
   Eigen::Vector3i cell_of(const Vec3& p) const;            // clamped to [0, kMaxCellIndex]

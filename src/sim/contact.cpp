@@ -1,37 +1,39 @@
 // Floor contact models.
 #include "sim/contact.hpp"
 
+#include "sim/contact_response.hpp"
+
 namespace sim {
 
-int resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>* reversed) {
+int resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>& reversed) {
   int below = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].y() >= height_m) continue;
     v[i] = -v[i];
     x[i].y() = height_m;
     ++below;
-    if (reversed) reversed->push_back(static_cast<int>(i));
+    reversed.push_back(static_cast<int>(i));
   }
   return below;
 }
 
-int resolve_floor_friction(const FrictionContact& contact, std::span<Vec3> x, std::span<Vec3> v) {
+int resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x, std::span<Vec3> v) {
   int below = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (x[i].y() >= contact.height_m) continue;
-    x[i].y() = contact.height_m;
+    if (x[i].y() >= height_m) continue;
+    x[i].y() = height_m;
     ++below;
     const double normal_speed = v[i].y();  // the floor's normal is +y
     if (normal_speed >= 0.0) continue;     // already leaving: no impulse
-    const double new_normal_speed = -normal_speed > contact.resting_speed_m_per_s ? -contact.restitution * normal_speed : 0.0;
+    const double new_normal_speed = separating_speed(normal_speed, material);
     const double normal_impulse = new_normal_speed - normal_speed;  // per unit mass, > 0
     Vec3 tangential(v[i].x(), 0.0, v[i].z());
     const double tangential_speed = tangential.norm();
-    const double friction_budget = contact.friction * normal_impulse;
-    if (tangential_speed <= friction_budget) {
+    const double friction = friction_impulse(material, normal_impulse, tangential_speed);
+    if (friction == tangential_speed) {
       tangential.setZero();  // static friction holds the vertex
     } else {
-      tangential *= 1.0 - friction_budget / tangential_speed;  // sliding friction
+      tangential *= 1.0 - friction / tangential_speed;  // sliding friction
     }
     v[i] = Vec3(tangential.x(), new_normal_speed, tangential.z());
   }

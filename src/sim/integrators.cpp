@@ -15,14 +15,14 @@ void Dynamics::first_order_step(State& state, double dt, FirstOrderUpdate update
   for (std::size_t i = 0; i < state.x.size(); ++i) apply_first_order_update(update, dt, scratch[i], state.x[i], state.v[i]);
 }
 
-std::unique_ptr<Integrator> make_integrator(scene::Integrator kind, double tolerance) {
+std::unique_ptr<Integrator> make_integrator(sim::IntegratorKind kind, double tolerance) {
   switch (kind) {
-    case scene::Integrator::Euler: return std::make_unique<ForwardEuler>();
-    case scene::Integrator::Symplectic: return std::make_unique<SymplecticEuler>();
-    case scene::Integrator::Verlet: return std::make_unique<VelocityVerlet>();
-    case scene::Integrator::Rk4: return std::make_unique<RungeKutta4>();
-    case scene::Integrator::Rk45: return std::make_unique<DormandPrince>(tolerance);
-    case scene::Integrator::Implicit: return std::make_unique<ImplicitEuler>();
+    case sim::IntegratorKind::Euler: return std::make_unique<ForwardEuler>();
+    case sim::IntegratorKind::Symplectic: return std::make_unique<SymplecticEuler>();
+    case sim::IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
+    case sim::IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
+    case sim::IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
+    case sim::IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
   }
   return nullptr;
 }

@@ -89,6 +89,6 @@ class AdaptiveIntegrator : public Integrator {
 };
 
 // The integrator a scene names; `tolerance` is used by rk45 only.
-std::unique_ptr<Integrator> make_integrator(scene::Integrator kind, double tolerance);
+std::unique_ptr<Integrator> make_integrator(sim::IntegratorKind kind, double tolerance);
 
 }  // namespace sim

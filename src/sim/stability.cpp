@@ -117,7 +117,7 @@ double gas_omega2(const Body& body, std::span<const Vec3> x) {
 }
 
 // The amplification matrix of one step of size h for the mode ẍ = −μ x − γ ẋ, state (x, v, cached a).
-Mat3 amplification(scene::Integrator integrator, double h, double mu, double gamma) {
+Mat3 amplification(IntegratorKind integrator, double h, double mu, double gamma) {
   Mat3 A = Mat3::Zero();  // first-order form y' = A y on (x, v)
   A(0, 1) = 1.0;
   A(1, 0) = -mu;
@@ -125,12 +125,12 @@ Mat3 amplification(scene::Integrator integrator, double h, double mu, double gam
   const Mat3 hA = h * A;
   Mat3 G = Mat3::Zero();
   switch (integrator) {
-    case scene::Integrator::Euler: G = Mat3::Identity() + hA; G(2, 2) = 0.0; break;
-    case scene::Integrator::Symplectic:
+    case IntegratorKind::Euler: G = Mat3::Identity() + hA; G(2, 2) = 0.0; break;
+    case IntegratorKind::Symplectic:
       G(1, 0) = -h * mu, G(1, 1) = 1.0 - h * gamma;             // v' = v + h a(x, v)
       G(0, 0) = 1.0 - h * h * mu, G(0, 1) = h * (1.0 - h * gamma);  // x' = x + h v'
       break;
-    case scene::Integrator::Verlet:
+    case IntegratorKind::Verlet:
       for (int col = 0; col < 3; ++col) {  // velocity_verlet.cpp applied to each basis state
         const Eigen::Vector3d y = Mat3::Identity().col(col);
         const double v_half = y[1] + 0.5 * h * y[2];
@@ -140,10 +140,10 @@ Mat3 amplification(scene::Integrator integrator, double h, double mu, double gam
         G.col(col) = Eigen::Vector3d(x_new, v_half + 0.5 * h * a_new, a_new);
       }
       break;
-    case scene::Integrator::Rk4:
-    case scene::Integrator::Rk45: {
+    case IntegratorKind::Rk4:
+    case IntegratorKind::Rk45: {
       // Taylor polynomial of exp(hA) to 4th order; DOPRI5's is to 5th plus (hA)⁶/600 (Hairer et al. IV.2).
-      const int order = integrator == scene::Integrator::Rk4 ? 4 : 5;
+      const int order = integrator == IntegratorKind::Rk4 ? 4 : 5;
       Mat3 term = Mat3::Identity();
       G = Mat3::Identity();
       for (int j = 1; j <= order; ++j) {
@@ -154,7 +154,7 @@ Mat3 amplification(scene::Integrator integrator, double h, double mu, double gam
       G(2, 2) = 0.0;
       break;
     }
-    case scene::Integrator::Implicit: G(0, 0) = G(1, 1) = 1.0; break;  // not used: see stable_dt
+    default: break;  // implicit: stable_dt() answers without an amplification matrix
   }
   return G;
 }
@@ -168,7 +168,7 @@ Mat3 balanced(const Mat3& G, double h) {
   return d.asDiagonal() * G * d.cwiseInverse().asDiagonal();
 }
 
-bool stable_at(scene::Integrator integrator, double h, double mu, double gamma) {
+bool stable_at(IntegratorKind integrator, double h, double mu, double gamma) {
   // ρ = 1 exactly for undamped modes of symplectic methods, and eigenvalues of the near-defective maps at
   // small h carry errors of about √ε: a mode that grows by less than 1 % in 10⁵ steps counts as stable.
   constexpr double kTolerance = 1e-7;
@@ -176,7 +176,7 @@ bool stable_at(scene::Integrator integrator, double h, double mu, double gamma) 
 }
 
 // Largest h for one mode: scan upwards geometrically from far below any limit, then bisect.
-double mode_limit(scene::Integrator integrator, double mu, double gamma) {
+double mode_limit(IntegratorKind integrator, double mu, double gamma) {
   const double omega = std::sqrt(mu);
   double stable = 0.0, h = 1e-6 / omega;  // below this the eigenvalues of G lose their accuracy
   while (stable_at(integrator, h, mu, gamma)) {
@@ -230,16 +230,16 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x) {
   return b;
 }
 
-double stable_dt(scene::Integrator integrator, const ModeBounds& bounds) {
+double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   const double mu_max = bounds.omega2_springs + bounds.omega2_gas;
-  if (integrator == scene::Integrator::Implicit) {
+  if (integrator == IntegratorKind::Implicit) {
     // Springs and dampers implicit (unconditionally stable); the explicit gas term as in symplectic Euler.
     return bounds.omega2_gas > 0.0 ? 2.0 / std::sqrt(bounds.omega2_gas) : StabilityEstimate::kUnlimited;
   }
   if (mu_max == 0.0 && bounds.damping_rate == 0.0) return StabilityEstimate::kUnlimited;  // free particles
   // Forward Euler without dampers: ρ² = 1 + h²ω² > 1 at every h (the tolerance above would hide it).
-  if (integrator == scene::Integrator::Euler && bounds.damping_rate == 0.0) return 0.0;
-  const double margin = integrator == scene::Integrator::Euler ? kSharpLimitMargin : 1.0;
+  if (integrator == IntegratorKind::Euler && bounds.damping_rate == 0.0) return 0.0;
+  const double margin = integrator == IntegratorKind::Euler ? kSharpLimitMargin : 1.0;
   // Modes from λ_max down to 1e-6 λ_max, with μ and γ both proportional to λ.
   double limit = StabilityEstimate::kUnlimited;
   constexpr int kSamples = 25;
@@ -275,13 +275,13 @@ StabilityEstimate estimate_stability(const World& world) {
   return estimate;
 }
 
-void scale_for_floor_contact(StabilityEstimate& estimate, scene::ContactModel contact) {
-  for (int i = 0; i < 6; ++i) {
-    if (static_cast<scene::Integrator>(i) != scene::Integrator::Implicit) estimate.stable_dt_s[i] *= kContactMargin;
+void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact) {
+  for (const IntegratorInfo& integrator : kIntegrators) {
+    if (integrator.explicit_springs) estimate.stable_dt_s[static_cast<int>(integrator.kind)] *= kContactMargin;
   }
-  if (contact != scene::ContactModel::Paper) return;
-  estimate.stable_dt_s[static_cast<int>(scene::Integrator::Symplectic)] *= kSymplecticProjectionFactor;
-  double& euler = estimate.stable_dt_s[static_cast<int>(scene::Integrator::Euler)];
+  if (contact != FloorContact::Paper) return;
+  estimate.stable_dt_s[static_cast<int>(IntegratorKind::Symplectic)] *= kSymplecticProjectionFactor;
+  double& euler = estimate.stable_dt_s[static_cast<int>(IntegratorKind::Euler)];
   for (const ModeBounds& b : estimate.bodies) {
     if (b.damping_rate == 0.0 || b.omega2_springs == 0.0) continue;  // no dampers: already 0 (unstable)
     const double c_over_k = b.damping_rate / b.omega2_springs;       // γ/ω² = cλ/(kλ) [s]
@@ -300,19 +300,20 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
     const ModeBounds bounds = mode_bounds(body, x.subspan(body.first_vertex, body.vertex_count));
     estimate.bodies.push_back(bounds);
     if (bounds.omega_max() > fastest) fastest = bounds.omega_max(), estimate.limiting_body = static_cast<int>(b);
-    for (int i = 0; i < 6; ++i) {
-      estimate.stable_dt_s[i] = std::min(estimate.stable_dt_s[i], stable_dt(static_cast<scene::Integrator>(i), bounds));
+    for (const IntegratorInfo& integrator : kIntegrators) {
+      double& limit = estimate.stable_dt_s[static_cast<int>(integrator.kind)];
+      limit = std::min(limit, stable_dt(integrator.kind, bounds));
     }
   }
   return estimate;
 }
 
-double auto_dt(const StabilityEstimate& estimate, scene::Integrator integrator, double frame_interval_s,
+double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file) {
   const double limit = estimate.stable_dt(integrator);
   if (limit == 0.0) {
     throw softbody::InputError(scene_file + ": solver.dt: \"auto\" found no stable dt for " +
-                               scene::to_string(integrator) +
+                               to_string(integrator) +
                                " (forward Euler needs dampers: give every body damping > 0, or choose "
                                "solver.integrator symplectic, verlet, rk4, rk45 or implicit)");
   }
@@ -320,7 +321,7 @@ double auto_dt(const StabilityEstimate& estimate, scene::Integrator integrator, 
   return std::min(kAutoDtSafety * limit, frame_interval_s);
 }
 
-std::string stable_dt_advice(const StabilityEstimate& estimate, scene::Integrator integrator) {
+std::string stable_dt_advice(const StabilityEstimate& estimate, IntegratorKind integrator) {
   auto words = [](double dt) {
     char text[64];
     if (dt == 0.0) return std::string("no stable dt (needs damping)");
@@ -329,9 +330,9 @@ std::string stable_dt_advice(const StabilityEstimate& estimate, scene::Integrato
     return std::string(text);
   };
   std::string advice = "estimated stable: " + words(estimate.stable_dt(integrator)) + " for " +
-                       scene::to_string(integrator);
-  if (integrator != scene::Integrator::Implicit) {
-    advice += ", " + words(estimate.stable_dt(scene::Integrator::Implicit)) + " for implicit";
+                       to_string(integrator);
+  if (integrator != IntegratorKind::Implicit) {
+    advice += ", " + words(estimate.stable_dt(IntegratorKind::Implicit)) + " for implicit";
   }
   return advice;
 }

@@ -56,10 +56,10 @@ struct BodyStats {
 struct StabilityEstimate {
   static constexpr double kUnlimited = std::numeric_limits<double>::infinity();
   std::vector<ModeBounds> bodies;                      // per body
-  std::array<double, 6> stable_dt_s{};                 // indexed by scene::Integrator; 0: unstable at every dt
+  std::array<double, kIntegrators.size()> stable_dt_s{};  // indexed by IntegratorKind; 0: unstable at every dt
   double travel_dt_s = kUnlimited;                     // contact limit (with a floor), already in stable_dt_s
   int limiting_body = 0;                               // the body with the highest ω_max
-  double stable_dt(scene::Integrator integrator) const { return stable_dt_s[static_cast<int>(integrator)]; }
+  double stable_dt(IntegratorKind integrator) const { return stable_dt_s[static_cast<int>(integrator)]; }
 };
 
 // The safety factor `solver.dt: "auto"` applies to the estimate (contacts and large deformations move
@@ -70,7 +70,7 @@ BodyStats body_stats(const Body& body, std::span<const Vec3> x);
 ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x);
 
 // Largest h with ρ(G(h)) ≤ 1 for every mode of these bounds (0: none; kUnlimited: no limit).
-double stable_dt(scene::Integrator integrator, const ModeBounds& bounds);
+double stable_dt(IntegratorKind integrator, const ModeBounds& bounds);
 
 // A contact limit for every integrator when there is a floor: no vertex may travel more than a tenth of
 // the body's shortest edge in one step, at its speed now plus what a fall to the floor adds, √(2 |g| h);
@@ -111,14 +111,14 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
 // The dt `solver.dt: "auto"` uses: kAutoDtSafety × the estimate; the implicit method, whose springs have
 // no limit, is capped at `frame_interval_s`/4 for accuracy. Throws softbody::InputError for forward Euler
 // without dampers (unstable at every dt), naming the key.
-double auto_dt(const StabilityEstimate& estimate, scene::Integrator integrator, double frame_interval_s,
+double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
 // kPaperEuler*); the travel limit needs velocities and is applied by estimate_stability(world).
-void scale_for_floor_contact(StabilityEstimate& estimate, scene::ContactModel contact);
+void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact);
 
 // "dt ≤ 1.23e-04 s (euler)"-style advice for a diverged run: the estimate for `integrator`, and implicit's.
-std::string stable_dt_advice(const StabilityEstimate& estimate, scene::Integrator integrator);
+std::string stable_dt_advice(const StabilityEstimate& estimate, IntegratorKind integrator);
 
 }  // namespace sim

@@ -15,10 +15,10 @@
 
 namespace sim {
 
-World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, scene::Integrator integrator)
-    : World(gravity_m_per_s2, floor, scene::Solver{integrator}) {}
+World::World(const Vec3& gravity_m_per_s2, std::optional<sim::Floor> floor, sim::IntegratorKind integrator)
+    : World(gravity_m_per_s2, floor, sim::Solver{integrator}) {}
 
-World::World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, const scene::Solver& solver)
+World::World(const Vec3& gravity_m_per_s2, std::optional<sim::Floor> floor, const sim::Solver& solver)
     : gravity_(gravity_m_per_s2),
       floor_(floor),
       integrator_(make_integrator(solver.integrator, solver.tolerance)),
@@ -106,7 +106,7 @@ void World::throw_diverged(const Divergence& found, double dt) const {
   const bool counted = dt == 0.0;
   message << "diverged at t = " << time_s_ + dt << " s (step " << step_count_ + (counted ? 0 : 1) << ", dt = "
           << (counted ? last_dt_s_ : dt) << " s, "
-          << scene::to_string(integrator_kind_) << "): body " << found.body;
+          << sim::to_string(integrator_kind_) << "): body " << found.body;
   if (found.vertex >= 0) message << ", vertex " << found.vertex;
   StabilityEstimate estimate = estimate_stability(bodies_, initial_x_);  // the start: this state is gone
   if (floor_) scale_for_floor_contact(estimate, floor_->contact);
@@ -255,19 +255,19 @@ void World::resolve_contacts() {
   if (bodies_.size() > 1) touched += collider_.resolve(bodies_, inverse_mass_, state_, body_contact_);
   if (floor_) {
     switch (floor_->contact) {
-      case scene::ContactModel::Paper:
+      case FloorContact::Paper:
         reversed_.clear();
-        touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v, &reversed_);
+        touched += resolve_floor_paper(floor_->height_m, state_.x, state_.v, reversed_);
         break;
-      case scene::ContactModel::Friction:
-        touched += resolve_floor_friction({floor_->height_m, floor_->restitution, floor_->friction}, state_.x, state_.v);
+      case FloorContact::Friction:
+        touched += resolve_floor_friction(floor_->height_m, floor_->material, state_.x, state_.v);
         break;
     }
   }
   // The projection moved the state under the integrator: caches of the old state are stale. A step with
   // such an event is only first order, whatever the integrator (see integrators.hpp).
   if (touched > 0) integrator_->restart();
-  if (floor_ && floor_->contact == scene::ContactModel::Paper && !reversed_.empty()) {
+  if (floor_ && floor_->contact == sim::FloorContact::Paper && !reversed_.empty()) {
     integrator_->velocities_reversed(reversed_);
   }
 }
@@ -291,7 +291,7 @@ std::span<const Vec3> World::velocities(const Body& body) const {
 
 World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
   World world(scene.gravity_m_per_s2, scene.floor, scene.solver);
-  world.set_body_contact({scene.collisions.restitution, scene.collisions.friction});
+  world.set_body_contact(scene.collisions.material);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string context = scene.source.string() + ": bodies." + std::to_string(b) + ".mesh";

@@ -18,15 +18,15 @@ namespace sim {
 
 class World final : public Dynamics {
  public:
-  World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, scene::Integrator integrator);
+  World(const Vec3& gravity_m_per_s2, std::optional<sim::Floor> floor, sim::IntegratorKind integrator);
   // With the scene's solver settings: the integrator, rk45's tolerance and first trial step.
-  World(const Vec3& gravity_m_per_s2, std::optional<scene::Floor> floor, const scene::Solver& solver);
+  World(const Vec3& gravity_m_per_s2, std::optional<sim::Floor> floor, const sim::Solver& solver);
 
   // Appends a body whose vertices start at `x0` (world coordinates) with the common velocity `v0`.
   void add_body(Topology topology, const Params& params, const std::vector<Vec3>& x0, const Vec3& v0);
 
   // Restitution and friction of contacts between bodies (only searched for when there are several).
-  void set_body_contact(const BodyContactSettings& settings) { body_contact_ = settings; }
+  void set_body_contact(const ContactMaterial& material) { body_contact_ = material; }
 
   // One time step of dt seconds: integrate (forces evaluated inside) → body contacts → floor contact →
   // guard (sim/guard.hpp). When the guard finds a divergence and solver.retry is on, the step is redone
@@ -90,7 +90,7 @@ class World final : public Dynamics {
   long long rejected_step_count() const { return rejected_step_count_; }  // adaptive integrators only
   const std::vector<Body>& bodies() const { return bodies_; }
   const Vec3& gravity() const { return gravity_; }
-  const std::optional<scene::Floor>& floor() const { return floor_; }
+  const std::optional<sim::Floor>& floor() const { return floor_; }
 
   // A body's slice of the state arrays.
   std::span<const Vec3> positions(const Body& body) const;
@@ -122,7 +122,7 @@ class World final : public Dynamics {
   [[noreturn]] void throw_diverged(const Divergence& found, double dt) const;
 
   Vec3 gravity_;
-  std::optional<scene::Floor> floor_;
+  std::optional<sim::Floor> floor_;
   std::unique_ptr<Integrator> integrator_;
   std::vector<Body> bodies_;
   std::vector<double> mass_;                  // per vertex, all bodies
@@ -135,12 +135,12 @@ class World final : public Dynamics {
   std::vector<std::vector<Vec3>> area_scratch_;  // per body, one entry per vertex (add_pressure)
   std::vector<int> reversed_;                     // vertices the paper's floor response reversed this step
   std::vector<int> backup_reversed_;              // reversed_ when backup_ was taken (retry)
-  BodyContactSettings body_contact_;
+  ContactMaterial body_contact_;
   BodyCollider collider_;
   DivergenceGuard guard_;
   int steps_since_full_check_ = 0;
   double last_dt_s_ = 0.0;  // the last fixed step taken, for messages
-  scene::Integrator integrator_kind_;
+  sim::IntegratorKind integrator_kind_;
   bool retry_ = false;
   int threads_ = 1;  // for large bodies' force passes, 1 .. kMostForceThreads
   std::unique_ptr<PartRunner> part_runner_;   // runs those parts (its workers start when first needed)

@@ -43,7 +43,7 @@ class TimeRecorder final : public frames::FrameSink {
 };
 
 TEST(Rk45FrameLoop, LandsExactlyOnEveryFrameTimeAndCountsSteps) {
-  sim::World world = make_world(kBounce, scene::Integrator::Rk45, 1e-5);
+  sim::World world = make_world(kBounce, sim::IntegratorKind::Rk45, 1e-5);
   const frames::FrameClock clock = frames::plan_frames(1.0, 30, 1e-4);
   TimeRecorder recorder;
   frames::FrameSink* sinks[] = {&recorder};
@@ -59,11 +59,11 @@ TEST(Rk45FrameLoop, LandsExactlyOnEveryFrameTimeAndCountsSteps) {
 }
 
 TEST(Rk45FrameLoop, TooTightAToleranceIsReportedAsDivergence) {
-  sim::World world = make_world(kBounce, scene::Integrator::Rk45, 1e-300);
+  sim::World world = make_world(kBounce, sim::IntegratorKind::Rk45, 1e-300);
   EXPECT_THROW(world.advance_to(0.1), softbody::DivergedError);
 }
 
-class EveryIntegrator : public ::testing::TestWithParam<scene::Integrator> {};
+class EveryIntegrator : public ::testing::TestWithParam<sim::IntegratorKind> {};
 
 // Contacts stay a post-step projection for every integrator: no vertex is ever below the floor, and after
 // the impact the body's centre rises again (the centre is what its mean vertex height stands for here).
@@ -94,11 +94,11 @@ TEST_P(EveryIntegrator, RerunsAreBitIdentical) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator,
-                         ::testing::Values(scene::Integrator::Euler, scene::Integrator::Symplectic,
-                                           scene::Integrator::Verlet, scene::Integrator::Rk4,
-                                           scene::Integrator::Rk45, scene::Integrator::Implicit),
-                         [](const ::testing::TestParamInfo<scene::Integrator>& test) {
-                           return scene::to_string(test.param);
+                         ::testing::Values(sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
+                                           sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4,
+                                           sim::IntegratorKind::Rk45, sim::IntegratorKind::Implicit),
+                         [](const ::testing::TestParamInfo<sim::IntegratorKind>& test) {
+                           return sim::to_string(test.param);
                          });
 
 }  // namespace

@@ -27,7 +27,7 @@ constexpr double kSpan = 0.128;  // s
 
 // Dormand–Prince's fifth-order formula at a fixed step (no error control).
 sim::State dormand_prince_state(double dt) {
-  sim::World world = make_world(kSmoothScene, scene::Integrator::Rk45);
+  sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45);
   run_for(world, kSpan, dt);
   return world.state();
 }
@@ -68,7 +68,7 @@ double observed_order(const std::vector<double>& errors) {
 }
 
 struct OrderCase {
-  scene::Integrator integrator;
+  sim::IntegratorKind integrator;
   double coarsest_dt;  // s; then halved four times
   double expected_order;
 };
@@ -86,7 +86,7 @@ TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
     errors.push_back(rms_position_difference(world.state(), exact));
   }
   const double order = observed_order(errors);
-  std::printf("%-10s", scene::to_string(c.integrator).c_str());
+  std::printf("%-10s", sim::to_string(c.integrator).c_str());
   for (std::size_t k = 0; k < errors.size(); ++k) std::printf(" e(dt/%d)=%.3e", 1 << k, errors[k]);
   std::printf("  pairwise:");
   for (std::size_t k = 1; k < errors.size(); ++k) std::printf(" %.3f", std::log2(errors[k - 1] / errors[k]));
@@ -98,19 +98,19 @@ TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
 
 INSTANTIATE_TEST_SUITE_P(
     SmoothBreathingSphere, ConvergenceOrder,
-    ::testing::Values(OrderCase{scene::Integrator::Euler, 1e-4, 1.0},
-                      OrderCase{scene::Integrator::Symplectic, 1e-4, 1.0},
-                      OrderCase{scene::Integrator::Verlet, 4e-4, 2.0},
-                      OrderCase{scene::Integrator::Rk4, 1.28e-3, 4.0},
-                      OrderCase{scene::Integrator::Implicit, 1e-4, 1.0}),
-    [](const ::testing::TestParamInfo<OrderCase>& test) { return scene::to_string(test.param.integrator); });
+    ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
+                      OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
+                      OrderCase{sim::IntegratorKind::Verlet, 4e-4, 2.0},
+                      OrderCase{sim::IntegratorKind::Rk4, 1.28e-3, 4.0},
+                      OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0}),
+    [](const ::testing::TestParamInfo<OrderCase>& test) { return sim::to_string(test.param.integrator); });
 
 // rk45 has no step to halve: its global error should follow the tolerance, roughly proportionally
 // (Dormand–Prince's local error ∝ h⁵ and h ∝ tol^(1/5) make the error per unit time ∝ tol).
 TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
   std::vector<double> log_tolerance, log_error;
   for (double tolerance = 1e-4; tolerance >= 0.99e-9; tolerance /= 10.0) {
-    sim::World world = make_world(kSmoothScene, scene::Integrator::Rk45, tolerance);
+    sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45, tolerance);
     world.advance_to(kSpan);
     const double error = rms_position_difference(world.state(), reference());
     std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,

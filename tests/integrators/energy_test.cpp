@@ -29,7 +29,7 @@ struct EnergyTrace {
   double late_mean_J = 0.0;           // ... and the last tenth
 };
 
-EnergyTrace trace_energy(scene::Integrator integrator, double dt, long long steps) {
+EnergyTrace trace_energy(sim::IntegratorKind integrator, double dt, long long steps) {
   sim::World world = make_world(kConservativeScene, integrator);
   const double e0 = total_energy(world);
   EnergyTrace trace;
@@ -56,7 +56,7 @@ EnergyTrace trace_energy(scene::Integrator integrator, double dt, long long step
   return trace;
 }
 
-class BoundedEnergy : public ::testing::TestWithParam<scene::Integrator> {};
+class BoundedEnergy : public ::testing::TestWithParam<sim::IntegratorKind> {};
 
 // 10^5 steps of 0.5 ms (50 s, about 170 breathing periods). A symplectic method conserves a modified
 // energy within O(h^p) of the true one, so the error oscillates without drifting: it must stay a small
@@ -64,16 +64,16 @@ class BoundedEnergy : public ::testing::TestWithParam<scene::Integrator> {};
 TEST_P(BoundedEnergy, StaysBoundedOverHundredThousandSteps) {
   const EnergyTrace trace = trace_energy(GetParam(), 5e-4, 100000);
   std::printf("%s: max |E - E0| = %.3e J (max kinetic %.3e J), mean E - E0: first tenth %.3e J, last tenth %.3e J\n",
-              scene::to_string(GetParam()).c_str(), trace.max_deviation_J, trace.max_kinetic_J, trace.early_mean_J,
+              sim::to_string(GetParam()).c_str(), trace.max_deviation_J, trace.max_kinetic_J, trace.early_mean_J,
               trace.late_mean_J);
   EXPECT_LT(trace.max_deviation_J, 0.05 * trace.max_kinetic_J);
   EXPECT_LT(std::abs(trace.late_mean_J - trace.early_mean_J), 0.2 * trace.max_deviation_J + 1e-12);
 }
 
 INSTANTIATE_TEST_SUITE_P(SymplecticMethods, BoundedEnergy,
-                         ::testing::Values(scene::Integrator::Symplectic, scene::Integrator::Verlet),
-                         [](const ::testing::TestParamInfo<scene::Integrator>& test) {
-                           return scene::to_string(test.param);
+                         ::testing::Values(sim::IntegratorKind::Symplectic, sim::IntegratorKind::Verlet),
+                         [](const ::testing::TestParamInfo<sim::IntegratorKind>& test) {
+                           return sim::to_string(test.param);
                          });
 
 // Forward Euler's exact (1 + h²ω²) energy growth per step on a single oscillator is tested in
@@ -82,7 +82,7 @@ INSTANTIATE_TEST_SUITE_P(SymplecticMethods, BoundedEnergy,
 // On the sphere every mode grows by its own (1 + h²ω²) per step: the energy rises steadily, unlike the
 // symplectic methods' bounded oscillation at the same step.
 TEST(ForwardEulerEnergy, GrowsOnTheSphereWhereSymplecticMethodsStayBounded) {
-  const EnergyTrace euler = trace_energy(scene::Integrator::Euler, 5e-5, 4000);
+  const EnergyTrace euler = trace_energy(sim::IntegratorKind::Euler, 5e-5, 4000);
   std::printf("euler on the sphere, h = 5e-5 s, 4000 steps: mean E - E0 first tenth %.3e J, last tenth %.3e J "
               "(max kinetic %.3e J)\n",
               euler.early_mean_J, euler.late_mean_J, euler.max_kinetic_J);

@@ -36,7 +36,7 @@ constexpr double kRoundOff = 1e-11;
 
 Vec3 free_fall(const Vec3& x0, double t) { return x0 + kV0 * t + 0.5 * kG * t * t; }
 
-class ExactFreeFall : public ::testing::TestWithParam<scene::Integrator> {};
+class ExactFreeFall : public ::testing::TestWithParam<sim::IntegratorKind> {};
 
 TEST_P(ExactFreeFall, CentreOfMassOfAThrownBreathingSphere) {
   sim::World world = make_world(kThrownSphere, GetParam());
@@ -45,7 +45,7 @@ TEST_P(ExactFreeFall, CentreOfMassOfAThrownBreathingSphere) {
   const sim::BodyDiagnostics d = sim::diagnose(world, 0);
   const double error = (d.com_m - free_fall(com0, kDuration)).norm();
   const double velocity_error = (d.com_velocity_m_per_s - (kV0 + kG * kDuration)).norm();
-  std::printf("%s: |COM - exact| = %.2e m, |v_COM - exact| = %.2e m/s\n", scene::to_string(GetParam()).c_str(),
+  std::printf("%s: |COM - exact| = %.2e m, |v_COM - exact| = %.2e m/s\n", sim::to_string(GetParam()).c_str(),
               error, velocity_error);
   EXPECT_LT(error, kRoundOff);
   EXPECT_LT(velocity_error, kRoundOff);
@@ -63,20 +63,20 @@ TEST_P(ExactFreeFall, EveryVertexUnderGravityAlone) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SecondOrderAndAbove, ExactFreeFall,
-                         ::testing::Values(scene::Integrator::Verlet, scene::Integrator::Rk4),
-                         [](const ::testing::TestParamInfo<scene::Integrator>& test) {
-                           return scene::to_string(test.param);
+                         ::testing::Values(sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4),
+                         [](const ::testing::TestParamInfo<sim::IntegratorKind>& test) {
+                           return sim::to_string(test.param);
                          });
 
 // The first-order methods are not exact for a parabola: forward Euler lags by ½ g h t, symplectic Euler
 // leads by it. This checks that the test above can tell.
 TEST(FirstOrderFreeFall, MissesByHalfGHT) {
-  for (scene::Integrator integrator : {scene::Integrator::Euler, scene::Integrator::Symplectic}) {
+  for (sim::IntegratorKind integrator : {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic}) {
     sim::World world = make_world(kDust, integrator);
     const Vec3 x0 = world.state().x[0];
     integrator_tests::run_for(world, kDuration, kDt);
     const double error = (world.state().x[0] - free_fall(x0, kDuration)).norm();
-    EXPECT_NEAR(error, 0.5 * 9.81 * kDt * kDuration, 1e-9) << scene::to_string(integrator);
+    EXPECT_NEAR(error, 0.5 * 9.81 * kDt * kDuration, 1e-9) << sim::to_string(integrator);
   }
 }
 

@@ -27,7 +27,7 @@ constexpr double kLargeStep = 10 * kExplicitLimit;
 constexpr int kSteps = 100;  // 1.4 s at the large step
 
 // Every mode excited: a deterministic, non-smooth initial velocity field of about 0.5 m/s.
-sim::World shaken_world(scene::Integrator integrator) {
+sim::World shaken_world(sim::IntegratorKind integrator) {
   sim::World world = make_world(kStiffSphere, integrator);
   std::vector<Vec3>& v = world.state().v;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -38,7 +38,7 @@ sim::World shaken_world(scene::Integrator integrator) {
 }
 
 TEST(ImplicitStability, TenTimesBeyondTheExplicitLimitEnergyNeverGrows) {
-  sim::World world = shaken_world(scene::Integrator::Implicit);
+  sim::World world = shaken_world(sim::IntegratorKind::Implicit);
   const double e0 = total_energy(world);
   double highest = e0;
   for (int s = 0; s < kSteps; ++s) {
@@ -52,7 +52,7 @@ TEST(ImplicitStability, TenTimesBeyondTheExplicitLimitEnergyNeverGrows) {
   EXPECT_LT(e_end, e0);
 }
 
-class ExplicitAtTheLargeStep : public ::testing::TestWithParam<scene::Integrator> {};
+class ExplicitAtTheLargeStep : public ::testing::TestWithParam<sim::IntegratorKind> {};
 
 TEST_P(ExplicitAtTheLargeStep, Diverges) {
   sim::World world = shaken_world(GetParam());
@@ -60,19 +60,19 @@ TEST_P(ExplicitAtTheLargeStep, Diverges) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ExplicitMethods, ExplicitAtTheLargeStep,
-                         ::testing::Values(scene::Integrator::Euler, scene::Integrator::Symplectic,
-                                           scene::Integrator::Verlet, scene::Integrator::Rk4),
-                         [](const ::testing::TestParamInfo<scene::Integrator>& test) {
-                           return scene::to_string(test.param);
+                         ::testing::Values(sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
+                                           sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4),
+                         [](const ::testing::TestParamInfo<sim::IntegratorKind>& test) {
+                           return sim::to_string(test.param);
                          });
 
 // Both sides of the limit quoted above, so the "10×" is measured, not assumed.
 TEST(ExplicitLimit, Rk4IsStableJustBelowAndDivergesJustAbove) {
-  sim::World below = shaken_world(scene::Integrator::Rk4);
+  sim::World below = shaken_world(sim::IntegratorKind::Rk4);
   const double e0 = total_energy(below);
   EXPECT_NO_THROW(integrator_tests::run_for(below, 1000 * 0.9 * kExplicitLimit, 0.9 * kExplicitLimit));
   EXPECT_LT(total_energy(below), e0 + 1e-3 * std::abs(e0));
-  sim::World above = shaken_world(scene::Integrator::Rk4);
+  sim::World above = shaken_world(sim::IntegratorKind::Rk4);
   EXPECT_THROW(integrator_tests::run_for(above, 1000 * 1.1 * kExplicitLimit, 1.1 * kExplicitLimit),
                softbody::DivergedError);
 }

@@ -10,15 +10,15 @@
 
 namespace integrator_tests {
 
-scene::Scene scene_with_solver(const std::string& json_text, const scene::Solver& solver) {
+scene::Scene scene_with_solver(const std::string& json_text, const sim::Solver& solver) {
   const std::filesystem::path file = std::filesystem::path(SOFTBODY_SOURCE_DIR) / "tests" / "inline.json";
   scene::Scene s = scene::scene_from_json(scene::parse_scene_text(json_text, file), file);
   s.solver = solver;
   return s;
 }
 
-sim::World make_world(const std::string& json_text, scene::Integrator integrator, double tolerance) {
-  scene::Solver solver;
+sim::World make_world(const std::string& json_text, sim::IntegratorKind integrator, double tolerance) {
+  sim::Solver solver;
   solver.integrator = integrator;
   solver.tolerance = tolerance;
   std::vector<std::string> notes;

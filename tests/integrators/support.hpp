@@ -9,10 +9,10 @@
 namespace integrator_tests {
 
 // The scene in `json_text` (comments allowed) with its solver replaced by `solver`.
-scene::Scene scene_with_solver(const std::string& json_text, const scene::Solver& solver);
+scene::Scene scene_with_solver(const std::string& json_text, const sim::Solver& solver);
 
 // The world of `json_text` integrated with `integrator` (rk45: with `tolerance`).
-sim::World make_world(const std::string& json_text, scene::Integrator integrator, double tolerance = 1e-6);
+sim::World make_world(const std::string& json_text, sim::IntegratorKind integrator, double tolerance = 1e-6);
 
 // Runs whole steps of dt until `duration_s` (which dt must divide up to round-off).
 void run_for(sim::World& world, double duration_s, double dt);

@@ -10,14 +10,14 @@
 
 namespace {
 
-using scene::Integrator;
+using sim::IntegratorKind;
 
 // A coarse damped ball and an undamped one: small meshes, so a 5000-step bisection takes about a second.
 const bench::LimitBody kDamped{"coarse damped", "icosphere:1", 1e4, 2.0, 30.0};
 const bench::LimitBody kUndamped{"coarse undamped", "icosphere:1", 2000.0, 0.0, 50.0};
 constexpr int kSteps = 5000;
 
-class EstimateAgainstMeasurement : public ::testing::TestWithParam<std::tuple<bench::LimitBody, Integrator>> {};
+class EstimateAgainstMeasurement : public ::testing::TestWithParam<std::tuple<bench::LimitBody, IntegratorKind>> {};
 
 TEST_P(EstimateAgainstMeasurement, IsConservativeAndWithinTwiceTheMeasuredLimit) {
   const auto& [body, integrator] = GetParam();
@@ -26,7 +26,7 @@ TEST_P(EstimateAgainstMeasurement, IsConservativeAndWithinTwiceTheMeasuredLimit)
   const bench::StableDtMeasurement measured = bench::measure_stable_dt(
       [&] { return bench::limit_world(body, integrator); }, 0.25 * estimate, 2.0 * estimate, kSteps);
   std::printf("%s, %s: estimate %.4g s, measured stable %.4g s, unstable %.4g s (estimate / measured %.3f)\n",
-              body.name.c_str(), scene::to_string(integrator).c_str(), estimate, measured.stable_dt_s,
+              body.name.c_str(), sim::to_string(integrator).c_str(), estimate, measured.stable_dt_s,
               measured.unstable_dt_s, estimate / measured.stable_dt_s);
   EXPECT_LE(estimate, measured.unstable_dt_s) << "the estimate must not reach into the unstable range";
   EXPECT_GE(estimate, 0.5 * measured.stable_dt_s) << "the estimate must be within a factor 2";
@@ -35,33 +35,33 @@ TEST_P(EstimateAgainstMeasurement, IsConservativeAndWithinTwiceTheMeasuredLimit)
 INSTANTIATE_TEST_SUITE_P(
     Bodies, EstimateAgainstMeasurement,
     ::testing::Combine(::testing::Values(kDamped),
-                       ::testing::Values(Integrator::Euler, Integrator::Symplectic, Integrator::Verlet, Integrator::Rk4,
-                                         Integrator::Rk45)),
-    [](const auto& test) { return "damped_" + scene::to_string(std::get<1>(test.param)); });
+                       ::testing::Values(IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Verlet, IntegratorKind::Rk4,
+                                         IntegratorKind::Rk45)),
+    [](const auto& test) { return "damped_" + sim::to_string(std::get<1>(test.param)); });
 
 // Forward Euler has no stable dt without dampers (see below), so the undamped body skips it.
 INSTANTIATE_TEST_SUITE_P(
     UndampedBodies, EstimateAgainstMeasurement,
     ::testing::Combine(::testing::Values(kUndamped),
-                       ::testing::Values(Integrator::Symplectic, Integrator::Verlet, Integrator::Rk4, Integrator::Rk45)),
-    [](const auto& test) { return "undamped_" + scene::to_string(std::get<1>(test.param)); });
+                       ::testing::Values(IntegratorKind::Symplectic, IntegratorKind::Verlet, IntegratorKind::Rk4, IntegratorKind::Rk45)),
+    [](const auto& test) { return "undamped_" + sim::to_string(std::get<1>(test.param)); });
 
 // Forward Euler without dampers has no stable dt: the estimate says so instead of inventing one.
 TEST(Estimate, ForwardEulerWithoutDampersHasNoStableDt) {
-  EXPECT_EQ(sim::estimate_stability(bench::limit_world(kUndamped, Integrator::Euler)).stable_dt(Integrator::Euler), 0.0);
+  EXPECT_EQ(sim::estimate_stability(bench::limit_world(kUndamped, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler), 0.0);
 }
 
 // The damper limit of forward Euler is c/k for underdamped modes (ζω = (c/k) ω² / 2); the estimate keeps
 // sim::kSharpLimitMargin below it because every mode reaches |g| = 1 there at once.
 TEST(Estimate, ForwardEulerDamperLimitIsCOverK) {
   const bench::LimitBody ball{"bounce", "icosphere:2", 3000.0, 0.5, 30.0};
-  const double dt = sim::estimate_stability(bench::limit_world(ball, Integrator::Euler)).stable_dt(Integrator::Euler);
+  const double dt = sim::estimate_stability(bench::limit_world(ball, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler);
   EXPECT_NEAR(dt, sim::kSharpLimitMargin * 0.5 / 3000.0, 0.02 * 0.5 / 3000.0);
 }
 
 // Power iterations stay below Gershgorin's upper bound and above half of it on a regular mesh.
 TEST(Estimate, PowerIterationsLieBelowTheGershgorinBound) {
-  sim::World world = bench::limit_world(kDamped, Integrator::Symplectic);
+  sim::World world = bench::limit_world(kDamped, IntegratorKind::Symplectic);
   const sim::ModeBounds b = sim::mode_bounds(world.bodies()[0], world.positions(world.bodies()[0]));
   EXPECT_LE(b.lambda_max_per_kg, b.lambda_gershgorin_per_kg);
   EXPECT_GT(b.lambda_max_per_kg, 0.3 * b.lambda_gershgorin_per_kg);

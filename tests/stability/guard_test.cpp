@@ -86,7 +86,7 @@ TEST(Guard, FiftyMetresPerSecondImpactDoesNotTunnel) {
     "solver": { "integrator": "symplectic" },
     "bodies": [ { "mesh": "icosphere:2", "position": [0, 1.5, 0], "velocity": [0, -50, 0],
                   "stiffness": 3e5, "damping": 5, "pressure": 300 } ] })");
-  const double dt = sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(scene::Integrator::Symplectic);
+  const double dt = sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Symplectic);
   double lowest_com = 10.0;
   const int steps = static_cast<int>(0.2 / dt);
   for (int s = 0; s < steps; ++s) {

@@ -25,7 +25,7 @@ std::string shell(const std::string& mesh, const std::string& start, const std::
 }
 
 double auto_dt(const sim::World& world) {
-  return sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(scene::Integrator::Symplectic);
+  return sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Symplectic);
 }
 
 // Youngs and thickness give k = (√3/2) E t; a damping ratio gives c = 2 ζ k / ω_b.
@@ -125,7 +125,7 @@ double measured_breathing_period(const std::string& mesh, double frequency_Hz, i
     for (std::size_t i = 0; i < rest.size(); ++i) s += m[i] * (world.state().x[i] - c).dot(rest[i] - centre);
     return s / inertia - 1.0;
   };
-  const double dt = 0.2 * sim::estimate_stability(world).stable_dt(scene::Integrator::Verlet);
+  const double dt = 0.2 * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Verlet);
   std::vector<double> crossings;
   double previous = breathing(), t = 0.0;
   for (int step = 0; crossings.size() < static_cast<std::size_t>(half_periods) + 1 && step < 10'000'000; ++step) {

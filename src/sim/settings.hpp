@@ -1,0 +1,94 @@
+// The solver's settings types: integrators (the one list every part of the program reads), floor and
+// body contact, and the solver options. Plain data with defaults; the scene file fills them (src/scene/).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sim {
+
+// Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in
+// docs/integrators.md. kIntegrators below lists them with their names and properties.
+enum class IntegratorKind {
+  Euler,       // forward Euler (Matyka & Ollila 2003, Eq. 11): first order
+  Symplectic,  // semi-implicit Euler: v from the force, then x from the new v; first order, symplectic
+  Verlet,      // velocity Verlet: second order, one force evaluation per step
+  Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
+  Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
+  Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
+};
+
+// What the program needs to know of an integrator besides its code.
+struct IntegratorInfo {
+  IntegratorKind kind;
+  std::string_view name;  // in scene files, on the command line, in CSVs and messages
+  int order;              // convergence order on smooth motion (rk45: 5, its propagated solution)
+  bool adaptive;          // chooses its own step sizes (driven by sim::advance_to)
+  bool explicit_springs;  // the springs limit its stable step (every method but implicit)
+};
+
+// Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
+// benchmarks all iterate this list.
+inline constexpr std::array<IntegratorInfo, 6> kIntegrators = {{
+    {IntegratorKind::Euler, "euler", 1, false, true},
+    {IntegratorKind::Symplectic, "symplectic", 1, false, true},
+    {IntegratorKind::Verlet, "verlet", 2, false, true},
+    {IntegratorKind::Rk4, "rk4", 4, false, true},
+    {IntegratorKind::Rk45, "rk45", 5, true, true},
+    {IntegratorKind::Implicit, "implicit", 1, false, false},
+}};
+static_assert([] {
+  for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
+    if (static_cast<int>(kIntegrators[i].kind) != i) return false;
+  }
+  return true;
+}(), "kIntegrators lists the integrators in the order of the enum");
+
+constexpr const IntegratorInfo& integrator_info(IntegratorKind integrator) { return kIntegrators[static_cast<int>(integrator)]; }
+std::string to_string(IntegratorKind integrator);
+// The integrator called `name`, or nothing.
+std::optional<IntegratorKind> integrator_named(std::string_view name);
+
+// How vertices below the floor are handled.
+enum class FloorContact {
+  Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
+  Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
+};
+std::string to_string(FloorContact contact);
+
+// The rule of an impulse contact (the friction floor, contact between bodies): restitution on the normal
+// approach speed and Coulomb friction on the tangential one (sim/contact_response.hpp).
+struct ContactMaterial {
+  double restitution = 0.5;  // normal speed kept after an impact (0 inelastic .. 1 elastic)
+  double friction = 0.5;     // Coulomb coefficient μ (static = sliding)
+  // Below this approach speed a contact is resting, not an impact: no bounce, so that a body lying on
+  // something does not jitter. 0.05 m/s is the speed gravity gives in 5 ms, well above one step's g·dt.
+  double resting_speed_m_per_s = 0.05;
+};
+
+struct Floor {
+  double height_m = 0.0;  // the plane y = height_m
+  FloorContact contact = FloorContact::Paper;
+  ContactMaterial material;  // the friction contact's restitution and friction
+};
+
+// Contact between bodies (vertices of one against the triangles of another), when there are several.
+struct BodyContact {
+  ContactMaterial material{0.3, 0.5};
+};
+
+struct Solver {
+  IntegratorKind integrator = IntegratorKind::Euler;
+  double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
+                       // (rk45: only the first trial step; it then chooses its own)
+  bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/stability.hpp)
+  bool retry = false;    // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
+  double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
+                            // and velocities [m/s]
+  int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
+                    // on it (sim::kParallelMinVertices)
+};
+
+}  // namespace sim
