@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/scene_json.hpp"
+#include "setup/build_world.hpp"
 
 namespace bench {
 
@@ -28,7 +29,7 @@ scene::Scene bench_scene(const BenchCase& c) {
 
 sim::World bench_world(const BenchCase& c) {
   std::vector<std::string> notes;
-  return sim::build_world(bench_scene(c), notes);
+  return setup::build_world(bench_scene(c), notes);
 }
 
 scene::Scene contact_scene(bool touching) {
@@ -47,7 +48,7 @@ scene::Scene contact_scene(bool touching) {
 sim::World contact_world(bool touching, int settle_steps) {
   std::vector<std::string> notes;
   const scene::Scene s = contact_scene(touching);
-  sim::World world = sim::build_world(s, notes);
+  sim::World world = setup::build_world(s, notes);
   for (int i = 0; i < settle_steps; ++i) world.step(s.solver.dt_s);
   return world;
 }

@@ -22,7 +22,7 @@ constexpr std::array kIntegrators = {sim::IntegratorKind::Euler,  sim::Integrato
 void run_steps(benchmark::State& st, const BenchCase& c) {
   sim::World world = bench::bench_world(c);
   const double dt = bench::bench_dt_s(c.level);
-  const auto vertices = static_cast<double>(world.state().x.size());
+  const auto vertices = static_cast<double>(world.state.x.size());
   double rebuilds = 0;
   for (auto _ : st) {
     try {
@@ -73,7 +73,7 @@ void BM_Ours(benchmark::State& st) {
 }
 
 // Ours as in BM_Ours on `threads` threads (the same states bit for bit; only bodies of at least
-// sim::World::kParallelMinVertices vertices use them). Args: {level, threads}.
+// sim::kParallelMinVertices vertices use them). Args: {level, threads}.
 void BM_OursThreads(benchmark::State& st) {
   BenchCase c;
   c.level = static_cast<int>(st.range(0));
@@ -91,8 +91,8 @@ void BM_Bullet(benchmark::State& st) {
   const scene::Scene s = bench::bench_scene(c);
   const sim::World ours = bench::bench_world(c);
   bench::BulletBodySpec spec;
-  spec.vertices_m = ours.state().x;
-  spec.triangles = ours.bodies().at(0).topology.faces;
+  spec.vertices_m = ours.state.x;
+  spec.triangles = ours.model.bodies.at(0).topology.faces;
   spec.mass_kg = s.bodies.at(0).mass_kg;
   spec.pressure = s.bodies.at(0).pressure_J;
   spec.gravity_m_per_s2 = s.gravity_m_per_s2.y();
@@ -118,12 +118,12 @@ void BM_Contact(benchmark::State& st) {
   const bool touching = st.range(0) == 1;
   static std::array<std::optional<sim::State>, 2> settled;
   auto& cached = settled.at(touching ? 1 : 0);
-  if (!cached) cached = bench::contact_world(touching, kContactSettleSteps).state();
+  if (!cached) cached = bench::contact_world(touching, kContactSettleSteps).state;
   sim::World world = bench::contact_world(touching, 0);
-  world.state() = *cached;
+  world.state = *cached;
   const double dt = bench::contact_scene(touching).solver.dt_s;
   for (auto _ : st) world.step(dt);
-  const auto vertices = static_cast<double>(world.state().x.size());
+  const auto vertices = static_cast<double>(world.state.x.size());
   st.SetLabel(touching ? "stacked" : "apart");
   st.counters["vertices"] = vertices;
   st.counters["vertex_steps_per_s"] = benchmark::Counter(vertices * static_cast<double>(st.iterations()),

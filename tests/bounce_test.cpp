@@ -5,7 +5,7 @@
 
 #include "scene/scene_json.hpp"
 #include "sim/diagnostics.hpp"
-#include "sim/world.hpp"
+#include "setup/build_world.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -21,13 +21,13 @@ struct Track {
 Track run_bounce(double dt, double duration) {
   const scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(s, notes);
+  sim::World world = setup::build_world(s, notes);
   Track track;
   const long long steps_per_sample = std::llround(0.01 / dt);
   for (int sample = 1; sample <= std::lround(duration * 100); ++sample) {
     testing_support::run_steps(world, steps_per_sample, dt);
-    const sim::BodyDiagnostics d = sim::diagnose(world, 0);
-    if (track.landing_time_s < 0 && d.min_y_m < 0.005) track.landing_time_s = world.time_s();
+    const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
+    if (track.landing_time_s < 0 && d.min_y_m < 0.005) track.landing_time_s = world.state.time_s;
     track.farthest_x_m = std::max(track.farthest_x_m, d.com_m.x());
     track.final_x_m = d.com_m.x();
     if (track.landing_time_s >= 0) track.most_backward_vx = std::min(track.most_backward_vx, d.com_velocity_m_per_s.x());

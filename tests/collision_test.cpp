@@ -14,7 +14,7 @@ using softbody::Vec3;
 
 Vec3 total_momentum(const sim::World& world) {
   Vec3 p = Vec3::Zero();
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) p += sim::diagnose(world, b).momentum_kg_m_per_s;
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
   return p;
 }
 
@@ -35,11 +35,11 @@ TEST(BodyCollision, HeadOnCollisionConservesMomentumAndSeparates) {
   testing_support::run_steps(world, 40000, 2.5e-5);  // 1 s: they touch after ~0.08 s
   const Vec3 after = total_momentum(world);
   EXPECT_LT((after - before).norm(), 1e-12) << before.transpose() << " -> " << after.transpose();
-  const double vx_left = sim::diagnose(world, 0).com_velocity_m_per_s.x();
-  const double vx_right = sim::diagnose(world, 1).com_velocity_m_per_s.x();
+  const double vx_left = sim::diagnose(world.model, world.state, 0).com_velocity_m_per_s.x();
+  const double vx_right = sim::diagnose(world.model, world.state, 1).com_velocity_m_per_s.x();
   EXPECT_LT(vx_left, -0.5) << "the lighter ball bounces back";
   EXPECT_GT(vx_right, 0.2) << "the heavier one too";
-  EXPECT_GT(sim::diagnose(world, 1).com_m.x() - sim::diagnose(world, 0).com_m.x(), 2.0) << "apart again";
+  EXPECT_GT(sim::diagnose(world.model, world.state, 1).com_m.x() - sim::diagnose(world.model, world.state, 0).com_m.x(), 2.0) << "apart again";
 }
 
 // A small pile on a floor with friction: at the end no vertex of any body is inside another body
@@ -56,12 +56,12 @@ TEST(BodyCollision, NoVertexEndsInsideAnotherBody) {
   testing_support::run_steps(world, 40000, 2.5e-5);  // 1 s: landed and piled
   int inside = 0;
   double deepest = 0.0;
-  for (std::size_t a = 0; a < world.bodies().size(); ++a) {
-    for (std::size_t b = 0; b < world.bodies().size(); ++b) {
+  for (std::size_t a = 0; a < world.model.bodies.size(); ++a) {
+    for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
       if (a == b) continue;
-      const sim::Body& surface = world.bodies()[b];
-      for (const Vec3& p : world.positions(world.bodies()[a])) {
-        const double w = sim::winding_number(world.positions(surface), surface.topology.faces, p);
+      const sim::Body& surface = world.model.bodies[b];
+      for (const Vec3& p : world.model.of(world.model.bodies[a], world.state.x)) {
+        const double w = sim::winding_number(world.model.of(surface, world.state.x), surface.topology.faces, p);
         deepest = std::max(deepest, w);
         if (w > 0.5) ++inside;
       }
@@ -69,14 +69,14 @@ TEST(BodyCollision, NoVertexEndsInsideAnotherBody) {
   }
   EXPECT_EQ(inside, 0) << "largest winding number " << deepest;
   // And they did pile up: the ball rests above the cube, not beside it on the floor.
-  EXPECT_GT(sim::diagnose(world, 1).min_y_m, 0.5);
+  EXPECT_GT(sim::diagnose(world.model, world.state, 1).min_y_m, 0.5);
 }
 
 TEST(BodyCollision, WindingNumberIsOneInsideZeroOutside) {
   sim::World world = testing_support::world_from_text(R"({ "bodies": [ { "mesh": "icosphere:2" } ] })");
-  const sim::Body& body = world.bodies()[0];
-  EXPECT_NEAR(sim::winding_number(world.positions(body), body.topology.faces, Vec3(0.1, 0.2, 0.3)), 1.0, 1e-9);
-  EXPECT_NEAR(sim::winding_number(world.positions(body), body.topology.faces, Vec3(1.5, 0.2, 0.3)), 0.0, 1e-9);
+  const sim::Body& body = world.model.bodies[0];
+  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(0.1, 0.2, 0.3)), 1.0, 1e-9);
+  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(1.5, 0.2, 0.3)), 0.0, 1e-9);
 }
 
 }  // namespace

@@ -23,14 +23,14 @@ std::string ball_on_floor(double speed) {
 
 // Angular velocity about z from the angular momentum about the centre of mass: ω_z = L_z / I_zz.
 double spin_z(const sim::World& world) {
-  const sim::Body& body = world.bodies()[0];
-  const sim::BodyDiagnostics d = sim::diagnose(world, 0);
+  const sim::Body& body = world.model.bodies[0];
+  const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
   double angular_momentum = 0.0, inertia = 0.0;
   for (int i = 0; i < body.vertex_count; ++i) {
-    const Vec3 r = world.state().x[i] - d.com_m;
-    const Vec3 u = world.state().v[i] - d.com_velocity_m_per_s;
-    angular_momentum += body.topology.mass_kg[i] * r.cross(u).z();
-    inertia += body.topology.mass_kg[i] * (r.x() * r.x() + r.y() * r.y());
+    const Vec3 r = world.state.x[i] - d.com_m;
+    const Vec3 u = world.state.v[i] - d.com_velocity_m_per_s;
+    angular_momentum += body.masses.kg[i] * r.cross(u).z();
+    inertia += body.masses.kg[i] * (r.x() * r.x() + r.y() * r.y());
   }
   return angular_momentum / inertia;
 }
@@ -46,7 +46,7 @@ TEST(FrictionContact, SlidingShellSettlesIntoRollingAtSixTenthsOfItsSpeed) {
   const int samples = 20;
   for (int s = 0; s < samples; ++s) {
     testing_support::run_steps(world, std::llround(0.02 / dt), dt);
-    mean_vx += sim::diagnose(world, 0).com_velocity_m_per_s.x() / samples;
+    mean_vx += sim::diagnose(world.model, world.state, 0).com_velocity_m_per_s.x() / samples;
     mean_spin += spin_z(world) / samples;
   }
   std::printf("rolling: v/v0 = %.4f, -omega R / v = %.4f\n", mean_vx / v0, -mean_spin / mean_vx);
@@ -60,7 +60,7 @@ TEST(FrictionContact, BallAtRestDoesNotStartToRoll) {
   const double dt = 2e-5;
   sim::World world = testing_support::world_from_text(ball_on_floor(0.0));
   testing_support::run_steps(world, std::llround(1.0 / dt), dt);
-  const sim::BodyDiagnostics d = sim::diagnose(world, 0);
+  const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
   EXPECT_LT(std::hypot(d.com_m.x(), d.com_m.z()), 1e-6) << d.com_m.transpose();
   EXPECT_LT(std::hypot(d.com_velocity_m_per_s.x(), d.com_velocity_m_per_s.z()), 1e-6);
   EXPECT_LT(std::abs(spin_z(world)), 1e-5);
@@ -73,14 +73,14 @@ TEST(FrictionContact, RestitutionSetsTheReboundHeight) {
   sim::World world = testing_support::world_from_text(R"({
       "floor": { "contact": "friction", "restitution": 0.5, "friction": 0.0 },
       "bodies": [ { "mesh": "icosphere:1", "position": [0, 2, 0], "stiffness": 0, "damping": 0, "pressure": 0 } ] })");
-  const std::vector<Vec3>& x = world.state().x;
+  const std::vector<Vec3>& x = world.state.x;
   const std::size_t lowest = std::min_element(x.begin(), x.end(), [](const Vec3& a, const Vec3& b) { return a.y() < b.y(); }) - x.begin();
   const double drop_height = x[lowest].y();
   bool bounced = false;
   double peak = 0.0;
   for (int step = 0; step < 15000; ++step) {
     world.step(1e-4);
-    const double y = world.state().x[lowest].y();
+    const double y = world.state.x[lowest].y();
     EXPECT_GE(y, 0.0);
     if (y == 0.0) bounced = true;
     if (bounced) peak = std::max(peak, y);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.hpp"
-#include "sim/world.hpp"
+#include "setup/build_world.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -28,9 +28,9 @@ std::uint64_t state_hash(const sim::State& state) {
 std::uint64_t run_bounce(int steps) {
   const scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(s, notes);
+  sim::World world = setup::build_world(s, notes);
   testing_support::run_steps(world, steps, 1e-4);
-  return state_hash(world.state());
+  return state_hash(world.state);
 }
 
 TEST(Determinism, SameSceneSameStateBitForBit) {
@@ -54,18 +54,18 @@ sim::World large_body_world(int threads, sim::IntegratorKind integrator) {
   s.solver.threads = threads;
   s.solver.integrator = integrator;
   std::vector<std::string> notes;
-  return sim::build_world(s, notes);
+  return setup::build_world(s, notes);
 }
 
 TEST(Determinism, LargeBodyStateDoesNotDependOnThreadCount) {
-  static_assert(sim::World::kParallelMinVertices <= 10242);
+  static_assert(sim::kParallelMinVertices <= 10242);
   for (sim::IntegratorKind integrator : {sim::IntegratorKind::Symplectic, sim::IntegratorKind::Rk4}) {
     sim::World one = large_body_world(1, integrator), two = large_body_world(2, integrator);
-    EXPECT_EQ(one.force_threads(), 1);
-    EXPECT_EQ(two.force_threads(), 2);
+    EXPECT_EQ(one.workspace.forces.threads, 1);
+    EXPECT_EQ(two.workspace.forces.threads, 2);
     testing_support::run_steps(one, 300, 2e-5);
     testing_support::run_steps(two, 300, 2e-5);
-    EXPECT_EQ(state_hash(one.state()), state_hash(two.state())) << sim::to_string(integrator);
+    EXPECT_EQ(state_hash(one.state), state_hash(two.state)) << sim::to_string(integrator);
   }
 }
 

@@ -20,14 +20,14 @@ TEST_P(MeshExport, FramesReimportAsTheSameClosedSurface) {
                                     (GetParam() == output::MeshFormat::Obj ? "obj" : "ply");
   std::filesystem::remove_all(dir);
   output::MeshExporter exporter(dir, GetParam());
-  exporter.on_frame(7, world.time_s(), world);
+  exporter.on_frame(7, world.state.time_s, world);
   const std::filesystem::path file = exporter.frame_path(7);
   EXPECT_EQ(file.filename().string().substr(0, 11), "frame_0007.");
 
   // Both bodies in one file: as one mesh it is still closed (two closed components).
   const mesh::LoadedMesh loaded = mesh::load_closed_mesh(file.string(), file, "export");
-  EXPECT_EQ(loaded.mesh.vertices.size(), world.state().x.size());
-  const double volume = sim::diagnose(world, 0).volume_m3 + sim::diagnose(world, 1).volume_m3;
+  EXPECT_EQ(loaded.mesh.vertices.size(), world.state.x.size());
+  const double volume = sim::diagnose(world.model, world.state, 0).volume_m3 + sim::diagnose(world.model, world.state, 1).volume_m3;
   // OBJ keeps 9 significant digits, PLY single precision floats.
   EXPECT_NEAR(mesh::signed_volume(loaded.mesh), volume, 1e-5 * volume);
   EXPECT_TRUE(loaded.notes.empty());

@@ -9,6 +9,7 @@
 #include "mesh/generators.hpp"
 #include "sim/finite_scan.hpp"
 #include "sim/forces.hpp"
+#include "reference_forces.hpp"
 
 namespace {
 
@@ -26,9 +27,9 @@ std::vector<Vec3> deformed_sphere(const mesh::TriMesh& sphere, unsigned seed) {
 TEST(Pressure, ForcesSumToZeroOnClosedDeformedMesh) {
   const mesh::TriMesh sphere = mesh::icosphere(3);
   const std::vector<Vec3> x = deformed_sphere(sphere, 7);
-  std::vector<Vec3> force(x.size(), Vec3::Zero()), scratch;
+  std::vector<Vec3> force(x.size(), Vec3::Zero());
   const double nRT = 50.0;
-  sim::add_pressure(sphere.triangles, nRT, 4.0, x, scratch, force);
+  reference::add_gas(sphere.triangles, nRT, 4.0, x, force);
   Vec3 net = Vec3::Zero();
   double magnitude = 0.0;
   for (const Vec3& f : force) {
@@ -43,9 +44,9 @@ TEST(Pressure, ForcesSumToZeroOnClosedDeformedMesh) {
 TEST(Pressure, VertexForceIsPressureTimesVolumeGradient) {
   const mesh::TriMesh sphere = mesh::icosphere(2);
   std::vector<Vec3> x = deformed_sphere(sphere, 11);
-  std::vector<Vec3> force(x.size(), Vec3::Zero()), scratch;
+  std::vector<Vec3> force(x.size(), Vec3::Zero());
   const double nRT = 80.0;
-  const double volume = sim::add_pressure(sphere.triangles, nRT, 1.0, x, scratch, force);
+  const double volume = reference::add_gas(sphere.triangles, nRT, 1.0, x, force);
   EXPECT_NEAR(volume, sim::enclosed_volume(sphere.triangles, x), 1e-13);
   const double pressure = nRT / volume;
   const double h = 1e-3;
@@ -79,7 +80,7 @@ TEST(Spring, HookeForceAlongTheSpring) {
   const std::vector<double> rest = {2.0};
   const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(3, 4, 0)};  // length 5, stretched by 3
   std::vector<Vec3> force(2, Vec3::Zero());
-  sim::add_springs(edges, rest, 10.0, x, force);
+  reference::add_springs(edges, rest, 10.0, x, force);
   // f_0 = -k (|d| - L0) d̂ with d = x_0 - x_1 = (-3, -4, 0): pulls 0 towards 1 with 30 N.
   EXPECT_NEAR((force[0] - Vec3(18, 24, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((force[0] + force[1]).norm(), 0.0, 1e-12);
@@ -90,7 +91,7 @@ TEST(Damper, ActsOnlyAlongTheSpring) {
   const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
   const std::vector<Vec3> v = {Vec3(-2, 5, 0), Vec3(0, 0, 7)};  // separating at 2 m/s, sliding across
   std::vector<Vec3> force(2, Vec3::Zero());
-  sim::add_dampers(edges, 3.0, x, v, force);
+  reference::add_dampers(edges, 3.0, x, v, force);
   // f_0 = -c ((v_0 - v_1)·d̂) d̂, d̂ = (-1, 0, 0), (v_0 - v_1)·d̂ = 2 → f_0 = -3·2·(-1,0,0) = (6, 0, 0).
   EXPECT_NEAR((force[0] - Vec3(6, 0, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((force[0] + force[1]).norm(), 0.0, 1e-12);
@@ -115,8 +116,8 @@ TEST(SpringDamper, FusedLoopEqualsSpringsPlusDampers) {
   edges.push_back({0, 0});  // coincident endpoints: no direction, no force
   const std::vector<double> rest(edges.size(), 0.2);
   std::vector<Vec3> reference(x.size(), Vec3::Zero()), fused(x.size(), Vec3::Zero());
-  sim::add_springs(edges, rest, 3000.0, x, reference);
-  sim::add_dampers(edges, 0.5, x, v, reference);
+  reference::add_springs(edges, rest, 3000.0, x, reference);
+  reference::add_dampers(edges, 0.5, x, v, reference);
   sim::add_spring_dampers(edges, rest, 3000.0, 0.5, x, v, fused);
   double worst = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -126,7 +127,7 @@ TEST(SpringDamper, FusedLoopEqualsSpringsPlusDampers) {
   // Different rounding only: a few ulps of the largest edge force summed over six edges.
   EXPECT_LT(worst, 1e-12 * scale) << "worst " << worst << " of " << scale;
   std::vector<Vec3> undamped(x.size(), Vec3::Zero()), springs(x.size(), Vec3::Zero());
-  sim::add_springs(edges, rest, 3000.0, x, springs);
+  reference::add_springs(edges, rest, 3000.0, x, springs);
   sim::add_spring_dampers(edges, rest, 3000.0, 0.0, x, v, undamped);  // c = 0: the spring-only loop
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_LT((undamped[i] - springs[i]).norm(), 1e-12 * scale);
 }

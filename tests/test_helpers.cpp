@@ -1,4 +1,5 @@
 // Shared test helpers.
+#include "setup/build_world.hpp"
 #include "test_helpers.hpp"
 
 #include <array>
@@ -16,7 +17,7 @@ scene::Scene scene_from_text(const std::string& json_text) {
 
 sim::World world_from_text(const std::string& json_text) {
   std::vector<std::string> notes;
-  return sim::build_world(scene_from_text(json_text), notes);
+  return setup::build_world(scene_from_text(json_text), notes);
 }
 
 void run_steps(sim::World& world, long long n, double dt) {

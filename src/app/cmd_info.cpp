@@ -17,7 +17,7 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
               index, s.vertices, s.edges, s.faces, s.valence_min, s.valence_max, s.edge_min_m, s.edge_max_m,
               s.rest_volume_m3);
   std::printf("  lumped vertex masses %.4g..%.4g kg (total %.4g kg); k = %.4g N/m, c = %.4g N s/m, nRT = %.4g J\n",
-              s.mass_min_kg, s.mass_max_kg, body.topology.total_mass_kg, body.params.stiffness_N_per_m,
+              s.mass_min_kg, s.mass_max_kg, body.masses.total_kg, body.params.stiffness_N_per_m,
               body.params.damping_N_s_per_m, body.params.pressure_J);
   std::printf("  lambda_max(M^-1 K/k) = %.4g 1/kg (power iterations; Gershgorin bound %.4g)\n", b.lambda_max_per_kg,
               b.lambda_gershgorin_per_kg);
@@ -40,10 +40,10 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
 
 int run_info(const SceneOptions& options) {
   PreparedRun run = prepare_run(options);
-  const sim::StabilityEstimate estimate = sim::estimate_stability(run.world);
-  const auto& bodies = run.world.bodies();
+  const sim::StabilityEstimate estimate = sim::estimate_stability(run.world.model, run.world.state);
+  const auto& bodies = run.world.model.bodies;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.positions(bodies[b])), estimate.bodies[b]);
+    print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.model.of(bodies[b], run.world.state.x)), estimate.bodies[b]);
   }
   std::printf("estimated stable dt (limiting body %d; auto uses %.2f x it; frame interval 1/%d s):\n",
               estimate.limiting_body, sim::kAutoDtSafety, run.scene.fps);

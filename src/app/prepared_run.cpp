@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "scene/scene_json.hpp"
+#include "setup/build_world.hpp"
 #include "sim/stability.hpp"
 
 namespace app {
@@ -14,11 +15,11 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
   if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(scene, notes);
+  sim::World world = setup::build_world(scene, notes);
   if (scene.solver.dt_auto) {
-    const sim::StabilityEstimate estimate = sim::estimate_stability(world);
+    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
     scene.solver.dt_s = sim::auto_dt(estimate, scene.solver.integrator, 1.0 / scene.fps, scene.source.string());
-    world.set_trial_dt(scene.solver.dt_s);
+    world.state.next_dt_s = scene.solver.dt_s;
     char note[200];
     std::snprintf(note, sizeof note, "solver.dt = auto: %.4g s (%.2f x the estimated stable dt of %s, %.4g s)",
                   scene.solver.dt_s, sim::kAutoDtSafety, sim::to_string(scene.solver.integrator).c_str(),
@@ -43,7 +44,7 @@ void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, co
                   sim::to_string(solver.integrator).c_str());
   }
   std::printf("%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(), stats.frames,
-              steps, run.world.state().x.size(), stats.wall_s,
+              steps, run.world.state.x.size(), stats.wall_s,
               static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), what_was_written.c_str());
 }
 

@@ -11,7 +11,7 @@
 #include "core/errors.hpp"
 #include "frames/frame_clock.hpp"
 #include "frames/frame_loop.hpp"
-#include "sim/world.hpp"
+#include "setup/build_world.hpp"
 
 namespace bench {
 
@@ -31,7 +31,7 @@ class PositionRecorder final : public frames::FrameSink {
     positions_.reserve(static_cast<std::size_t>(frames) * vertices);
   }
   void on_frame(int, double, const sim::World& world) override {
-    const std::vector<Vec3>& x = world.state().x;
+    const std::vector<Vec3>& x = world.state.x;
     positions_.insert(positions_.end(), x.begin(), x.end());
   }
   void finish(bool) override {}
@@ -63,8 +63,8 @@ scene::Scene with_solver(scene::Scene scene, sim::IntegratorKind integrator, dou
 Trajectory simulate(const scene::Scene& scene, double duration_s) {
   const frames::FrameClock clock = frames::plan_frames(duration_s, scene.fps, scene.solver.dt_s);
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(scene, notes);
-  PositionRecorder recorder(clock.frame_count + 1, world.state().x.size());
+  sim::World world = setup::build_world(scene, notes);
+  PositionRecorder recorder(clock.frame_count + 1, world.state.x.size());
   frames::FrameSink* sinks[] = {&recorder};
   Trajectory trajectory;
   trajectory.dt_s = clock.dt_s;
@@ -87,8 +87,8 @@ Trajectory simulate(const scene::Scene& scene, double duration_s) {
 Trajectory fixed_step_run(const scene::Scene& scene, sim::IntegratorKind integrator, double dt_s, double duration_s) {
   const frames::FrameClock clock = frames::plan_frames(duration_s, scene.fps, dt_s);
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(with_solver(scene, integrator, dt_s, 1.0), notes);
-  PositionRecorder recorder(clock.frame_count + 1, world.state().x.size());
+  sim::World world = setup::build_world(with_solver(scene, integrator, dt_s, 1.0), notes);
+  PositionRecorder recorder(clock.frame_count + 1, world.state.x.size());
   Trajectory trajectory;
   trajectory.dt_s = clock.dt_s;
   recorder.on_frame(0, 0.0, world);
@@ -102,7 +102,7 @@ Trajectory fixed_step_run(const scene::Scene& scene, sim::IntegratorKind integra
     trajectory.diverged = true;
   }
   trajectory.step_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  trajectory.steps = world.step_count();
+  trajectory.steps = world.state.steps;
   trajectory.positions = recorder.positions();
   return trajectory;
 }

@@ -25,10 +25,13 @@ sim::World limit_world(const LimitBody& body, sim::IntegratorKind integrator, bo
   const double lift = floor ? 0.05 - lowest : 3.0;  // m
   std::vector<sim::Vec3> x0;
   for (const sim::Vec3& p : m.vertices) x0.push_back(p + sim::Vec3(0.0, lift, 0.0));
-  sim::World world(sim::Vec3(0.0, -9.81, 0.0), floor ? std::optional<sim::Floor>(sim::Floor{}) : std::nullopt,
-                   integrator);
-  world.add_body(sim::build_topology(x0, m.triangles, 1.0),
-                 {body.stiffness_N_per_m, body.damping_N_s_per_m, body.pressure_J}, x0, sim::Vec3::Zero());
+  sim::Body limit_body = sim::build_body(x0, m.triangles, 1.0);
+  limit_body.params = {body.stiffness_N_per_m, body.damping_N_s_per_m, body.pressure_J};
+  sim::Solver solver;
+  solver.integrator = integrator;
+  sim::World world = sim::one_body_world(sim::Vec3(0.0, -9.81, 0.0),
+                                         floor ? std::optional<sim::Floor>(sim::Floor{}) : std::nullopt, solver,
+                                         std::move(limit_body), x0, sim::Vec3::Zero());
   shake(world, 0.5);
   return world;
 }
@@ -39,7 +42,8 @@ std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int s
     for (bool floor : {false, true}) {
       for (sim::IntegratorKind integrator : {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
                                            sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4, sim::IntegratorKind::Rk45}) {
-        const double estimate = sim::estimate_stability(limit_world(body, integrator, floor)).stable_dt(integrator);
+        const sim::World world = limit_world(body, integrator, floor);
+        const double estimate = sim::estimate_stability(world.model, world.state).stable_dt(integrator);
         LimitRow row{body, integrator, floor, estimate, 0.0, 0.0};
         if (estimate > 0.0) {
           const StableDtMeasurement m = measure_stable_dt([&] { return limit_world(body, integrator, floor); },

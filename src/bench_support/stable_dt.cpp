@@ -11,14 +11,14 @@ namespace {
 
 double total_energy(const sim::World& world) {
   double energy = 0.0;
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) energy += sim::diagnose(world, b).total_J();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) energy += sim::diagnose(world.model, world.state, b).total_J();
   return energy;
 }
 
 }  // namespace
 
 void shake(sim::World& world, double amplitude_m_per_s) {
-  std::vector<sim::Vec3>& v = world.state().v;
+  std::vector<sim::Vec3>& v = world.state.v;
   for (std::size_t i = 0; i < v.size(); ++i) {
     const double s = static_cast<double>(i);
     v[i] += amplitude_m_per_s * sim::Vec3(std::sin(7.1 * s), std::cos(3.3 * s), std::sin(5.7 * s + 1.0));

@@ -56,9 +56,10 @@ sim::World build_case_world(const StressCase& c) {
   solver.integrator = c.integrator;
   solver.tolerance = 1e-4;
   solver.retry = c.retry;
-  sim::World world(Vec3(0.0, -9.81, 0.0), sim::Floor{}, solver);
-  world.add_body(sim::build_topology(x0, m.triangles, 1.0), {c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J}, x0,
-                 Vec3(0.0, -c.drop_speed_m_per_s, 0.0));
+  sim::Body body = sim::build_body(x0, m.triangles, 1.0);
+  body.params = {c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J};
+  sim::World world = sim::one_body_world(Vec3(0.0, -9.81, 0.0), sim::Floor{}, solver, std::move(body), x0,
+                                         Vec3(0.0, -c.drop_speed_m_per_s, 0.0));
   shake(world, 0.3);
   return world;
 }
@@ -72,23 +73,23 @@ double case_dt(const StressCase& c, double estimate) {
 }
 
 bool state_is_finite(const sim::World& world) {
-  for (std::size_t i = 0; i < world.state().x.size(); ++i) {
-    if (!world.state().x[i].allFinite() || !world.state().v[i].allFinite()) return false;
+  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
+    if (!world.state.x[i].allFinite() || !world.state.v[i].allFinite()) return false;
   }
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) {
-    const sim::BodyDiagnostics d = sim::diagnose(world, b);
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
+    const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, b);
     if (!std::isfinite(d.total_J()) || !std::isfinite(d.volume_m3) || !d.com_m.allFinite()) return false;
   }
   return true;
 }
 
-double com_y(const sim::World& world) { return sim::diagnose(world, 0).com_m.y(); }
+double com_y(const sim::World& world) { return sim::diagnose(world.model, world.state, 0).com_m.y(); }
 
 // Runs the case to its end; throws what the world throws.
 void run_world(sim::World& world, StressResult& r, double duration_s) {
   if (world.adaptive()) {
-    world.set_trial_dt(r.dt_s);
-    for (int chunk = 1; chunk <= 50 && world.step_count() < kMostAdaptiveSteps; ++chunk) {
+    world.state.next_dt_s = r.dt_s;
+    for (int chunk = 1; chunk <= 50 && world.state.steps < kMostAdaptiveSteps; ++chunk) {
       world.advance_to(chunk * duration_s / 50.0);
       r.min_com_y_m = std::min(r.min_com_y_m, com_y(world));
     }
@@ -159,8 +160,8 @@ StressResult run_stress_case(const StressCase& spec) {
   const auto start = std::chrono::steady_clock::now();
   try {
     sim::World world = build_case_world(spec);
-    r.vertices = static_cast<int>(world.state().x.size());
-    r.estimate_dt_s = sim::estimate_stability(world).stable_dt(spec.integrator);
+    r.vertices = static_cast<int>(world.state.x.size());
+    r.estimate_dt_s = sim::estimate_stability(world.model, world.state).stable_dt(spec.integrator);
     r.dt_s = case_dt(spec, r.estimate_dt_s);
     r.min_com_y_m = com_y(world);
     try {
@@ -177,8 +178,8 @@ StressResult run_stress_case(const StressCase& spec) {
       r.outcome = Outcome::Failed;
       r.message = "tunnelled: the centre of mass went below the floor";
     }
-    r.steps = world.step_count();
-    r.simulated_s = world.time_s();
+    r.steps = world.state.steps;
+    r.simulated_s = world.state.time_s;
   } catch (const std::exception& e) {
     r.outcome = Outcome::Failed;
     r.message = std::string("exception: ") + e.what();

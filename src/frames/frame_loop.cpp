@@ -12,14 +12,14 @@ void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
     return;
   }
   for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
-  world.check_state();  // the guard's full check before the frame is handed out
+  world.check_before_frame();  // the guard's full check before the frame is handed out
 }
 
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,
                     const Progress& progress) {
   RunStats stats;
-  const long long steps_before = world.step_count();
-  const long long rejected_before = world.rejected_step_count();
+  const long long steps_before = world.state.steps;
+  const long long rejected_before = world.state.rejected_steps;
   const auto start = WallClock::now();
   auto emit = [&](int index) {
     // Time from the frame index, not the accumulated step sum, so frame times carry no round-off drift.
@@ -34,8 +34,8 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
       const auto step_start = WallClock::now();
       advance_one_frame(world, clock, frame);
       stats.step_wall_s += seconds_since(step_start);
-      stats.steps = world.step_count() - steps_before;
-      stats.rejected_steps = world.rejected_step_count() - rejected_before;
+      stats.steps = world.state.steps - steps_before;
+      stats.rejected_steps = world.state.rejected_steps - rejected_before;
       emit(frame);
     }
   } catch (...) {

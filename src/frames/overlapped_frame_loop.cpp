@@ -10,8 +10,8 @@ namespace frames {
 RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
                                std::span<CapturingFrameSink* const> sinks, const Progress& progress) {
   RunStats stats;
-  const long long steps_before = world.step_count();
-  const long long rejected_before = world.rejected_step_count();
+  const long long steps_before = world.state.steps;
+  const long long rejected_before = world.state.rejected_steps;
   const auto start = WallClock::now();
   auto capture = [&](int index) {
     for (CapturingFrameSink* sink : sinks) sink->capture(index, index * clock.frame_interval_s, world);
@@ -37,8 +37,8 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
         throw;
       }
       stats.step_wall_s += stepping.get();  // rethrows the worker's DivergedError
-      stats.steps = world.step_count() - steps_before;
-      stats.rejected_steps = world.rejected_step_count() - rejected_before;
+      stats.steps = world.state.steps - steps_before;
+      stats.rejected_steps = world.state.rejected_steps - rejected_before;
       capture(frame);
     }
     deliver(clock.frame_count);

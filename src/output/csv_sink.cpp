@@ -11,8 +11,8 @@ namespace output {
 CsvSink::CsvSink(std::filesystem::path path) : path_(std::move(path)) { text_ = std::string(kCsvHeader) + "\n"; }
 
 void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) {
-    const sim::BodyDiagnostics d = sim::diagnose(world, b);
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
+    const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, b);
     char row[512];
     // %.17g round-trips doubles exactly.
     std::snprintf(row, sizeof row, "%d,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", index,

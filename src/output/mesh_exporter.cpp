@@ -44,11 +44,11 @@ std::string world_to_obj(const sim::World& world, double time_s) {
   std::snprintf(line, sizeof line, "# softbody frame at t = %.9g s\n", time_s);
   text += line;
   int first_index = 1;
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) {
-    const sim::Body& body = world.bodies()[b];
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
+    const sim::Body& body = world.model.bodies[b];
     std::snprintf(line, sizeof line, "o body%zu\n", b);
     text += line;
-    for (const softbody::Vec3& p : world.positions(body)) {
+    for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
       std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
       text += line;
     }
@@ -63,7 +63,7 @@ std::string world_to_obj(const sim::World& world, double time_s) {
 
 std::string world_to_ply(const sim::World& world, double time_s) {
   std::size_t vertices = 0, faces = 0;
-  for (const sim::Body& body : world.bodies()) {
+  for (const sim::Body& body : world.model.bodies) {
     vertices += static_cast<std::size_t>(body.vertex_count);
     faces += body.topology.faces.size();
   }
@@ -75,12 +75,12 @@ std::string world_to_ply(const sim::World& world, double time_s) {
                 time_s, vertices, faces);
   std::string bytes = header;
   bytes.reserve(bytes.size() + vertices * 12 + faces * 13);
-  for (const sim::Body& body : world.bodies()) {
-    for (const softbody::Vec3& p : world.positions(body)) {
+  for (const sim::Body& body : world.model.bodies) {
+    for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
       for (int axis = 0; axis < 3; ++axis) append_binary(bytes, static_cast<float>(p[axis]));
     }
   }
-  for (const sim::Body& body : world.bodies()) {
+  for (const sim::Body& body : world.model.bodies) {
     for (const softbody::Triangle& f : body.topology.faces) {
       append_binary(bytes, static_cast<std::uint8_t>(3));
       for (int corner : f) append_binary(bytes, static_cast<std::int32_t>(corner + body.first_vertex));

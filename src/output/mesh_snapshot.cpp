@@ -4,7 +4,7 @@
 namespace output {
 
 void snapshot_surfaces(const sim::World& world, std::vector<render::FrameMesh>& meshes) {
-  const std::vector<sim::Body>& bodies = world.bodies();
+  const std::vector<sim::Body>& bodies = world.model.bodies;
   if (meshes.size() != bodies.size()) {
     meshes.assign(bodies.size(), {});
     for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -14,7 +14,7 @@ void snapshot_surfaces(const sim::World& world, std::vector<render::FrameMesh>& 
     }
   }
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const std::span<const softbody::Vec3> x = world.positions(bodies[b]);
+    const std::span<const softbody::Vec3> x = world.model.of(bodies[b], world.state.x);
     std::vector<glm::vec3>& positions = meshes[b].positions;
     positions.resize(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "sim/intent.hpp"
 #include "sim/settings.hpp"
 
 namespace scene {
@@ -16,18 +17,6 @@ using softbody::Vec3;
 
 // A pattern painted on a body in its own (initial-shape) coordinates, so that its rotation shows.
 enum class Pattern { None, Checker, Stripes };
-// Physical intent for a body's constants, resolved against its mesh by sim/intent.hpp.
-struct StiffnessIntent {
-  double youngs_Pa = 0.0;     // "youngs": Young's modulus of the shell material (> 0 picks this)
-  double thickness_m = 1e-3;  // "thickness": shell thickness; membrane stiffness E·t [N/m]
-  double frequency_Hz = 0.0;  // "frequency": the springs' breathing-mode frequency (> 0 picks this)
-};
-struct PressureIntent {
-  double inflation = 0.1;     // "inflation": springs stretched by this fraction at equilibrium (0: no gas)
-  bool start_at_equilibrium = true;  // "start": "equilibrium" (mesh = equilibrium shape, no pop) or
-                                     // "rest" (mesh = the springs' rest shape: the gas inflates it, the pop)
-};
-
 struct Body {
   std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
   std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
@@ -39,9 +28,8 @@ struct Body {
   double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
   Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
-  std::optional<StiffnessIntent> stiffness_intent;  // "stiffness": {...} instead of a number
-  std::optional<double> damping_ratio;              // "damping": {"ratio": ζ}, of the breathing mode's critical
-  std::optional<PressureIntent> pressure_intent;    // "pressure": {"inflation": f, "start": ...}
+  sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...}
+                           // instead of numbers, resolved against the mesh by sim/intent.hpp
   std::array<float, 3> color = {0.80f, 0.12f, 0.07f};  // linear RGB in [0, 1] (a tomato red once sRGB-encoded)
 };
 

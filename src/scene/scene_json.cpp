@@ -205,7 +205,7 @@ void read_stiffness(ObjectReader& body_reader, Body& body) {
     return;
   }
   ObjectReader r(body_reader.at("stiffness"), body_reader.child("stiffness"), body_reader.file());
-  StiffnessIntent intent;
+  sim::StiffnessIntent intent;
   intent.youngs_Pa = r.number("youngs", 0.0, kPositive);
   intent.thickness_m = r.number("thickness", intent.thickness_m, kPositive);
   intent.frequency_Hz = r.number("frequency", 0.0, kPositive);
@@ -213,7 +213,7 @@ void read_stiffness(ObjectReader& body_reader, Body& body) {
     r.fail(body_reader.child("stiffness"), "expected exactly one of \"youngs\" (Pa, with \"thickness\" in m) or \"frequency\" (Hz)", nullptr);
   }
   r.reject_unknown();
-  body.stiffness_intent = intent;
+  body.intent.stiffness = intent;
 }
 
 // "damping": N·s/m, or {"ratio": ζ} (fraction of critical damping of the breathing mode).
@@ -224,7 +224,7 @@ void read_damping(ObjectReader& body_reader, Body& body) {
   }
   ObjectReader r(body_reader.at("damping"), body_reader.child("damping"), body_reader.file());
   if (!r.has("ratio")) r.fail(r.child("ratio"), "expected a damping ratio >= 0 (1: critical)", nullptr);
-  body.damping_ratio = r.number("ratio", 0.0, kNonNegative);
+  body.intent.damping_ratio = r.number("ratio", 0.0, kNonNegative);
   r.reject_unknown();
 }
 
@@ -235,11 +235,11 @@ void read_pressure(ObjectReader& body_reader, Body& body) {
     return;
   }
   ObjectReader r(body_reader.at("pressure"), body_reader.child("pressure"), body_reader.file());
-  PressureIntent intent;
+  sim::PressureIntent intent;
   intent.inflation = r.number("inflation", intent.inflation, Range{[](double x) { return x >= 0.0 && x < 1.0; }, " in [0, 1)"});
   intent.start_at_equilibrium = r.choice<bool>("start", true, {{"equilibrium", true}, {"rest", false}});
   r.reject_unknown();
-  body.pressure_intent = intent;
+  body.intent.pressure = intent;
 }
 
 Body read_body(const json& node, const std::string& path, const fs::path& file) {

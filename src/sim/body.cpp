@@ -3,8 +3,6 @@
 
 #include <algorithm>
 
-#include "mesh/trimesh.hpp"
-#include "scene/scene.hpp"
 #include "sim/forces.hpp"
 
 namespace sim {
@@ -22,8 +20,10 @@ std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::v
   return mass;
 }
 
-Topology build_topology(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass) {
-  Topology topology;
+Body build_body(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass) {
+  Body body;
+  body.vertex_count = static_cast<int>(x.size());
+  Topology& topology = body.topology;
   topology.faces = faces;
   for (const Triangle& f : faces) {
     for (int k = 0; k < 3; ++k) {
@@ -33,21 +33,21 @@ Topology build_topology(const std::vector<Vec3>& x, const std::vector<Triangle>&
     }
   }
   std::sort(topology.edges.begin(), topology.edges.end());  // memory order for the edge loop
-  topology.rest_length_m.reserve(topology.edges.size());
-  for (const auto& [a, b] : topology.edges) topology.rest_length_m.push_back((x[a] - x[b]).norm());
-  topology.mass_kg = lump_masses_by_area(x, faces, total_mass);
-  topology.inverse_mass.reserve(x.size());
-  for (double m : topology.mass_kg) topology.inverse_mass.push_back(1.0 / m);
-  topology.rest_volume_m3 = enclosed_volume(topology.faces, x);
-  topology.total_mass_kg = total_mass;
-  return topology;
+  body.rest.edge_length_m.reserve(topology.edges.size());
+  for (const auto& [a, b] : topology.edges) body.rest.edge_length_m.push_back((x[a] - x[b]).norm());
+  body.rest.mean_edge_m = mean_edge_length(body.rest);
+  body.rest.volume_m3 = enclosed_volume(topology.faces, x);
+  body.masses.kg = lump_masses_by_area(x, faces, total_mass);
+  body.masses.inverse.reserve(x.size());
+  for (double m : body.masses.kg) body.masses.inverse.push_back(1.0 / m);
+  body.masses.total_kg = total_mass;
+  return body;
 }
 
-std::vector<Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::Body& spec) {
-  std::vector<Vec3> x;
-  x.reserve(mesh.vertices.size());
-  for (const Vec3& p : mesh.vertices) x.push_back(spec.position_m + spec.scale * p);
-  return x;
+double mean_edge_length(const RestShape& rest) {
+  double sum = 0.0;
+  for (double length : rest.edge_length_m) sum += length;
+  return sum / static_cast<double>(std::max<std::size_t>(1, rest.edge_length_m.size()));
 }
 
 }  // namespace sim

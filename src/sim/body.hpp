@@ -8,27 +8,29 @@
 
 #include "core/vec.hpp"
 
-namespace mesh {
-struct TriMesh;
-}
-namespace scene {
-struct Body;
-}
-
 namespace sim {
 
 using softbody::Triangle;
 using softbody::Vec3;
 
-// Built once from the mesh; indices are local to the body (0 .. vertex count - 1).
+// A body's mesh connectivity; indices are local to the body (0 .. vertex count - 1).
 struct Topology {
-  std::vector<std::array<int, 2>> edges;  // each unique mesh edge, one spring-damper
-  std::vector<double> rest_length_m;      // per edge, from the initial (scaled) shape
+  std::vector<std::array<int, 2>> edges;  // each unique mesh edge, one spring-damper (a < b, sorted)
   std::vector<Triangle> faces;            // counter-clockwise seen from outside
-  std::vector<double> mass_kg;            // per vertex: a third of each adjacent face's share of the body mass
-  std::vector<double> inverse_mass;       // per vertex, 1 / mass_kg
-  double rest_volume_m3 = 0.0;            // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
-  double total_mass_kg = 0.0;
+};
+
+// The shape the springs and the gas rest at (the initial, placed shape unless intent changed it).
+struct RestShape {
+  std::vector<double> edge_length_m;  // per edge: L0 of its spring
+  double volume_m3 = 0.0;             // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
+  double mean_edge_m = 0.0;           // the mean of edge_length_m: sets body contact's search distance
+};
+
+// Lumped vertex masses: each face gives a third of its area share of the body's mass to each corner.
+struct VertexMasses {
+  std::vector<double> kg;        // per vertex
+  std::vector<double> inverse;   // per vertex, 1 / kg [1/kg]
+  double total_kg = 0.0;
 };
 
 // Per-body constants of the force model.
@@ -40,24 +42,22 @@ struct Params {
 
 struct Body {
   Topology topology;
+  RestShape rest;
+  VertexMasses masses;
   Params params;
   int first_vertex = 0;  // where this body's vertices start in the world's state arrays
   int vertex_count = 0;
 };
 
-// Positions and velocities of every vertex of every body, bodies one after another.
-struct State {
-  std::vector<Vec3> x;  // m
-  std::vector<Vec3> v;  // m/s
-};
-
 // Lumped vertex masses: each triangle gives a third of its area share of `total_mass` to each corner.
 std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass);
 
-// Builds the body's topology from the placed mesh `x` (world coordinates) and its triangles.
-Topology build_topology(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass);
+// The body of the placed mesh `x` (world coordinates) and its triangles: unique edges as springs resting at
+// their present lengths, area-lumped masses of `total_mass` [kg], the rest volume. Params are left zero and
+// first_vertex to the caller.
+Body build_body(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass);
 
-// The mesh placed in the world: scale, then translate by the body's position.
-std::vector<Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::Body& spec);
+// The mean rest edge length [m] (updates rest.mean_edge_m after the rest lengths changed).
+double mean_edge_length(const RestShape& rest);
 
 }  // namespace sim

@@ -17,12 +17,6 @@ constexpr double kThicknessFraction = 0.02; // gap kept between a vertex and ano
 
 constexpr double kCellFraction = 1.0;      // grid cell size over the surface body's mean rest edge
 
-double mean_rest_edge(const Body& body) {
-  double sum = 0.0;
-  for (double length : body.topology.rest_length_m) sum += length;
-  return sum / static_cast<double>(std::max<std::size_t>(1, body.topology.rest_length_m.size()));
-}
-
 struct ClosestPoint {
   Vec3 point;
   Vec3 weights;  // barycentric weights of the triangle's corners
@@ -174,7 +168,7 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
                                                      const ContactMaterial& material) {
-  const double edge = mean_edge_m_[surface_index_];
+  const double edge = surface.rest.mean_edge_m;
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
   // holds the surface triangles there, and only moving vertices there are tested.
@@ -236,10 +230,6 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
                           const ContactMaterial& material) {
   if (bodies.size() < 2) return 0;
-  if (mean_edge_m_.size() != bodies.size()) {
-    mean_edge_m_.clear();
-    for (const Body& body : bodies) mean_edge_m_.push_back(mean_rest_edge(body));
-  }
   boxes_.resize(bodies.size());
   for (const Body& body : bodies) {
     Box& box = boxes_[&body - bodies.data()];
@@ -253,7 +243,7 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       if (a == b) continue;
-      const double margin = kSearchFraction * mean_edge_m_[b];
+      const double margin = kSearchFraction * bodies[b].rest.mean_edge_m;
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
       surface_index_ = b;

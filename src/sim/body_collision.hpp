@@ -11,6 +11,7 @@
 
 #include "sim/body.hpp"
 #include "sim/settings.hpp"
+#include "sim/state.hpp"
 
 namespace sim {
 
@@ -37,7 +38,6 @@ class BodyCollider {
   std::vector<Box> boxes_;          // per body, this step
   std::size_t moving_index_ = 0;    // the body whose vertices are tested
   std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
-  std::vector<double> mean_edge_m_;  // per body, its mean rest edge (bodies never change): sets the search
   // The grid over the pair's overlap region, dense and compressed (counting sort): cell c holds the surface
   // triangles cell_triangles_[cell_start_[c] .. cell_start_[c + 1]), in ascending index order.
   std::vector<int> cell_start_;       // grid_cells_ product + 1 entries

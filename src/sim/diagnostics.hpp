@@ -1,8 +1,8 @@
 // Per-body measurements of a state: centre of mass, volume, and every energy term.
 #pragma once
 
-#include "sim/body.hpp"
-#include "sim/world.hpp"
+#include "sim/model.hpp"
+#include "sim/state.hpp"
 
 namespace sim {
 
@@ -21,7 +21,7 @@ struct BodyDiagnostics {
 
 BodyDiagnostics diagnose(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, const Vec3& gravity);
 
-// Diagnostics of body `index` of the world's current state.
-BodyDiagnostics diagnose(const World& world, std::size_t index);
+// Diagnostics of body `index` of the model in `state`.
+BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t index);
 
 }  // namespace sim

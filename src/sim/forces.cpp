@@ -1,4 +1,4 @@
-// Force loops: one pass each over vertices (gravity), edges (springs, dampers) and faces (pressure).
+// Force loops: one pass each over vertices (gravity), edges (springs and dampers, fused) and faces (gas).
 #include "sim/forces.hpp"
 
 #include <algorithm>
@@ -6,37 +6,8 @@
 
 namespace sim {
 
-void add_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
-  for (std::size_t i = 0; i < force.size(); ++i) force[i] += mass_kg[i] * g;
-}
-
-void set_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
+void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
   for (std::size_t i = 0; i < force.size(); ++i) force[i] = mass_kg[i] * g;
-}
-
-void add_springs(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
-                 std::span<const Vec3> x, std::span<Vec3> force) {
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const auto [i, j] = edges[e];
-    const Vec3 d = x[i] - x[j];
-    const double length = d.norm();
-    if (length == 0.0) continue;  // coincident endpoints: no direction to push along
-    const Vec3 f = (-k * (length - rest_length_m[e]) / length) * d;  // -k (|d| - L0) d̂
-    force[i] += f;
-    force[j] -= f;
-  }
-}
-
-void add_dampers(std::span<const std::array<int, 2>> edges, double c, std::span<const Vec3> x,
-                 std::span<const Vec3> v, std::span<Vec3> force) {
-  for (const auto& [i, j] : edges) {
-    const Vec3 d = x[i] - x[j];
-    const double length_squared = d.squaredNorm();
-    if (length_squared == 0.0) continue;
-    const Vec3 f = (-c * (v[i] - v[j]).dot(d) / length_squared) * d;  // -c ((v_i - v_j)·d̂) d̂
-    force[i] += f;
-    force[j] -= f;
-  }
 }
 
 namespace {
@@ -117,7 +88,7 @@ double guarded_volume(double volume_m3, double rest_volume_m3) {
   return std::max(volume_m3, kMinimumVolumeFraction * rest_volume_m3);
 }
 
-double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums) {
+double volume_and_area_sums(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums) {
   // Pass over the faces: twice the area vector of each face, 2A_f·n̂ = (x_b − x_a)×(x_c − x_a), summed at
   // its three corners: g_i = Σ_{f ∋ i} 2A_f·n̂.
   area_sums.assign(x.size(), Vec3::Zero());
@@ -136,15 +107,6 @@ double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x
 
 double gas_force_per_area_sum(double nRT_J, double volume_m3, double rest_volume_m3) {
   return nRT_J / guarded_volume(volume_m3, rest_volume_m3) / 6.0;  // P = nRT/V [Pa], a sixth of 2A·n̂ per corner
-}
-
-double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_sums, std::span<Vec3> force) {
-  const double volume = sum_area_vectors(faces, x, area_sums);
-  // Then per vertex: P·A·n̂ of each adjacent face split over its three corners = (nRT / V) · g_i / 6.
-  const double per_corner = gas_force_per_area_sum(nRT_J, volume, rest_volume_m3);
-  for (std::size_t i = 0; i < x.size(); ++i) force[i] += per_corner * area_sums[i];
-  return volume;
 }
 
 }  // namespace sim

@@ -1,5 +1,7 @@
-// The force model of Matyka & Ollila (2003): gravity, spring-dampers along edges, ideal-gas pressure.
-// Every function adds into `force` (N); indices are local to one body.
+// The force model of Matyka & Ollila (2003), one function per force: gravity, spring-dampers along edges
+// (springs and dampers in one fused pass), ideal-gas pressure. Indices are local to one body; forces in N.
+// sim::Dynamics assembles them; tests/reference_forces.hpp holds the unfused springs and dampers to check
+// the fused pass against.
 #pragma once
 
 #include <array>
@@ -13,23 +15,13 @@ namespace sim {
 using softbody::Triangle;
 using softbody::Vec3;
 
-// Gravity: f_i += m_i g.
-void add_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
+// Gravity as the first term of the sum: f_i = m_i g (overwrites `force`, so no separate zeroing pass).
+void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
 
-// Gravity as the first term of the sum: f_i = m_i g (overwrites `force`).
-void set_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
-
-// Hooke springs: f_i += -k (|d| - L0) d̂ with d = x_i - x_j, and the opposite on j.
-void add_springs(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
-                 std::span<const Vec3> x, std::span<Vec3> force);
-
-// Dampers along the springs: f_i += -c ((v_i - v_j)·d̂) d̂, and the opposite on j.
-void add_dampers(std::span<const std::array<int, 2>> edges, double c, std::span<const Vec3> x,
-                 std::span<const Vec3> v, std::span<Vec3> force);
-
-// Springs and dampers in one pass over the edges (what World uses): with d = x_i - x_j, L = |d|,
+// Hooke springs, f_i += -k (|d| - L0) d̂ with d = x_i - x_j, and dampers along them, f_i += -c ((v_i - v_j)·d̂) d̂,
+// the opposite on j, in one fused pass over the edges: with L = |d|,
 //   f_i = -k (L - L0) d/L - c ((v_i - v_j)·d) d/L²  =  [(-k (L - L0) L - c (v_i - v_j)·d) / L²] d,
-// one square root and one division per edge. Equal to add_springs + add_dampers up to round-off. The
+// one square root and one division per edge (the two forces one at a time agree to round-off). The
 // edges go in blocks: gather the differences, compute the coefficients in a loop without indirection
 // (which the compiler vectorises), then scatter, so results do not depend on the vector width.
 void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
@@ -43,19 +35,14 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
 double guarded_volume(double volume_m3, double rest_volume_m3);
 
 // The gas's face pass: area_sums_i = Σ_{f ∋ i} 2A_f·n̂_f, twice the area vectors of the faces around each
-// vertex (sized here), and the enclosed volume from the same sums, V = Σ_i x_i·g_i / 18 [m³].
-double sum_area_vectors(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums);
+// vertex (sized here, no allocation once sized), and the enclosed volume from the same sums,
+// V = Σ_i x_i·g_i / 18 [m³], which it returns. ∂V/∂x_i = g_i / 6.
+double volume_and_area_sums(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& area_sums);
 
-// The gas force on a vertex per unit of its area sum: f_i = (nRT / V) g_i / 6, P·A·n̂ of each face split
-// over its three corners [N/m²]; V is held at guarded_volume().
+// Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each corner,
+// f_i = (nRT / V) g_i / 6 with g the area sums above: exactly +nRT ∂(ln V)/∂x_i, the negative gradient of
+// E_gas = −nRT ln V, so the forces on a closed mesh sum to zero. Returns that factor, the gas force on a
+// vertex per unit of its area sum [N/m²]; V is held at guarded_volume().
 double gas_force_per_area_sum(double nRT_J, double volume_m3, double rest_volume_m3);
-
-// Ideal gas: P = nRT / V; each face pushes with P·A·n̂ = P·½(x_b − x_a)×(x_c − x_a), a third on each
-// corner. This is exactly +nRT ∂(ln V)/∂x_i, the negative gradient of E_gas = −nRT ln V, so the forces
-// on a closed mesh sum to zero. `area_sums` is scratch of one entry per vertex (the sum of twice the area
-// vectors of its faces, from which V follows too); sized here, so no allocation once it has its size.
-// Returns V.
-double add_pressure(std::span<const Triangle> faces, double nRT_J, double rest_volume_m3, std::span<const Vec3> x,
-                    std::vector<Vec3>& area_sums, std::span<Vec3> force);
 
 }  // namespace sim

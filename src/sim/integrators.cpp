@@ -1,4 +1,4 @@
-// The integrator factory: scene names to implementations (one file each under integrators/).
+// The integrator factory: the settings' kinds to implementations (one file each under integrators/).
 #include "sim/integrators.hpp"
 
 #include "sim/integrators/dormand_prince.hpp"
@@ -10,19 +10,14 @@
 
 namespace sim {
 
-void Dynamics::first_order_step(State& state, double dt, FirstOrderUpdate update, std::vector<Vec3>& scratch) {
-  accelerations(state, scratch);
-  for (std::size_t i = 0; i < state.x.size(); ++i) apply_first_order_update(update, dt, scratch[i], state.x[i], state.v[i]);
-}
-
-std::unique_ptr<Integrator> make_integrator(sim::IntegratorKind kind, double tolerance) {
+std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double tolerance) {
   switch (kind) {
-    case sim::IntegratorKind::Euler: return std::make_unique<ForwardEuler>();
-    case sim::IntegratorKind::Symplectic: return std::make_unique<SymplecticEuler>();
-    case sim::IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
-    case sim::IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
-    case sim::IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
-    case sim::IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
+    case IntegratorKind::Euler: return std::make_unique<ForwardEuler>();
+    case IntegratorKind::Symplectic: return std::make_unique<SymplecticEuler>();
+    case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
+    case IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
+    case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
+    case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
   }
   return nullptr;
 }

@@ -11,15 +11,34 @@
 
 #include <span>
 
-#include "scene/scene.hpp"
+#include <optional>
+#include <string>
+
 #include "sim/body.hpp"
 
 namespace sim {
 
-// λ_b of the breathing mode of the springs with k = 1 [1/kg].
-double breathing_lambda(const Topology& topology, std::span<const Vec3> x);
+// What the user means by a body's stiffness, damping and gas, instead of the constants themselves.
+struct StiffnessIntent {
+  double youngs_Pa = 0.0;     // "youngs": Young's modulus of the shell material (> 0 picks this)
+  double thickness_m = 1e-3;  // "thickness": shell thickness; membrane stiffness E·t [N/m]
+  double frequency_Hz = 0.0;  // "frequency": the springs' breathing-mode frequency (> 0 picks this)
+};
+struct PressureIntent {
+  double inflation = 0.1;     // "inflation": springs stretched by this fraction at equilibrium (0: no gas)
+  bool start_at_equilibrium = true;  // "start": "equilibrium" (mesh = equilibrium shape, no pop) or
+                                     // "rest" (mesh = the springs' rest shape: the gas inflates it, the pop)
+};
+struct BodyIntent {
+  std::optional<StiffnessIntent> stiffness;  // instead of Params::stiffness_N_per_m
+  std::optional<double> damping_ratio;       // ζ, of the breathing mode's critical damping
+  std::optional<PressureIntent> pressure;    // instead of Params::pressure_J
+};
 
-// The body's force constants from `spec`: raw numbers where given, intent resolved otherwise:
+// λ_b of the breathing mode of the springs with k = 1 [1/kg].
+double breathing_lambda(const Body& body, std::span<const Vec3> x);
+
+// The body's force constants: the raw numbers, with the intent resolved where it is given:
 //   "youngs" E, "thickness" t:  k = (√3/2) E t   (a triangular spring lattice has the 2D Young's modulus
 //                                                 2k/√3 at any edge length; Ostoja-Starzewski 2002)
 //   "frequency" f:              k = (2π f)² / λ, the breathing mode at f: λ = λ_b for springs alone;
@@ -31,8 +50,10 @@ double breathing_lambda(const Topology& topology, std::span<const Vec3> x);
 //                                stretched by f (mean strain) at the initial shape, vertex by vertex
 //                                (start "equilibrium": no pop), or the rest lengths kept and nRT chosen
 //                                for that equilibrium (start "rest": the body inflates, the paper's pop).
-// May change topology.rest_length_m. Throws softbody::InputError (naming `key_path`) when the tension
-// solve needs a negative rest length.
-Params resolve_params(const scene::Body& spec, Topology& topology, std::span<const Vec3> x, const std::string& key_path);
+// `raw` holds the constants given as numbers. May change body.rest.edge_length_m (and its mean). Throws
+// softbody::InputError (naming `key_path`, e.g. "scene.json: bodies.0") when the tension solve needs a negative
+// rest length.
+Params resolve_params(const Params& raw, const BodyIntent& intent, Body& body, std::span<const Vec3> x,
+                      const std::string& key_path);
 
 }  // namespace sim

@@ -8,7 +8,6 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/errors.hpp"
-#include "sim/world.hpp"
 
 namespace sim {
 namespace {
@@ -36,7 +35,7 @@ void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<
     if (length == 0.0) continue;
     const Vec3 n = d / length;
     const Vec3 du = u[i] - u[j];
-    const double g = geometric_share(length, t.rest_length_m[e]);
+    const double g = geometric_share(length, body.rest.edge_length_m[e]);
     const Vec3 f = n * n.dot(du) + g * (du - n * n.dot(du));
     y[i] += f;
     y[j] -= f;
@@ -45,7 +44,7 @@ void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<
 
 // λ_max of M⁻¹K (k = 1) by power iterations with the M-weighted Rayleigh quotient uᵀKu / uᵀMu [1/kg].
 double power_lambda(const Body& body, std::span<const Vec3> x) {
-  const std::vector<double>& m = body.topology.mass_kg;
+  const std::vector<double>& m = body.masses.kg;
   std::vector<Vec3> u(x.size()), y;
   for (std::size_t i = 0; i < u.size(); ++i) {
     const double s = static_cast<double>(i);  // deterministic start with every mode present
@@ -79,12 +78,12 @@ double gershgorin_lambda(const Body& body, std::span<const Vec3> x) {
   std::vector<double> row(x.size(), 0.0);
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [i, j] = t.edges[e];
-    const double w = 2.0 * std::max(1.0, geometric_share((x[i] - x[j]).norm(), t.rest_length_m[e]));
+    const double w = 2.0 * std::max(1.0, geometric_share((x[i] - x[j]).norm(), body.rest.edge_length_m[e]));
     row[i] += w;
     row[j] += w;
   }
   double lambda = 0.0;
-  for (std::size_t i = 0; i < row.size(); ++i) lambda = std::max(lambda, row[i] / t.mass_kg[i]);
+  for (std::size_t i = 0; i < row.size(); ++i) lambda = std::max(lambda, row[i] / body.masses.kg[i]);
   return lambda;
 }
 
@@ -107,11 +106,11 @@ double gas_omega2(const Body& body, std::span<const Vec3> x) {
       dV[i] += area_vector / 3.0;  // ∂V/∂x_i = Σ_f A_f n̂_f / 3
     }
   }
-  const double volume = std::max(six_volume / 6.0, 1e-3 * t.rest_volume_m3);
+  const double volume = std::max(six_volume / 6.0, 1e-3 * body.rest.volume_m3);
   double local_max = 0.0, breathing = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    local_max = std::max(local_max, local[i] / t.mass_kg[i]);
-    breathing += dV[i].squaredNorm() / t.mass_kg[i];
+    local_max = std::max(local_max, local[i] / body.masses.kg[i]);
+    breathing += dV[i].squaredNorm() / body.masses.kg[i];
   }
   return nRT / volume * local_max + nRT / (volume * volume) * breathing;
 }
@@ -213,9 +212,9 @@ BodyStats body_stats(const Body& body, std::span<const Vec3> x) {
   }
   s.valence_min = *std::min_element(valence.begin(), valence.end());
   s.valence_max = *std::max_element(valence.begin(), valence.end());
-  s.mass_min_kg = *std::min_element(t.mass_kg.begin(), t.mass_kg.end());
-  s.mass_max_kg = *std::max_element(t.mass_kg.begin(), t.mass_kg.end());
-  s.rest_volume_m3 = t.rest_volume_m3;
+  s.mass_min_kg = *std::min_element(body.masses.kg.begin(), body.masses.kg.end());
+  s.mass_max_kg = *std::max_element(body.masses.kg.begin(), body.masses.kg.end());
+  s.rest_volume_m3 = body.rest.volume_m3;
   return s;
 }
 
@@ -252,17 +251,17 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   return margin * limit;
 }
 
-StabilityEstimate estimate_stability(const World& world) {
-  StabilityEstimate estimate = estimate_stability(world.bodies(), world.state().x);
-  if (!world.floor()) return estimate;
-  const double g = world.gravity().norm();
-  for (const Body& body : world.bodies()) {
-    const auto x = world.positions(body);
-    const auto v = world.velocities(body);
+StabilityEstimate estimate_stability(const Model& model, const State& state) {
+  StabilityEstimate estimate = estimate_stability(model.bodies, state.x);
+  if (!model.floor) return estimate;
+  const double g = model.gravity_m_per_s2.norm();
+  for (const Body& body : model.bodies) {
+    const auto x = model.of(body, state.x);
+    const auto v = model.of(body, state.v);
     double speed = 0.0, height = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       speed = std::max(speed, v[i].norm());
-      height = std::max(height, x[i].y() - world.floor()->height_m);
+      height = std::max(height, x[i].y() - model.floor->height_m);
     }
     speed += std::sqrt(2.0 * g * std::max(0.0, height));  // m/s, v² = 2 g h
     if (speed > 0.0) {
@@ -270,7 +269,7 @@ StabilityEstimate estimate_stability(const World& world) {
       estimate.travel_dt_s = std::min(estimate.travel_dt_s, travel);
     }
   }
-  scale_for_floor_contact(estimate, world.floor()->contact);
+  scale_for_floor_contact(estimate, model.floor->contact);
   for (double& dt : estimate.stable_dt_s) dt = std::min(dt, estimate.travel_dt_s);
   return estimate;
 }
@@ -319,22 +318,6 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
   }
   if (limit == StabilityEstimate::kUnlimited) return frame_interval_s / 4.0;
   return std::min(kAutoDtSafety * limit, frame_interval_s);
-}
-
-std::string stable_dt_advice(const StabilityEstimate& estimate, IntegratorKind integrator) {
-  auto words = [](double dt) {
-    char text[64];
-    if (dt == 0.0) return std::string("no stable dt (needs damping)");
-    if (dt == StabilityEstimate::kUnlimited) return std::string("any dt");
-    std::snprintf(text, sizeof text, "dt <= %.3g s", dt);
-    return std::string(text);
-  };
-  std::string advice = "estimated stable: " + words(estimate.stable_dt(integrator)) + " for " +
-                       to_string(integrator);
-  if (integrator != IntegratorKind::Implicit) {
-    advice += ", " + words(estimate.stable_dt(IntegratorKind::Implicit)) + " for implicit";
-  }
-  return advice;
 }
 
 }  // namespace sim

@@ -26,12 +26,12 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "sim/settings.hpp"
 #include "sim/body.hpp"
+#include "sim/model.hpp"
+#include "sim/state.hpp"
 
 namespace sim {
-
-class World;
 
 // What the estimate knows about one body's fastest modes.
 struct ModeBounds {
@@ -103,9 +103,9 @@ constexpr double kPaperEulerFractionLightDamping = 0.75;  // of c/k, ζ_max < kP
 constexpr double kPaperEulerFractionHeavyDamping = 0.27;  // of c/k, ζ_max ≥ kPaperEulerZeta
 constexpr double kPaperEulerZeta = 0.5;
 
-// The estimate for the world's current state (with the contact limit), or for bodies at positions `x`
+// The estimate for a model in `state` (with the contact limit), or for bodies at positions `x`
 // (all bodies' vertices; spring, damper and gas limits only).
-StabilityEstimate estimate_stability(const World& world);
+StabilityEstimate estimate_stability(const Model& model, const State& state);
 StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<const Vec3> x);
 
 // The dt `solver.dt: "auto"` uses: kAutoDtSafety × the estimate; the implicit method, whose springs have
@@ -115,10 +115,8 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
                const std::string& scene_file);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
-// kPaperEuler*); the travel limit needs velocities and is applied by estimate_stability(world).
+// kPaperEuler*); the travel limit needs velocities and is applied by estimate_stability(model, state).
 void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact);
 
-// "dt ≤ 1.23e-04 s (euler)"-style advice for a diverged run: the estimate for `integrator`, and implicit's.
-std::string stable_dt_advice(const StabilityEstimate& estimate, IntegratorKind integrator);
 
 }  // namespace sim

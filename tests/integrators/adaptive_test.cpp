@@ -26,16 +26,16 @@ class TimeRecorder final : public frames::FrameSink {
  public:
   void on_frame(int, double time_s, const sim::World& world) override {
     announced.push_back(time_s);
-    world_time.push_back(world.time_s());
+    world_time.push_back(world.state.time_s);
     lowest_y = std::min(lowest_y, lowest(world));
     double mean_y = 0.0;
-    for (const softbody::Vec3& x : world.state().x) mean_y += x.y() / static_cast<double>(world.state().x.size());
+    for (const softbody::Vec3& x : world.state.x) mean_y += x.y() / static_cast<double>(world.state.x.size());
     centre_y.push_back(mean_y);
   }
   void finish(bool) override {}
   static double lowest(const sim::World& world) {
     double y = 1e300;
-    for (const softbody::Vec3& x : world.state().x) y = std::min(y, x.y());
+    for (const softbody::Vec3& x : world.state.x) y = std::min(y, x.y());
     return y;
   }
   std::vector<double> announced, world_time, centre_y;
@@ -52,8 +52,8 @@ TEST(Rk45FrameLoop, LandsExactlyOnEveryFrameTimeAndCountsSteps) {
   for (std::size_t f = 0; f < recorder.announced.size(); ++f) {
     EXPECT_EQ(recorder.world_time[f], recorder.announced[f]) << "frame " << f;  // exactly, not nearly
   }
-  EXPECT_EQ(stats.steps, world.step_count());
-  EXPECT_EQ(stats.rejected_steps, world.rejected_step_count());
+  EXPECT_EQ(stats.steps, world.state.steps);
+  EXPECT_EQ(stats.rejected_steps, world.state.rejected_steps);
   EXPECT_GT(stats.steps, 30);
   EXPECT_GE(recorder.lowest_y, 0.0) << "the contact projection runs after every accepted step";
 }
@@ -85,7 +85,7 @@ TEST_P(EveryIntegrator, RerunsAreBitIdentical) {
     sim::World world = make_world(kBounce, GetParam(), 1e-5);
     const frames::FrameClock clock = frames::plan_frames(0.6, 30, 2e-4);
     frames::run_frames(world, clock, {});
-    return world.state();
+    return world.state;
   };
   const sim::State a = run(), b = run();
   ASSERT_EQ(a.x.size(), b.x.size());

@@ -29,7 +29,7 @@ constexpr double kSpan = 0.128;  // s
 sim::State dormand_prince_state(double dt) {
   sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45);
   run_for(world, kSpan, dt);
-  return world.state();
+  return world.state;
 }
 
 // The reference: fifth order at 2 µs, 50× finer than the finest rk4 step. Computed once; its distance to
@@ -83,7 +83,7 @@ TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
   for (double dt = c.coarsest_dt; dt >= finest_dt * 0.99; dt /= 2.0) {
     sim::World world = make_world(kSmoothScene, c.integrator);
     run_for(world, kSpan, dt);
-    errors.push_back(rms_position_difference(world.state(), exact));
+    errors.push_back(rms_position_difference(world.state, exact));
   }
   const double order = observed_order(errors);
   std::printf("%-10s", sim::to_string(c.integrator).c_str());
@@ -112,9 +112,9 @@ TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
   for (double tolerance = 1e-4; tolerance >= 0.99e-9; tolerance /= 10.0) {
     sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45, tolerance);
     world.advance_to(kSpan);
-    const double error = rms_position_difference(world.state(), reference());
+    const double error = rms_position_difference(world.state, reference());
     std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,
-                world.step_count(), world.rejected_step_count());
+                world.state.steps, world.state.rejected_steps);
     log_tolerance.push_back(std::log10(tolerance));
     log_error.push_back(std::log10(error));
     EXPECT_LT(error, 10.0 * tolerance) << "the error should stay near the requested tolerance";

@@ -39,7 +39,7 @@ EnergyTrace trace_energy(sim::IntegratorKind integrator, double dt, long long st
   for (long long s = 1; s <= steps; ++s) {
     world.step(dt);
     if (s % kSampleEvery != 0) continue;
-    const sim::BodyDiagnostics d = sim::diagnose(world, 0);
+    const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
     const double deviation = d.total_J() - e0;
     trace.max_kinetic_J = std::max(trace.max_kinetic_J, d.kinetic_J);
     trace.max_deviation_J = std::max(trace.max_deviation_J, std::abs(deviation));

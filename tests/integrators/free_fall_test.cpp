@@ -40,9 +40,9 @@ class ExactFreeFall : public ::testing::TestWithParam<sim::IntegratorKind> {};
 
 TEST_P(ExactFreeFall, CentreOfMassOfAThrownBreathingSphere) {
   sim::World world = make_world(kThrownSphere, GetParam());
-  const Vec3 com0 = sim::diagnose(world, 0).com_m;
+  const Vec3 com0 = sim::diagnose(world.model, world.state, 0).com_m;
   integrator_tests::run_for(world, kDuration, kDt);
-  const sim::BodyDiagnostics d = sim::diagnose(world, 0);
+  const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
   const double error = (d.com_m - free_fall(com0, kDuration)).norm();
   const double velocity_error = (d.com_velocity_m_per_s - (kV0 + kG * kDuration)).norm();
   std::printf("%s: |COM - exact| = %.2e m, |v_COM - exact| = %.2e m/s\n", sim::to_string(GetParam()).c_str(),
@@ -53,11 +53,11 @@ TEST_P(ExactFreeFall, CentreOfMassOfAThrownBreathingSphere) {
 
 TEST_P(ExactFreeFall, EveryVertexUnderGravityAlone) {
   sim::World world = make_world(kDust, GetParam());
-  const std::vector<Vec3> x0 = world.state().x;
+  const std::vector<Vec3> x0 = world.state.x;
   integrator_tests::run_for(world, kDuration, kDt);
   double worst = 0.0;
   for (std::size_t i = 0; i < x0.size(); ++i) {
-    worst = std::max(worst, (world.state().x[i] - free_fall(x0[i], kDuration)).norm());
+    worst = std::max(worst, (world.state.x[i] - free_fall(x0[i], kDuration)).norm());
   }
   EXPECT_LT(worst, kRoundOff);
 }
@@ -73,9 +73,9 @@ INSTANTIATE_TEST_SUITE_P(SecondOrderAndAbove, ExactFreeFall,
 TEST(FirstOrderFreeFall, MissesByHalfGHT) {
   for (sim::IntegratorKind integrator : {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic}) {
     sim::World world = make_world(kDust, integrator);
-    const Vec3 x0 = world.state().x[0];
+    const Vec3 x0 = world.state.x[0];
     integrator_tests::run_for(world, kDuration, kDt);
-    const double error = (world.state().x[0] - free_fall(x0, kDuration)).norm();
+    const double error = (world.state.x[0] - free_fall(x0, kDuration)).norm();
     EXPECT_NEAR(error, 0.5 * 9.81 * kDt * kDuration, 1e-9) << sim::to_string(integrator);
   }
 }

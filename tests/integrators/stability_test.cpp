@@ -29,7 +29,7 @@ constexpr int kSteps = 100;  // 1.4 s at the large step
 // Every mode excited: a deterministic, non-smooth initial velocity field of about 0.5 m/s.
 sim::World shaken_world(sim::IntegratorKind integrator) {
   sim::World world = make_world(kStiffSphere, integrator);
-  std::vector<Vec3>& v = world.state().v;
+  std::vector<Vec3>& v = world.state.v;
   for (std::size_t i = 0; i < v.size(); ++i) {
     const double s = static_cast<double>(i);
     v[i] = 0.5 * Vec3(std::sin(7.1 * s), std::cos(3.3 * s), std::sin(5.7 * s + 1.0));

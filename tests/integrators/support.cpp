@@ -1,4 +1,5 @@
 // Integrator test helpers.
+#include "setup/build_world.hpp"
 #include "support.hpp"
 
 #include <cmath>
@@ -22,7 +23,7 @@ sim::World make_world(const std::string& json_text, sim::IntegratorKind integrat
   solver.integrator = integrator;
   solver.tolerance = tolerance;
   std::vector<std::string> notes;
-  return sim::build_world(scene_with_solver(json_text, solver), notes);
+  return setup::build_world(scene_with_solver(json_text, solver), notes);
 }
 
 void run_for(sim::World& world, double duration_s, double dt) {
@@ -38,7 +39,7 @@ double rms_position_difference(const sim::State& a, const sim::State& b) {
 
 double total_energy(const sim::World& world) {
   double energy = 0.0;
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) energy += sim::diagnose(world, b).total_J();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) energy += sim::diagnose(world.model, world.state, b).total_J();
   return energy;
 }
 

@@ -13,7 +13,7 @@
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
 #include "sim/diagnostics.hpp"
-#include "sim/world.hpp"
+#include "setup/build_world.hpp"
 #include "test_context.hpp"
 
 namespace {
@@ -21,7 +21,7 @@ namespace {
 // Records each frame's centre of mass, for comparison with where the body appears in the image.
 class CentreOfMassSink final : public frames::FrameSink {
  public:
-  void on_frame(int, double, const sim::World& world) override { centres.push_back(sim::diagnose(world, 0).com_m); }
+  void on_frame(int, double, const sim::World& world) override { centres.push_back(sim::diagnose(world.model, world.state, 0).com_m); }
   void finish(bool) override {}
   std::vector<softbody::Vec3> centres;
 };
@@ -68,7 +68,7 @@ class RenderPipeline : public testing::Test {
     run_->dir = render_test::fresh_output_dir("pipeline");
     const frames::FrameClock clock = frames::plan_frames(run_->scene.duration_s, run_->scene.fps, run_->scene.solver.dt_s);
     std::vector<std::string> notes;
-    sim::World world = sim::build_world(run_->scene, notes);
+    sim::World world = setup::build_world(run_->scene, notes);
     render::Renderer renderer(render_test::gl_context(), render::settings_from_scene(run_->scene));
     run_->camera = renderer.camera();
 

@@ -11,7 +11,7 @@
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
 #include "scene/scene_json.hpp"
-#include "sim/world.hpp"
+#include "setup/build_world.hpp"
 #include "test_context.hpp"
 
 namespace {
@@ -23,7 +23,7 @@ const render_test::Tolerance kGoldenTolerance{16, 0.003};
 softbody::Image scene_at(const std::string& scene_file, double time_s) {
   const scene::Scene s = scene::load_scene(std::filesystem::path(SOFTBODY_SOURCE_DIR) / "scenes" / scene_file);
   std::vector<std::string> notes;
-  sim::World world = sim::build_world(s, notes);
+  sim::World world = setup::build_world(s, notes);
   for (long long n = std::llround(time_s / s.solver.dt_s); n > 0; --n) world.step(s.solver.dt_s);
   render::RenderSettings settings = render::settings_from_scene(s);
   settings.width_px = 160;

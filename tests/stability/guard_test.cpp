@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "sim/diagnostics.hpp"
+#include "sim/guard.hpp"
 #include "sim/stability.hpp"
 #include "test_helpers.hpp"
 
@@ -46,9 +47,9 @@ TEST(Guard, MessageSaysWhenWhereWhatAndWhichDtIsStable) {
 // Turning the ball inside out (a mirror image) is caught as an inverted volume on the next step.
 TEST(Guard, InvertedVolumeIsCaught) {
   sim::World world = world_from_text(ball(R"({ "integrator": "symplectic" })"));
-  for (softbody::Vec3& x : world.state().x) x.x() = -x.x();
+  for (softbody::Vec3& x : world.state.x) x.x() = -x.x();
   // The volume is checked every kFullCheckInterval steps (and before every frame).
-  const std::string message = diverge_message(world, 1e-4, sim::World::kFullCheckInterval);
+  const std::string message = diverge_message(world, 1e-4, sim::kFullCheckInterval);
   EXPECT_NE(message.find("volume inverted"), std::string::npos) << message;
 }
 
@@ -57,9 +58,9 @@ TEST(Guard, InvertedVolumeIsCaught) {
 TEST(Guard, RetrySplitsFailedStepsInsteadOfStopping) {
   sim::World world = world_from_text(ball(R"({ "integrator": "euler", "retry": true })"));
   EXPECT_NO_THROW(testing_support::run_steps(world, 5000, 2.0e-4));
-  EXPECT_GT(world.retried_step_count(), 0);
-  EXPECT_EQ(world.substeps(), 2) << "half of 2e-4 s is below the 1.67e-4 s limit";
-  EXPECT_TRUE(world.state().x[0].allFinite());
+  EXPECT_GT(world.state.retried_steps, 0);
+  EXPECT_EQ(world.state.substeps, 2) << "half of 2e-4 s is below the 1.67e-4 s limit";
+  EXPECT_TRUE(world.state.x[0].allFinite());
 }
 
 // The CLI: exit status 3, the message on stderr, and the CSV keeps the frames before, all finite.
@@ -86,18 +87,18 @@ TEST(Guard, FiftyMetresPerSecondImpactDoesNotTunnel) {
     "solver": { "integrator": "symplectic" },
     "bodies": [ { "mesh": "icosphere:2", "position": [0, 1.5, 0], "velocity": [0, -50, 0],
                   "stiffness": 3e5, "damping": 5, "pressure": 300 } ] })");
-  const double dt = sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Symplectic);
+  const double dt = sim::kAutoDtSafety * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
   double lowest_com = 10.0;
   const int steps = static_cast<int>(0.2 / dt);
   for (int s = 0; s < steps; ++s) {
     world.step(dt);
-    lowest_com = std::min(lowest_com, sim::diagnose(world, 0).com_m.y());
-    ASSERT_GE(sim::diagnose(world, 0).min_y_m, 0.0) << "a vertex below the floor after step " << s;
+    lowest_com = std::min(lowest_com, sim::diagnose(world.model, world.state, 0).com_m.y());
+    ASSERT_GE(sim::diagnose(world.model, world.state, 0).min_y_m, 0.0) << "a vertex below the floor after step " << s;
   }
   std::printf("dt = %.3g s: lowest centre of mass %.3f m, after 0.2 s %.3f m moving at %.2f m/s\n", dt, lowest_com,
-              sim::diagnose(world, 0).com_m.y(), sim::diagnose(world, 0).com_velocity_m_per_s.y());
+              sim::diagnose(world.model, world.state, 0).com_m.y(), sim::diagnose(world.model, world.state, 0).com_velocity_m_per_s.y());
   EXPECT_GT(lowest_com, 0.0);
-  EXPECT_GT(sim::diagnose(world, 0).com_velocity_m_per_s.y(), 0.0) << "it bounced back up";
+  EXPECT_GT(sim::diagnose(world.model, world.state, 0).com_velocity_m_per_s.y(), 0.0) << "it bounced back up";
 }
 
 }  // namespace

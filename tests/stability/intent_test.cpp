@@ -25,22 +25,22 @@ std::string shell(const std::string& mesh, const std::string& start, const std::
 }
 
 double auto_dt(const sim::World& world) {
-  return sim::kAutoDtSafety * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Symplectic);
+  return sim::kAutoDtSafety * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
 }
 
 // Youngs and thickness give k = (√3/2) E t; a damping ratio gives c = 2 ζ k / ω_b.
 TEST(Intent, YoungsModulusAndDampingRatioGiveTheLatticeConstants) {
   sim::World world = world_from_text(shell("icosphere:3", "equilibrium", "[0, 0, 0]", ""));
-  const sim::Body& body = world.bodies()[0];
+  const sim::Body& body = world.model.bodies[0];
   EXPECT_NEAR(body.params.stiffness_N_per_m, std::sqrt(3.0) / 2.0 * 2e6 * 0.002, 1e-9);
   EXPECT_GT(body.params.pressure_J, 0.0);
   // ζ of the breathing mode, whose stiffness includes the gas at its equilibrium: with I = Σ m |x − c|²,
   // ω_b² = k λ_b + 3 nRT / I, and the dampers give it the rate c λ_b = 2 ζ ω_b.
-  const auto x = world.positions(body);
-  const softbody::Vec3 centre = sim::diagnose(world, 0).com_m;
+  const auto x = world.model.of(body, world.state.x);
+  const softbody::Vec3 centre = sim::diagnose(world.model, world.state, 0).com_m;
   double inertia = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) inertia += body.topology.mass_kg[i] * (x[i] - centre).squaredNorm();
-  const double lambda_b = sim::breathing_lambda(body.topology, x);
+  for (std::size_t i = 0; i < x.size(); ++i) inertia += body.masses.kg[i] * (x[i] - centre).squaredNorm();
+  const double lambda_b = sim::breathing_lambda(body, x);
   const double omega_b = std::sqrt(body.params.stiffness_N_per_m * lambda_b + 3.0 * body.params.pressure_J / inertia);
   EXPECT_NEAR(body.params.damping_N_s_per_m, 2.0 * 0.1 * omega_b / lambda_b, 1e-9);
 }
@@ -49,14 +49,14 @@ TEST(Intent, YoungsModulusAndDampingRatioGiveTheLatticeConstants) {
 // vertex. Tolerances: the centre of mass cannot move at all (forces sum to zero), the volume by < 1e-6.
 TEST(Intent, EquilibriumStartDoesNotMove) {
   sim::World world = world_from_text(shell("icosphere:3", "equilibrium", "[0, 0, 0]", ""));
-  const sim::BodyDiagnostics start = sim::diagnose(world, 0);
+  const sim::BodyDiagnostics start = sim::diagnose(world.model, world.state, 0);
   const double dt = auto_dt(world);
   double worst_volume = 0.0;
   for (int s = 0; s < static_cast<int>(1.0 / dt); ++s) {
     world.step(dt);
-    worst_volume = std::max(worst_volume, std::abs(sim::diagnose(world, 0).volume_m3 / start.volume_m3 - 1.0));
+    worst_volume = std::max(worst_volume, std::abs(sim::diagnose(world.model, world.state, 0).volume_m3 / start.volume_m3 - 1.0));
   }
-  const sim::BodyDiagnostics end = sim::diagnose(world, 0);
+  const sim::BodyDiagnostics end = sim::diagnose(world.model, world.state, 0);
   std::printf("equilibrium start, 1 s: COM moved %.3g m, largest relative volume change %.3g, kinetic energy %.3g J\n",
               (end.com_m - start.com_m).norm(), worst_volume, end.kinetic_J);
   EXPECT_LT((end.com_m - start.com_m).norm(), 1e-9);
@@ -67,10 +67,10 @@ TEST(Intent, EquilibriumStartDoesNotMove) {
 // The same intent started at the springs' rest shape instead pops: the gas inflates it by about 3 × 5 %.
 TEST(Intent, RestStartInflatesTheBody) {
   sim::World world = world_from_text(shell("icosphere:3", "rest", "[0, 0, 0]", ""));
-  const double v0 = sim::diagnose(world, 0).volume_m3;
+  const double v0 = sim::diagnose(world.model, world.state, 0).volume_m3;
   const double dt = auto_dt(world);
   for (int s = 0; s < static_cast<int>(1.0 / dt); ++s) world.step(dt);
-  const double growth = sim::diagnose(world, 0).volume_m3 / v0 - 1.0;
+  const double growth = sim::diagnose(world.model, world.state, 0).volume_m3 / v0 - 1.0;
   std::printf("rest start: volume grew by %.1f %% in 1 s\n", 100 * growth);
   EXPECT_GT(growth, 0.08);
   EXPECT_LT(growth, 0.25);
@@ -88,8 +88,8 @@ TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
   for (int s = 0; s < static_cast<int>(1.2 / dt); ++s) {
     coarse.step(dt);
     fine.step(dt);
-    worst = std::max(worst, (sim::diagnose(coarse, 0).com_m - sim::diagnose(fine, 0).com_m).norm());
-    lowest = std::min(lowest, sim::diagnose(fine, 0).com_m.y());
+    worst = std::max(worst, (sim::diagnose(coarse.model, coarse.state, 0).com_m - sim::diagnose(fine.model, fine.state, 0).com_m).norm());
+    lowest = std::min(lowest, sim::diagnose(fine.model, fine.state, 0).com_m.y());
   }
   std::printf("icosphere:2 against :3 over 1.2 s: largest COM distance %.4f m (lowest COM %.3f m)\n", worst, lowest);
   EXPECT_LT(lowest, 1.1) << "the ball must have reached the floor";
@@ -112,20 +112,21 @@ double measured_breathing_period(const std::string& mesh, double frequency_Hz, i
   sim::World world = world_from_text(R"({ "gravity": [0, 0, 0], "solver": { "integrator": "verlet" },
     "bodies": [ { "mesh": ")" + mesh + R"(", "stiffness": { "frequency": )" + std::to_string(frequency_Hz) +
                                      R"( }, "damping": 0, "pressure": )" + pressure + R"( } ] })");
-  const sim::Body& body = world.bodies()[0];
-  const std::vector<double>& m = body.topology.mass_kg;
-  const std::vector<softbody::Vec3> rest(world.positions(body).begin(), world.positions(body).end());
-  const softbody::Vec3 centre = sim::diagnose(world, 0).com_m;
+  const sim::Body& body = world.model.bodies[0];
+  const std::vector<double>& m = body.masses.kg;
+  const std::vector<softbody::Vec3> rest(world.model.of(body, world.state.x).begin(), world.model.of(body, world.state.x).end());
+  const softbody::Vec3 centre = sim::diagnose(world.model, world.state, 0).com_m;
   double inertia = 0.0;  // Σ m |X − c|² [kg m²]
   for (std::size_t i = 0; i < rest.size(); ++i) inertia += m[i] * (rest[i] - centre).squaredNorm();
-  for (std::size_t i = 0; i < rest.size(); ++i) world.state().v[i] = 0.01 * (rest[i] - centre);
+  for (std::size_t i = 0; i < rest.size(); ++i) world.state.v[i] = 0.01 * (rest[i] - centre);
+  world.state.forget_carry();  // the velocities were set from outside
   auto breathing = [&] {
-    const softbody::Vec3 c = sim::diagnose(world, 0).com_m;
+    const softbody::Vec3 c = sim::diagnose(world.model, world.state, 0).com_m;
     double s = 0.0;
-    for (std::size_t i = 0; i < rest.size(); ++i) s += m[i] * (world.state().x[i] - c).dot(rest[i] - centre);
+    for (std::size_t i = 0; i < rest.size(); ++i) s += m[i] * (world.state.x[i] - c).dot(rest[i] - centre);
     return s / inertia - 1.0;
   };
-  const double dt = 0.2 * sim::estimate_stability(world).stable_dt(sim::IntegratorKind::Verlet);
+  const double dt = 0.2 * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Verlet);
   std::vector<double> crossings;
   double previous = breathing(), t = 0.0;
   for (int step = 0; crossings.size() < static_cast<std::size_t>(half_periods) + 1 && step < 10'000'000; ++step) {

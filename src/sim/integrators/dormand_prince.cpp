@@ -24,18 +24,6 @@ constexpr std::array<double, 7> kE = {35.0 / 384.0 - 5179.0 / 57600.0,   0.0,
                                       -2187.0 / 6784.0 + 92097.0 / 339200.0, 11.0 / 84.0 - 187.0 / 2100.0,
                                       -1.0 / 40.0};
 
-constexpr double kSafety = 0.9;      // aim below the tolerance so the next step is likely accepted
-constexpr double kMinFactor = 0.2;   // shrink at most 5× per attempt
-constexpr double kMaxFactor = 5.0;   // grow at most 5× per step
-// PI control (Gustafsson 1991; Hairer, Nørsett & Wanner, Solving ODEs II, Sect. IV.2, and Hairer's DOPRI5
-// code): h_new = h · safety · err^(−α) · err_prev^β with α = 1/5 − 0.75 β. The β term damps the step-size
-// oscillation that a pure err^(−1/5) controller shows when stability, not accuracy, limits h, as it does
-// for the stiff springs here. β = 0.08 (Hairer suggests <= 0.1): on scenes/bounce.json without floor it cut
-// rejected attempts from 17 % (β = 0, pure I control) and 15 % (β = 0.04) to none.
-constexpr double kBeta = 0.08;
-constexpr double kAlpha = 0.2 - 0.75 * kBeta;
-constexpr double kSmallestError = 1e-4;  // floor for err_prev (Hairer's DOPRI5 facold)
-
 double scaled_square(const Vec3& error, const Vec3& y0, const Vec3& y1, double tolerance) {
   double sum = 0.0;
   for (int c = 0; c < 3; ++c) {
@@ -47,8 +35,13 @@ double scaled_square(const Vec3& error, const Vec3& y0, const Vec3& y1, double t
 
 }  // namespace
 
+void DormandPrince::prepare(Dynamics& dynamics, State& state) {
+  if (state.carry.acceleration.empty()) dynamics.accelerations(state, state.carry.acceleration);
+}
+
 void DormandPrince::stages(Dynamics& dynamics, const State& state, double dt) {
-  if (!have_first_slope_) evaluate_slope(dynamics, state, k_[0]);
+  k_[0].dx.assign(state.v.begin(), state.v.end());  // the first stage f(y) = (v, a(x, v)), carried over
+  k_[0].dv.assign(state.carry.acceleration.begin(), state.carry.acceleration.end());
   combine(state, dt, kA2, {&k_[0]}, stage_);
   evaluate_slope(dynamics, stage_, k_[1]);
   combine(state, dt, kA3, {&k_[0], &k_[1]}, stage_);
@@ -79,39 +72,22 @@ double DormandPrince::error_norm(const State& state, double dt) const {
   return std::sqrt(sum / static_cast<double>(6 * std::max<std::size_t>(n, 1)));
 }
 
-void DormandPrince::accept(State& state) {
+void DormandPrince::advance(State& state) {
   std::swap(state.x, result_.x);  // buffers change hands: no copy, no allocation
   std::swap(state.v, result_.v);
-  std::swap(k_[0], k_[6]);        // FSAL: f(new state) is the next step's first stage
-  have_first_slope_ = true;
+  std::swap(state.carry.acceleration, k_[6].dv);  // FSAL: a(new state) is the next step's first stage
 }
 
 void DormandPrince::step(Dynamics& dynamics, State& state, double dt) {
   stages(dynamics, state, dt);
-  accept(state);
+  advance(state);
 }
 
-AdaptiveIntegrator::Attempt DormandPrince::attempt(Dynamics& dynamics, State& state, double dt) {
+double DormandPrince::attempt(Dynamics& dynamics, State& state, double dt) {
   stages(dynamics, state, dt);
   const double error = error_norm(state, dt);
-  Attempt attempt;
-  attempt.accepted = error <= 1.0;  // also false for a NaN error: the step is retried smaller
-  if (!std::isfinite(error)) {
-    attempt.next_dt_s = dt * kMinFactor;
-  } else if (attempt.accepted) {
-    const double factor = kSafety * std::pow(std::max(error, 1e-12), -kAlpha) * std::pow(previous_error_, kBeta);
-    attempt.next_dt_s = dt * std::clamp(factor, kMinFactor, rejected_last_ ? 1.0 : kMaxFactor);
-    previous_error_ = std::max(error, kSmallestError);
-  } else {
-    attempt.next_dt_s = dt * std::clamp(kSafety * std::pow(error, -0.2), kMinFactor, 1.0);
-  }
-  if (attempt.accepted) {
-    accept(state);
-  } else {
-    have_first_slope_ = true;  // k_[0] = f(state) still holds: the state did not move
-  }
-  rejected_last_ = !attempt.accepted;
-  return attempt;
+  advance(state);
+  return error;
 }
 
 }  // namespace sim

@@ -4,7 +4,7 @@
 namespace sim {
 
 void ForwardEuler::step(Dynamics& dynamics, State& state, double dt) {
-  dynamics.first_order_step(state, dt, FirstOrderUpdate::Forward, a_);
+  dynamics.first_order_step(state, dt, FirstOrderUpdate::Forward);
 }
 
 }  // namespace sim

@@ -13,7 +13,7 @@ constexpr int kMaxSolverIterations = 1000;
 
 }  // namespace
 
-void ImplicitEuler::build_pattern(Dynamics& dynamics, std::size_t vertex_count) {
+void ImplicitEuler::build_pattern(const Model& model, std::size_t vertex_count) {
   std::vector<Eigen::Triplet<double>> entries;
   auto add_pattern_block = [&entries](int row_vertex, int column_vertex) {
     for (int r = 0; r < 3; ++r) {
@@ -21,14 +21,14 @@ void ImplicitEuler::build_pattern(Dynamics& dynamics, std::size_t vertex_count) 
     }
   };
   edges_.clear();
-  for (const SpringSet& set : dynamics.spring_sets()) {
-    for (std::size_t e = 0; e < set.edges.size(); ++e) {
+  for (const Body& body : model.bodies) {
+    for (std::size_t e = 0; e < body.topology.edges.size(); ++e) {
       EdgeBlocks blocks;
-      blocks.i = set.first_vertex + set.edges[e][0];
-      blocks.j = set.first_vertex + set.edges[e][1];
-      blocks.rest_length_m = set.rest_length_m[e];
-      blocks.stiffness_N_per_m = set.stiffness_N_per_m;
-      blocks.damping_N_s_per_m = set.damping_N_s_per_m;
+      blocks.i = body.first_vertex + body.topology.edges[e][0];
+      blocks.j = body.first_vertex + body.topology.edges[e][1];
+      blocks.rest_length_m = body.rest.edge_length_m[e];
+      blocks.stiffness_N_per_m = body.params.stiffness_N_per_m;
+      blocks.damping_N_s_per_m = body.params.damping_N_s_per_m;
       add_pattern_block(blocks.i, blocks.j);
       add_pattern_block(blocks.j, blocks.i);
       edges_.push_back(blocks);
@@ -58,7 +58,6 @@ void ImplicitEuler::build_pattern(Dynamics& dynamics, std::size_t vertex_count) 
   diagonal_.resize(vertex_count);
   for (std::size_t v = 0; v < vertex_count; ++v) diagonal_[v] = locate(static_cast<int>(v), static_cast<int>(v));
   rhs_.setZero(size);
-  delta_v_.setZero(size);
   guess_.setZero(size);
   solver_.setTolerance(kSolverTolerance);
   solver_.setMaxIterations(kMaxSolverIterations);
@@ -94,14 +93,16 @@ void ImplicitEuler::assemble(const State& state, std::span<const double> mass_kg
 
 void ImplicitEuler::step(Dynamics& dynamics, State& state, double dt) {
   const std::size_t n = state.x.size();
-  if (pattern_vertices_ != n) build_pattern(dynamics, n);  // first step, or a body was added
+  if (pattern_vertices_ != n) build_pattern(dynamics.model(), n);  // first step, or another model
   dynamics.forces(state, force_);
-  assemble(state, dynamics.vertex_masses(), dt);
+  assemble(state, dynamics.model().mass_kg, dt);
   solver_.compute(matrix_);
-  guess_ = delta_v_;  // the last step's Δv: a warm start, deterministic
-  delta_v_ = solver_.solveWithGuess(rhs_, guess_);
+  Eigen::VectorXd& delta_v = state.carry.velocity_change;
+  if (delta_v.size() != static_cast<Eigen::Index>(3 * n)) delta_v.setZero(static_cast<Eigen::Index>(3 * n));
+  guess_ = delta_v;  // the last step's Δv: a warm start, deterministic
+  delta_v = solver_.solveWithGuess(rhs_, guess_);
   for (std::size_t i = 0; i < n; ++i) {
-    state.v[i] += delta_v_.segment<3>(static_cast<Eigen::Index>(3 * i));
+    state.v[i] += delta_v.segment<3>(static_cast<Eigen::Index>(3 * i));
     state.x[i] += dt * state.v[i];
   }
 }

@@ -23,8 +23,9 @@ namespace sim {
 // methods' limit (tests/integrators/stability_test.cpp).
 //
 // Allocation: the sparsity pattern, the matrix and the vectors are built on the first step (and again if
-// the number of vertices changes, i.e. a body was added); later steps only overwrite values. Eigen's CG solve
+// the number of vertices changes, i.e. another model); later steps only overwrite values. Eigen's CG solve
 // allocates its own four work vectors per call: the one allocation per step left.
+// Carried over (State::carry.velocity_change): the last step's Δv, the solve's warm start.
 class ImplicitEuler final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
@@ -40,7 +41,7 @@ class ImplicitEuler final : public Integrator {
     BlockRows ii{}, jj{}, ij{}, ji{};
   };
 
-  void build_pattern(Dynamics& dynamics, std::size_t vertex_count);
+  void build_pattern(const Model& model, std::size_t vertex_count);
   void assemble(const State& state, std::span<const double> mass_kg, double dt);
   void add_block(const BlockRows& block, const Eigen::Matrix3d& value, double sign);
 
@@ -48,7 +49,7 @@ class ImplicitEuler final : public Integrator {
   std::vector<BlockRows> diagonal_;  // per vertex
   SparseMatrix matrix_;
   Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver_;
-  Eigen::VectorXd rhs_, delta_v_, guess_;
+  Eigen::VectorXd rhs_, guess_;
   std::vector<Vec3> force_;
   std::size_t pattern_vertices_ = 0;
 };

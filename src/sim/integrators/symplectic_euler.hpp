@@ -21,18 +21,14 @@ namespace sim {
 // integrator's own terms negates the velocity at x_{n+1}, v_{n+1} = v_{n+½} + (h/2) a_{n+1}: the stored
 // velocity becomes −v_{n+½} − h a_{n+1}, so the next kick gives exactly −v_{n+½}. A reversed vertex
 // therefore skips its next kick; then the floor costs symplectic Euler nothing (measured: as free flight).
-// restart() forgets the list (the state was replaced); World::step tells it again after restoring a
-// backed-up state for a retry.
+// The floor's contact phase lists the vertices it reversed in State::coasting; the next step reads the list
+// and empties it.
 class SymplecticEuler final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
-  void restart() override { coasting_.clear(); }
-  void velocities_reversed(std::span<const int> vertices) override;
 
  private:
-  std::vector<Vec3> a_;
-  std::vector<int> coasting_;  // vertices whose velocity the floor reversed: their next kick is skipped
-  std::vector<std::array<Vec3, 2>> coasting_state_;  // their x and v before the step
+  std::vector<std::array<Vec3, 2>> coasting_state_;  // scratch: the coasting vertices' x and v before the step
 };
 
 }  // namespace sim

@@ -7,7 +7,8 @@ namespace sim {
 
 // Kick–drift–kick (Swope et al. 1982):
 //   v½ = v + (h/2) a_n,   x' = x + h v½,   a' = a(x', v*),   v' = v½ + (h/2) a'.
-// The acceleration a' is kept for the next step's first kick, so each step costs one force evaluation.
+// The acceleration a' is carried to the next step's first kick (State::carry.acceleration), so each step
+// costs one force evaluation.
 //
 // Dampers make a depend on v, and v' is not known when a' is needed. Using v½ there would leave an O(h)
 // error in a', i.e. O(h²) per step: first order in the damping part. Instead the damping is evaluated at
@@ -17,13 +18,12 @@ namespace sim {
 // symplectic, time-reversible method.
 class VelocityVerlet final : public Integrator {
  public:
+  // Without a carried acceleration (the first step, or after a contact moved the state): a(x, v).
+  void prepare(Dynamics& dynamics, State& state) override;
   void step(Dynamics& dynamics, State& state, double dt) override;
-  void restart() override { have_acceleration_ = false; }
 
  private:
-  std::vector<Vec3> a_;        // a at the start of the next step (valid when have_acceleration_)
-  State predicted_;            // (x', v*): where the end-of-step acceleration is evaluated
-  bool have_acceleration_ = false;
+  State predicted_;  // scratch: (x', v*), where the end-of-step acceleration is evaluated
 };
 
 }  // namespace sim

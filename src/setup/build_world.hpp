@@ -1,0 +1,21 @@
+// From a scene to a simulation: every body's mesh loaded and validated, placed, its intent resolved, and
+// the model and initial state built. The one place that speaks both the scene's and the solver's types.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh/trimesh.hpp"
+#include "scene/scene.hpp"
+#include "sim/world.hpp"
+
+namespace setup {
+
+// The mesh placed in the world: scaled, then translated by the body's position.
+std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::Body& spec);
+
+// The world a scene describes. Notes on what was fixed while loading (e.g. a flipped winding) are appended
+// to `notes`. Throws softbody::InputError naming the file and key when a mesh or an intent cannot be used.
+sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes);
+
+}  // namespace setup

@@ -1,0 +1,40 @@
+// What never changes during a run: every body (topology, rest shape, masses, force constants), gravity,
+// the floor, contact and solver settings. Built once (src/setup/ from a scene, or in code), then const.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "sim/body.hpp"
+#include "sim/settings.hpp"
+#include "sim/state.hpp"
+
+namespace sim {
+
+struct Model {
+  std::vector<Body> bodies;
+  std::vector<double> mass_kg;       // per vertex, all bodies (the bodies' masses, side by side)
+  std::vector<double> inverse_mass;  // per vertex, all bodies [1/kg]
+  Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
+  std::optional<Floor> floor;        // none: no floor
+  BodyContact body_contact;          // between bodies (searched only when there are several)
+  Solver solver;                     // the integrator and its options (dt_s: the step a run asks for)
+  std::vector<Vec3> initial_x;       // every vertex where the model placed it: the stable-dt advice's state
+
+  std::size_t vertex_count() const { return mass_kg.size(); }
+  // A body's slice of a per-vertex array of the state.
+  std::span<const Vec3> of(const Body& body, std::span<const Vec3> all) const {
+    return all.subspan(static_cast<std::size_t>(body.first_vertex), static_cast<std::size_t>(body.vertex_count));
+  }
+};
+
+// Appends `body` (its params set) to the model, its vertices starting at `x0` (world coordinates) with the
+// common velocity `v0` in `state`; sets body.first_vertex.
+void add_body(Model& model, State& state, Body body, const std::vector<Vec3>& x0, const Vec3& v0);
+
+// A model with these settings and no bodies yet, and its state at t = 0.
+Model make_model(const Vec3& gravity_m_per_s2, std::optional<Floor> floor, const Solver& solver);
+State initial_state(const Model& model);
+
+}  // namespace sim

@@ -1,0 +1,26 @@
+// Scratch that one step uses and the next overwrites: the force passes' buffers and threads, the
+// integrator's stages, the contact search's grid, and the state a rejected step returns to. Built for one
+// model; nothing in it is needed to continue a run (that is all in State).
+#pragma once
+
+#include <memory>
+
+#include "sim/body_collision.hpp"
+#include "sim/dynamics.hpp"
+#include "sim/integrators.hpp"
+#include "sim/model.hpp"
+#include "sim/state.hpp"
+
+namespace sim {
+
+struct Workspace {
+  // For `model`: its integrator, and solver.threads (0: one per core) capped at kMostForceThreads.
+  explicit Workspace(const Model& model);
+
+  ForceScratch forces;
+  std::unique_ptr<Integrator> integrator;
+  BodyCollider collider;
+  State saved;  // the state before a step that may be rejected (solver.retry, adaptive integrators)
+};
+
+}  // namespace sim
