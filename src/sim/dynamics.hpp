@@ -39,7 +39,7 @@ inline void apply_first_order_update(FirstOrderUpdate update, double dt, const V
 
 // Scratch of the force evaluation, sized on first use; owned by the Workspace.
 struct ForceScratch {
-  explicit ForceScratch(int threads) : threads(threads), runner(std::make_unique<PartRunner>(threads)) {}
+  explicit ForceScratch(int thread_count) : threads(thread_count), runner(std::make_unique<PartRunner>(thread_count)) {}
   int threads = 1;                           // for large bodies' force passes, 1 .. kMostForceThreads
   std::unique_ptr<PartRunner> runner;        // runs those parts (its workers start when first needed)
   std::vector<std::vector<Vec3>> area_sums;  // per body of the model, one entry per vertex: the gas's face pass
