@@ -102,7 +102,9 @@ TEST_P(Checkpoint, SteppingFromACopiedStateGivesTheSameBits) {
   const ContactsSeen after = run_to(uninterrupted, kEnd_s, c.dt_s);
   EXPECT_TRUE(after.both()) << "after the last copy: floor impulse " << after.floor_impulse << " kg m/s, body "
                             << after.body_impulse << " kg m/s";
-  if (c.retry) EXPECT_GT(uninterrupted.state.retried_steps, 0) << "the retry path was exercised";
+  if (c.retry) {
+    EXPECT_GT(uninterrupted.state.retried_steps, 0) << "the retry path was exercised";
+  }
 
   for (const sim::State& copy : copies) {
     sim::World resumed = two_ball_world(c);
@@ -130,9 +132,9 @@ std::vector<Case> cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryIntegrator, Checkpoint, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           return sim::to_string(info.param.integrator) + "_" + info.param.floor_contact +
-                                  (info.param.retry ? "_retry" : "");
+                         [](const ::testing::TestParamInfo<Case>& test) {
+                           return sim::to_string(test.param.integrator) + "_" + test.param.floor_contact +
+                                  (test.param.retry ? "_retry" : "");
                          });
 
 }  // namespace
