@@ -7,8 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bench_support/limits.hpp"
-#include "bench_support/stress.hpp"
+#include "analysis/limits.hpp"
+#include "analysis/stress.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli("bench_stress: stability stress sweep; each run must end stable or be stopped by the guard");
@@ -24,42 +24,42 @@ int main(int argc, char** argv) {
 
   std::filesystem::create_directories(out_dir);
   if (limits) {
-    const auto rows = bench::measure_limits(bench::limit_bodies(), limit_steps);
+    const auto rows = analysis::measure_limits(analysis::limit_bodies(), limit_steps);
     for (const auto& r : rows) {
       std::printf("%-15s %-11s %-5s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
                   r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free", sim::to_string(r.integrator).c_str(), r.estimate_dt_s,
                   r.measured_dt_s, r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     }
-    bench::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
+    analysis::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
     return 0;
   }
   const auto start = std::chrono::steady_clock::now();
-  std::vector<bench::StressResult> results;
+  std::vector<analysis::StressResult> results;
   int counts[3] = {0, 0, 0}, below_estimate_guarded = 0;
-  const std::vector<bench::StressCase> cases = bench::stress_cases(quick);
-  for (const bench::StressCase& c : cases) {
-    results.push_back(bench::run_stress_case(c));
-    const bench::StressResult& r = results.back();
+  const std::vector<analysis::StressCase> cases = analysis::stress_cases(quick);
+  for (const analysis::StressCase& c : cases) {
+    results.push_back(analysis::run_stress_case(c));
+    const analysis::StressResult& r = results.back();
     ++counts[static_cast<int>(r.outcome)];
     if (r.guarded_within_estimate()) {
       ++below_estimate_guarded;
       std::fprintf(stderr, "GUARDED AT OR BELOW THE ESTIMATE %s %s %s dt=%.3g (estimate %.3g): %s\n", c.group.c_str(),
                    c.shape.c_str(), sim::to_string(c.integrator).c_str(), r.dt_s, r.estimate_dt_s, r.message.c_str());
     }
-    if (r.outcome == bench::Outcome::Failed) {
+    if (r.outcome == analysis::Outcome::Failed) {
       std::fprintf(stderr, "FAILED %s %s %s dt=%.3g: %s\n", c.group.c_str(), c.shape.c_str(),
                    sim::to_string(c.integrator).c_str(), r.dt_s, r.message.c_str());
     }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stress.csv";
-  bench::write_stress_csv(results, csv);
+  analysis::write_stress_csv(results, csv);
   std::printf("%zu runs in %.1f s: %d stable, %d stopped by the guard, %d failed; stopped by the guard at dt <= "
               "estimate: %d\n",
               results.size(), wall, counts[0], counts[1], counts[2], below_estimate_guarded);
   std::printf("wrote %s\n", csv.c_str());
   if (maps) {
-    for (const auto& png : bench::write_stability_maps(results, out_dir)) std::printf("wrote %s\n", png.c_str());
+    for (const auto& png : analysis::write_stability_maps(results, out_dir)) std::printf("wrote %s\n", png.c_str());
   }
   return counts[2] == 0 && below_estimate_guarded == 0 ? 0 : 1;
 }

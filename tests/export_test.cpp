@@ -15,10 +15,8 @@ TEST_P(MeshExport, FramesReimportAsTheSameClosedSurface) {
     "bodies": [ { "mesh": "icosphere:2", "position": [0, 2, 0] },
                 { "mesh": "torus:24,12", "position": [3, 2, 0] } ] })");
   testing_support::run_steps(world, 500, 1e-4);  // deformed by the gas and moving
-  // One folder per format: ctest runs the two cases in parallel processes.
-  const std::filesystem::path dir = std::filesystem::path(SOFTBODY_SOURCE_DIR) / "build" / "export_test" /
-                                    (GetParam() == output::MeshFormat::Obj ? "obj" : "ply");
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir =
+      testing_support::scratch_dir(GetParam() == output::MeshFormat::Obj ? "export_obj" : "export_ply");
   output::MeshExporter exporter(dir, GetParam());
   exporter.on_frame(7, world.state.time_s, world);
   const std::filesystem::path file = exporter.frame_path(7);

@@ -1,12 +1,14 @@
 // Shared test helpers.
-#include "setup/build_world.hpp"
 #include "test_helpers.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
-#include <sys/wait.h>
 
 #include "scene/scene_json.hpp"
+#include "setup/build_world.hpp"
 
 namespace testing_support {
 
@@ -37,6 +39,14 @@ CommandResult run_shell(const std::string& command) {
 
 CommandResult run_softbody(const std::string& arguments) {
   return run_shell("cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE " " + arguments);
+}
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::path(SOFTBODY_TEST_SCRATCH_DIR) / (name + "." + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 std::string data_path(const std::string& name) { return std::string(SOFTBODY_TEST_DATA) + "/" + name; }

@@ -1,6 +1,7 @@
 // Shared test helpers: scenes from JSON text, small hand-built worlds, running the CLI.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ CommandResult run_shell(const std::string& command);
 
 // Runs the softbody executable with `arguments` (shell words), from the source directory.
 CommandResult run_softbody(const std::string& arguments);
+
+// A fresh, empty folder for one test's files under the build tree: <build>/test_scratch/<name>.<pid>
+// (ctest runs tests in parallel processes, so each gets its own).
+std::filesystem::path scratch_dir(const std::string& name);
 
 // A path under the tests' data folder.
 std::string data_path(const std::string& name);

@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "bench_support/accuracy.hpp"
+#include "analysis/accuracy.hpp"
 #include "core/errors.hpp"
-#include "bench_support/work_precision.hpp"
+#include "analysis/work_precision.hpp"
 #include "scene/scene_json.hpp"
 
 namespace app {
@@ -17,7 +17,7 @@ struct AccuracyCommand {
   std::string out_dir = "out/bench";
   std::vector<std::string> integrators;
   std::string reference_integrator = "rk45";
-  bench::AccuracyOptions options;
+  analysis::AccuracyOptions options;
 };
 
 std::vector<sim::IntegratorKind> parse_integrators(const std::string& option, const std::vector<std::string>& names) {
@@ -38,10 +38,10 @@ int run_accuracy(AccuracyCommand& command) {
   const scene::Scene scene = scene::load_scene(command.scene.scene_file, command.scene.overrides);
   if (!command.integrators.empty()) command.options.integrators = parse_integrators("--integrators", command.integrators);
   command.options.reference_integrator = parse_integrators("--reference-integrator", {command.reference_integrator}).front();
-  const bench::AccuracyResult result = bench::run_accuracy_benchmark(
+  const analysis::AccuracyResult result = analysis::run_accuracy_benchmark(
       scene, command.options, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-  const auto written = bench::write_work_precision(result, command.out_dir);
-  std::cout << bench::accuracy_summary(result);
+  const auto written = analysis::write_work_precision(result, command.out_dir);
+  std::cout << analysis::accuracy_summary(result);
   for (const auto& path : written) std::cout << "wrote " << path.string() << "\n";
   return 0;
 }
@@ -51,7 +51,7 @@ int run_accuracy(AccuracyCommand& command) {
 Action add_accuracy_options(CLI::App& command) {
   auto state = std::make_shared<AccuracyCommand>();
   add_scene_options(command, state->scene);
-  bench::AccuracyOptions& o = state->options;
+  analysis::AccuracyOptions& o = state->options;
   command.add_option("--out", state->out_dir, "Folder for work_precision_<scene>.{csv,txt,gp,png}")
       ->type_name("DIR")
       ->capture_default_str();
@@ -87,7 +87,7 @@ Action add_accuracy_options(CLI::App& command) {
       "--max-runs. Error = RMS vertex position error against the reference over every frame after frame 0\n"
       "(final_error: the last frame only). The reference is Dormand-Prince's 5th-order formula at a fixed\n"
       "step (--reference-integrator); its distance to the same at twice the step is its uncertainty.\n"
-      "CSV columns: " + std::string(bench::kAccuracyCsvHeader) + "\n"
+      "CSV columns: " + std::string(analysis::kAccuracyCsvHeader) + "\n"
       "  dt: the step used (rk45: the mean accepted step); wall_s: stepping time, median of 3 for runs\n"
       "  under 0.5 s; status: ok | diverged (non-finite state) | blown_up (RMS error above the body's size)\n"
       "  | at_reference (error below --floor-factor x the reference's uncertainty: not plotted).");

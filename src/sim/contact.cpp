@@ -1,28 +1,33 @@
 // Floor contact models.
 #include "sim/contact.hpp"
 
+#include <algorithm>
+
 #include "sim/contact_response.hpp"
 
 namespace sim {
 
-int resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>& reversed) {
-  int below = 0;
+FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>& reversed) {
+  FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].y() >= height_m) continue;
+    found.deepest_m = std::max(found.deepest_m, height_m - x[i].y());
+    ++found.below;
     v[i] = -v[i];
     x[i].y() = height_m;
-    ++below;
     reversed.push_back(static_cast<int>(i));
   }
-  return below;
+  return found;
 }
 
-int resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x, std::span<Vec3> v) {
-  int below = 0;
+FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x,
+                                         std::span<Vec3> v) {
+  FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].y() >= height_m) continue;
+    found.deepest_m = std::max(found.deepest_m, height_m - x[i].y());
+    ++found.below;
     x[i].y() = height_m;
-    ++below;
     const double normal_speed = v[i].y();  // the floor's normal is +y
     if (normal_speed >= 0.0) continue;     // already leaving: no impulse
     const double new_normal_speed = separating_speed(normal_speed, material);
@@ -37,7 +42,7 @@ int resolve_floor_friction(double height_m, const ContactMaterial& material, std
     }
     v[i] = Vec3(tangential.x(), new_normal_speed, tangential.z());
   }
-  return below;
+  return found;
 }
 
 }  // namespace sim

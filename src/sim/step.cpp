@@ -34,16 +34,20 @@ int resolve_body_contacts(const Model& model, State& state, Workspace& workspace
 
 // Phase 3: the floor's contact model. Returns the vertices it found below the floor. The paper's model lists
 // the vertices it reversed in state.coasting (symplectic Euler's next step reads them).
-int resolve_floor(const Model& model, State& state) {
+int resolve_floor(const Model& model, State& state, Workspace& workspace) {
   if (!model.floor) return 0;
+  FloorContactFound found;
   switch (model.floor->contact) {
     case FloorContact::Paper:
       state.coasting.clear();
-      return resolve_floor_paper(model.floor->height_m, state.x, state.v, state.coasting);
+      found = resolve_floor_paper(model.floor->height_m, state.x, state.v, state.coasting);
+      break;
     case FloorContact::Friction:
-      return resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
+      found = resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
+      break;
   }
-  return 0;
+  workspace.deepest_floor_penetration_m = std::max(workspace.deepest_floor_penetration_m, found.deepest_m);
+  return found.below;
 }
 
 // Phase 4: the guard. Finite values every step; energy and volume every kFullCheckInterval steps, or every
@@ -59,7 +63,7 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
 // Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
 void resolve_contacts(const Model& model, State& state, Workspace& workspace) {
-  const int touched = resolve_body_contacts(model, state, workspace) + resolve_floor(model, state);
+  const int touched = resolve_body_contacts(model, state, workspace) + resolve_floor(model, state, workspace);
   if (touched > 0) state.carry.acceleration.clear();
 }
 
@@ -119,6 +123,7 @@ bool retry_in_more_substeps(const Model& model, State& state, Workspace& workspa
 }  // namespace
 
 void step(const Model& model, State& state, Workspace& workspace, double dt) {
+  workspace.deepest_floor_penetration_m = 0.0;
   const bool retry = model.solver.retry;
   if (retry) save_before_step(model, state, workspace);
   if (const std::optional<Divergence> found = run_substeps(model, state, workspace, dt)) {
@@ -132,6 +137,7 @@ void step(const Model& model, State& state, Workspace& workspace, double dt) {
 }
 
 void advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s) {
+  workspace.deepest_floor_penetration_m = 0.0;
   std::optional<Divergence> last_finding;
   while (state.time_s < end_time_s) {
     const double remaining = end_time_s - state.time_s;

@@ -21,6 +21,10 @@ struct Workspace {
   std::unique_ptr<Integrator> integrator;
   BodyCollider collider;
   State saved;  // the state before a step that may be rejected (solver.retry, adaptive integrators)
+
+  // What the contact phases found during the last step() (all its substeps) or advance_to() (all its steps
+  // and attempts), for checks and benchmarks: how deep a vertex got into the floor before it was put back [m].
+  double deepest_floor_penetration_m = 0.0;
 };
 
 }  // namespace sim

@@ -1,5 +1,4 @@
 // Integrator test helpers.
-#include "setup/build_world.hpp"
 #include "support.hpp"
 
 #include <cmath>
@@ -7,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_json.hpp"
+#include "setup/build_world.hpp"
 #include "sim/diagnostics.hpp"
 
 namespace integrator_tests {

@@ -1,8 +1,7 @@
 // One OSMesa context for all the tests of the process, and scratch folders under the build tree.
 #include "test_context.hpp"
 
-#include <unistd.h>
-
+#include "test_helpers.hpp"
 
 #include <memory>
 
@@ -14,12 +13,6 @@ render::GlContext& gl_context() {
   return *context;
 }
 
-std::filesystem::path fresh_output_dir(const std::string& name) {
-  // ctest runs each test in its own process, two at a time: a per-process folder keeps them apart.
-  const std::filesystem::path dir = std::filesystem::path(SOFTBODY_TEST_OUTPUT_DIR) / (name + "." + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path fresh_output_dir(const std::string& name) { return testing_support::scratch_dir(name); }
 
 }  // namespace render_test

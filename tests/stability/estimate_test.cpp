@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "bench_support/limits.hpp"
-#include "bench_support/stable_dt.hpp"
+#include "analysis/limits.hpp"
+#include "analysis/stable_dt.hpp"
 #include "sim/stability.hpp"
 #include "test_helpers.hpp"
 
@@ -15,19 +15,19 @@ using sim::IntegratorKind;
 sim::StabilityEstimate estimate_of(const sim::World& world) { return sim::estimate_stability(world.model, world.state); }
 
 // A coarse damped ball and an undamped one: small meshes, so a 5000-step bisection takes about a second.
-const bench::LimitBody kDamped{"coarse damped", "icosphere:1", 1e4, 2.0, 30.0};
-const bench::LimitBody kUndamped{"coarse undamped", "icosphere:1", 2000.0, 0.0, 50.0};
+const analysis::LimitBody kDamped{"coarse damped", "icosphere:1", 1e4, 2.0, 30.0};
+const analysis::LimitBody kUndamped{"coarse undamped", "icosphere:1", 2000.0, 0.0, 50.0};
 constexpr int kSteps = 5000;
 
-class EstimateAgainstMeasurement : public ::testing::TestWithParam<std::tuple<bench::LimitBody, IntegratorKind>> {};
+class EstimateAgainstMeasurement : public ::testing::TestWithParam<std::tuple<analysis::LimitBody, IntegratorKind>> {};
 
 TEST_P(EstimateAgainstMeasurement, IsConservativeAndWithinTwiceTheMeasuredLimit) {
-  const bench::LimitBody& body = std::get<0>(GetParam());
+  const analysis::LimitBody& body = std::get<0>(GetParam());
   const IntegratorKind integrator = std::get<1>(GetParam());  // not a structured binding: lambdas capture it
-  const double estimate = estimate_of(bench::limit_world(body, integrator)).stable_dt(integrator);
+  const double estimate = estimate_of(analysis::limit_world(body, integrator)).stable_dt(integrator);
   ASSERT_GT(estimate, 0.0);
-  const bench::StableDtMeasurement measured = bench::measure_stable_dt(
-      [&] { return bench::limit_world(body, integrator); }, 0.25 * estimate, 2.0 * estimate, kSteps);
+  const analysis::StableDtMeasurement measured = analysis::measure_stable_dt(
+      [&] { return analysis::limit_world(body, integrator); }, 0.25 * estimate, 2.0 * estimate, kSteps);
   std::printf("%s, %s: estimate %.4g s, measured stable %.4g s, unstable %.4g s (estimate / measured %.3f)\n",
               body.name.c_str(), sim::to_string(integrator).c_str(), estimate, measured.stable_dt_s,
               measured.unstable_dt_s, estimate / measured.stable_dt_s);
@@ -51,20 +51,20 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Forward Euler without dampers has no stable dt: the estimate says so instead of inventing one.
 TEST(Estimate, ForwardEulerWithoutDampersHasNoStableDt) {
-  EXPECT_EQ(estimate_of(bench::limit_world(kUndamped, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler), 0.0);
+  EXPECT_EQ(estimate_of(analysis::limit_world(kUndamped, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler), 0.0);
 }
 
 // The damper limit of forward Euler is c/k for underdamped modes (ζω = (c/k) ω² / 2); the estimate keeps
 // sim::kSharpLimitMargin below it because every mode reaches |g| = 1 there at once.
 TEST(Estimate, ForwardEulerDamperLimitIsCOverK) {
-  const bench::LimitBody ball{"bounce", "icosphere:2", 3000.0, 0.5, 30.0};
-  const double dt = estimate_of(bench::limit_world(ball, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler);
+  const analysis::LimitBody ball{"bounce", "icosphere:2", 3000.0, 0.5, 30.0};
+  const double dt = estimate_of(analysis::limit_world(ball, IntegratorKind::Euler)).stable_dt(IntegratorKind::Euler);
   EXPECT_NEAR(dt, sim::kSharpLimitMargin * 0.5 / 3000.0, 0.02 * 0.5 / 3000.0);
 }
 
 // Power iterations stay below Gershgorin's upper bound and above half of it on a regular mesh.
 TEST(Estimate, PowerIterationsLieBelowTheGershgorinBound) {
-  sim::World world = bench::limit_world(kDamped, IntegratorKind::Symplectic);
+  sim::World world = analysis::limit_world(kDamped, IntegratorKind::Symplectic);
   const sim::ModeBounds b = sim::mode_bounds(world.model.bodies[0], world.model.of(world.model.bodies[0], world.state.x));
   EXPECT_LE(b.lambda_max_per_kg, b.lambda_gershgorin_per_kg);
   EXPECT_GT(b.lambda_max_per_kg, 0.3 * b.lambda_gershgorin_per_kg);

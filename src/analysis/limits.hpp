@@ -8,7 +8,7 @@
 #include "scene/scene.hpp"
 #include "sim/world.hpp"
 
-namespace bench {
+namespace analysis {
 
 struct LimitBody {
   std::string name;
@@ -39,4 +39,4 @@ std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int s
 
 void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::path& file);
 
-}  // namespace bench
+}  // namespace analysis

@@ -9,7 +9,7 @@
 #include "scene/scene.hpp"
 #include "sim/body.hpp"
 
-namespace bench {
+namespace analysis {
 
 // Every integrator of sim::kIntegrators, in its order.
 std::vector<sim::IntegratorKind> every_integrator();
@@ -73,4 +73,4 @@ using Log = std::function<void(const std::string&)>;
 // Runs the reference, then each integrator's sweep. `log` receives one line per run (may be empty).
 AccuracyResult run_accuracy_benchmark(const scene::Scene& scene, const AccuracyOptions& options, const Log& log = {});
 
-}  // namespace bench
+}  // namespace analysis

@@ -1,15 +1,15 @@
 // Stable-dt table: the estimate next to a bisection on the real integrators.
-#include "bench_support/limits.hpp"
+#include "analysis/limits.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 
-#include "bench_support/stable_dt.hpp"
+#include "analysis/stable_dt.hpp"
 #include "mesh/generators.hpp"
 #include "sim/stability.hpp"
 
-namespace bench {
+namespace analysis {
 
 std::vector<LimitBody> limit_bodies() {
   return {{"bounce ball", "icosphere:3", 3000.0, 0.5, 30.0},
@@ -72,4 +72,4 @@ void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::
   }
 }
 
-}  // namespace bench
+}  // namespace analysis

@@ -1,5 +1,5 @@
 // Stress sweep: building each case's world, running it, classifying how it ended, CSV and gnuplot maps.
-#include "bench_support/stress.hpp"
+#include "analysis/stress.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -8,14 +8,15 @@
 #include <fstream>
 #include <limits>
 
-#include "bench_support/stable_dt.hpp"
+#include "analysis/stable_dt.hpp"
 #include "core/errors.hpp"
 #include "mesh/generators.hpp"
 #include "sim/diagnostics.hpp"
+#include "sim/diverged.hpp"
 #include "sim/stability.hpp"
 #include "sim/world.hpp"
 
-namespace bench {
+namespace analysis {
 namespace {
 
 using sim::IntegratorKind;
@@ -83,21 +84,19 @@ bool state_is_finite(const sim::World& world) {
   return true;
 }
 
-double com_y(const sim::World& world) { return sim::diagnose(world.model, world.state, 0).com_m.y(); }
-
 // Runs the case to its end; throws what the world throws.
 void run_world(sim::World& world, StressResult& r, double duration_s) {
   if (world.adaptive()) {
     world.state.next_dt_s = r.dt_s;
     for (int chunk = 1; chunk <= 50 && world.state.steps < kMostAdaptiveSteps; ++chunk) {
       world.advance_to(chunk * duration_s / 50.0);
-      r.min_com_y_m = std::min(r.min_com_y_m, com_y(world));
+      r.deepest_penetration_m = std::max(r.deepest_penetration_m, world.workspace.deepest_floor_penetration_m);
     }
   } else {
     const long long steps = std::min(kMostSteps, static_cast<long long>(std::ceil(duration_s / r.dt_s)));
     for (long long s = 0; s < steps; ++s) {
       world.step(r.dt_s);
-      r.min_com_y_m = std::min(r.min_com_y_m, com_y(world));
+      r.deepest_penetration_m = std::max(r.deepest_penetration_m, world.workspace.deepest_floor_penetration_m);
     }
   }
 }
@@ -163,20 +162,26 @@ StressResult run_stress_case(const StressCase& spec) {
     r.vertices = static_cast<int>(world.state.x.size());
     r.estimate_dt_s = sim::estimate_stability(world.model, world.state).stable_dt(spec.integrator);
     r.dt_s = case_dt(spec, r.estimate_dt_s);
-    r.min_com_y_m = com_y(world);
+    r.shortest_edge_m = sim::body_stats(world.model.bodies[0], world.state.x).edge_min_m;
     try {
       run_world(world, r, spec.group == "map" ? kMapDuration_s : kGroupDuration_s);
       r.outcome = state_is_finite(world) ? Outcome::Stable : Outcome::Failed;
       if (r.outcome == Outcome::Failed) r.message = "silent non-finite state";
-    } catch (const softbody::DivergedError& e) {
+    } catch (const sim::DivergedError& e) {
       r.message = e.what();
-      const bool clear = r.message.find("diverged at t = ") == 0 && r.message.find("body 0") != std::string::npos &&
-                         r.message.find("estimated stable") != std::string::npos;
+      // A clear stop names the body and what went wrong (then the message gives the stable dt too); an
+      // adaptive step that underflowed without a finding of the guard's says nothing of either.
+      const sim::DivergenceReport& report = e.report();
+      const bool clear = report.finding.kind != sim::DivergenceKind::StepUnderflow && report.finding.body == 0 &&
+                         !report.finding.what.empty();
       r.outcome = clear ? Outcome::Guarded : Outcome::Failed;
     }
-    if (r.min_com_y_m < 0.0) {
+    if (r.penetrated_within_estimate()) {
       r.outcome = Outcome::Failed;
-      r.message = "tunnelled: the centre of mass went below the floor";
+      char text[160];
+      std::snprintf(text, sizeof text, "tunnelled: a vertex went %.3g m into the floor in one step (shortest edge %.3g m)",
+                    r.deepest_penetration_m, r.shortest_edge_m);
+      r.message = text;
     }
     r.steps = world.state.steps;
     r.simulated_s = world.state.time_s;
@@ -191,17 +196,17 @@ StressResult run_stress_case(const StressCase& spec) {
 void write_stress_csv(const std::vector<StressResult>& results, const std::filesystem::path& file) {
   std::ofstream out(file);
   out << "group,shape,vertices,integrator,stiffness,damping,pressure,drop_speed,retry,dt,estimate_dt,"
-         "dt_over_estimate,outcome,guarded_within_estimate,steps,simulated_s,wall_s,min_com_y,message\n";
+         "dt_over_estimate,outcome,guarded_within_estimate,steps,simulated_s,wall_s,deepest_penetration,shortest_edge,message\n";
   for (const StressResult& r : results) {
     const StressCase& c = r.spec;
     std::string message = r.message;
     for (char& ch : message) if (ch == '"') ch = '\'';
     char row[512];
-    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,",
+    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,%.6g,",
                   c.group.c_str(), c.shape.c_str(), r.vertices, sim::to_string(c.integrator).c_str(),
                   c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s,
                   r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.guarded_within_estimate() ? 1 : 0, r.steps, r.simulated_s,
-                  r.wall_s, r.min_com_y_m);
+                  r.wall_s, r.deepest_penetration_m, r.shortest_edge_m);
     out << row << '"' << message << "\"\n";
   }
   if (!out) throw std::runtime_error("cannot write " + file.string());
@@ -256,4 +261,4 @@ std::vector<std::filesystem::path> write_stability_maps(const std::vector<Stress
   return written;
 }
 
-}  // namespace bench
+}  // namespace analysis

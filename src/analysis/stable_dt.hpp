@@ -5,7 +5,7 @@
 
 #include "sim/world.hpp"
 
-namespace bench {
+namespace analysis {
 
 // Gives every vertex a deterministic, non-smooth velocity of about `amplitude` m/s, so every mode is excited.
 void shake(sim::World& world, double amplitude_m_per_s);
@@ -24,4 +24,4 @@ struct StableDtMeasurement {
 StableDtMeasurement measure_stable_dt(const std::function<sim::World()>& make_world, double low, double high, int steps,
                                       double relative_tolerance = 0.03);
 
-}  // namespace bench
+}  // namespace analysis

@@ -1,5 +1,5 @@
 // The accuracy sweep: reference, runs, errors, timing.
-#include "bench_support/accuracy.hpp"
+#include "analysis/accuracy.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +13,7 @@
 #include "frames/frame_loop.hpp"
 #include "setup/build_world.hpp"
 
-namespace bench {
+namespace analysis {
 
 std::vector<sim::IntegratorKind> every_integrator() {
   std::vector<sim::IntegratorKind> all;
@@ -268,4 +268,4 @@ AccuracyResult run_accuracy_benchmark(const scene::Scene& scene, const AccuracyO
   return benchmark.run();
 }
 
-}  // namespace bench
+}  // namespace analysis

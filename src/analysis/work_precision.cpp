@@ -1,5 +1,5 @@
 // Work-precision output: CSV rows, equal-time ratios by log-log interpolation, the gnuplot script.
-#include "bench_support/work_precision.hpp"
+#include "analysis/work_precision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "output/atomic_file.hpp"
 
-namespace bench {
+namespace analysis {
 namespace {
 
 namespace fs = std::filesystem;
@@ -230,4 +230,4 @@ std::vector<fs::path> write_work_precision(const AccuracyResult& result, const f
   return {csv, txt, gp, png};
 }
 
-}  // namespace bench
+}  // namespace analysis

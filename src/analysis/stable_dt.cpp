@@ -1,12 +1,12 @@
 // Stable-dt measurement by bisection.
-#include "bench_support/stable_dt.hpp"
+#include "analysis/stable_dt.hpp"
 
 #include <cmath>
 
 #include "core/errors.hpp"
 #include "sim/diagnostics.hpp"
 
-namespace bench {
+namespace analysis {
 namespace {
 
 double total_energy(const sim::World& world) {
@@ -50,4 +50,4 @@ StableDtMeasurement measure_stable_dt(const std::function<sim::World()>& make_wo
   return {low, high};
 }
 
-}  // namespace bench
+}  // namespace analysis

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "bench_support/accuracy.hpp"
+#include "analysis/accuracy.hpp"
 
-namespace bench {
+namespace analysis {
 
 // Columns of the benchmark CSV, one row per run.
 inline constexpr const char* kAccuracyCsvHeader =
@@ -35,4 +35,4 @@ std::string accuracy_summary(const AccuracyResult& result);
 // display). Returns the paths written. Throws std::runtime_error when gnuplot fails or is missing.
 std::vector<std::filesystem::path> write_work_precision(const AccuracyResult& result, const std::filesystem::path& dir);
 
-}  // namespace bench
+}  // namespace analysis
