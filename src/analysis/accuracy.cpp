@@ -82,7 +82,7 @@ Trajectory simulate(const scene::Scene& scene, double duration_s) {
 }
 
 // RMS of |a − b| over frames [first_frame, last] and every vertex.
-// `integrator` at fixed steps (World::step, also for rk45: its fifth-order formula without error control,
+// `integrator` at fixed steps (sim::step, also for rk45: its fifth-order formula without error control,
 // not the adaptive advance_to), frames recorded like simulate() does.
 Trajectory fixed_step_run(const scene::Scene& scene, sim::IntegratorKind integrator, double dt_s, double duration_s) {
   const frames::FrameClock clock = frames::plan_frames(duration_s, scene.fps, dt_s);

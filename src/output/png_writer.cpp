@@ -1,7 +1,6 @@
-// The PNG writer thread: a bounded queue of frames, consumed in order.
+// The PNG writer: frames encoded and stored on a worker queue, in order.
 #include "output/png_writer.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -19,8 +18,7 @@ double seconds_between(Clock::time_point start, Clock::time_point end) {
 
 }  // namespace
 
-PngWriter::PngWriter(std::size_t queue_capacity)
-    : capacity_(std::max<std::size_t>(queue_capacity, 1)), thread_([this] { run(); }) {}
+PngWriter::PngWriter(std::size_t queue_capacity) : queue_(queue_capacity, [this](Job& job) { store(job); }) {}
 
 PngWriter::~PngWriter() {
   try {
@@ -31,70 +29,31 @@ PngWriter::~PngWriter() {
 }
 
 void PngWriter::write(std::filesystem::path path, softbody::Image image) {
-  std::unique_lock lock(mutex_);
-  changed_.wait(lock, [this] { return queue_.size() < capacity_ || error_; });
-  rethrow_error_locked();
-  queue_.push_back({std::move(path), std::move(image)});
-  changed_.notify_all();
+  queue_.push({std::move(path), std::move(image)});
 }
 
-void PngWriter::finish() {
-  {
-    std::unique_lock lock(mutex_);
-    closing_ = true;
-    changed_.notify_all();
-  }
-  if (thread_.joinable()) thread_.join();
-  std::unique_lock lock(mutex_);
-  rethrow_error_locked();
-}
+void PngWriter::finish() { queue_.finish(); }
 
 softbody::Image PngWriter::recycled_image() {
-  std::unique_lock lock(mutex_);
-  if (spare_images_.empty()) return {};
-  softbody::Image image = std::move(spare_images_.back());
-  spare_images_.pop_back();
-  return image;
+  std::optional<Job> spare = queue_.spare();
+  return spare ? std::move(spare->image) : softbody::Image{};
 }
 
 PngWriterTimings PngWriter::timings() const {
-  std::unique_lock lock(mutex_);
+  std::unique_lock lock(timings_mutex_);
   return timings_;
 }
 
-void PngWriter::rethrow_error_locked() {
-  if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-}
-
-void PngWriter::run() {
-  for (;;) {
-    Job job;
-    {
-      std::unique_lock lock(mutex_);
-      changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
-      if (queue_.empty()) return;  // closing and drained
-      job = std::move(queue_.front());
-      queue_.pop_front();
-      changed_.notify_all();  // room for the next frame
-    }
-    try {
-      const auto start = Clock::now();
-      const std::string bytes = encode_png(job.image);
-      const auto encoded = Clock::now();
-      write_file_atomically(job.path, bytes);
-      const auto stored = Clock::now();
-      std::unique_lock lock(mutex_);
-      timings_.frames += 1;
-      timings_.encode_s += seconds_between(start, encoded);
-      timings_.store_s += seconds_between(encoded, stored);
-      if (spare_images_.size() < capacity_) spare_images_.push_back(std::move(job.image));
-    } catch (...) {
-      std::unique_lock lock(mutex_);
-      if (!error_) error_ = std::current_exception();
-      queue_.clear();  // the run is failing: do not write frames after a missing one
-      changed_.notify_all();
-    }
-  }
+void PngWriter::store(Job& job) {
+  const auto start = Clock::now();
+  const std::string bytes = encode_png(job.image);
+  const auto encoded = Clock::now();
+  write_file_atomically(job.path, bytes);
+  const auto stored = Clock::now();
+  std::unique_lock lock(timings_mutex_);
+  timings_.frames += 1;
+  timings_.encode_s += seconds_between(start, encoded);
+  timings_.store_s += seconds_between(encoded, stored);
 }
 
 }  // namespace output

@@ -2,15 +2,11 @@
 // encoded, written under a temporary name and renamed, so a killed run never leaves a broken frame.
 #pragma once
 
-#include <condition_variable>
-#include <deque>
-#include <exception>
 #include <filesystem>
 #include <mutex>
-#include <thread>
-#include <vector>
 
 #include "core/image.hpp"
+#include "output/worker_queue.hpp"
 
 namespace output {
 
@@ -47,18 +43,12 @@ class PngWriter {
     std::filesystem::path path;
     softbody::Image image;
   };
-  void run();
-  void rethrow_error_locked();
+  // The writer thread's work for one frame: encode, write under a temporary name, rename.
+  void store(Job& job);
 
-  const std::size_t capacity_;
-  mutable std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<Job> queue_;
-  std::vector<softbody::Image> spare_images_;
-  bool closing_ = false;
-  std::exception_ptr error_;
+  mutable std::mutex timings_mutex_;
   PngWriterTimings timings_;
-  std::thread thread_;  // last: starts after everything it uses exists
+  WorkerQueue<Job> queue_;  // last: its thread starts after everything it uses exists
 };
 
 }  // namespace output

@@ -1,16 +1,13 @@
 // Feeds the ffmpeg video pipe from its own thread, so that the render thread does not wait on ffmpeg.
 #pragma once
 
-#include <condition_variable>
-#include <deque>
 #include <exception>
 #include <filesystem>
 #include <mutex>
-#include <thread>
-#include <vector>
 
 #include "core/image.hpp"
 #include "output/video_pipe.hpp"
+#include "output/worker_queue.hpp"
 
 namespace output {
 
@@ -36,20 +33,16 @@ class VideoWriter {
   double pipe_seconds() const;
 
  private:
-  void run();
-  void stop_thread(bool drop_queue);
+  // The writer thread's work for one frame: into ffmpeg's stdin.
+  void pipe_frame(softbody::Image& frame);
+  void add_pipe_seconds(double seconds);
 
   VideoPipe pipe_;
-  mutable std::mutex mutex_;
-  std::condition_variable changed_;
-  const std::size_t capacity_;
-  std::deque<softbody::Image> queue_;
-  std::vector<softbody::Image> spare_images_;
-  bool closing_ = false;
   bool finished_ = false;
-  std::exception_ptr error_;
+  std::exception_ptr error_;  // a frame that failed (ffmpeg died): the video is abandoned
+  mutable std::mutex pipe_s_mutex_;
   double pipe_s_ = 0.0;
-  std::thread thread_;  // last: starts after everything it uses exists
+  WorkerQueue<softbody::Image> queue_;  // last: its thread starts after everything it uses exists
 };
 
 }  // namespace output

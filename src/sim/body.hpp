@@ -45,7 +45,7 @@ struct Body {
   RestShape rest;
   VertexMasses masses;
   Params params;
-  int first_vertex = 0;  // where this body's vertices start in the world's state arrays
+  int first_vertex = 0;  // where this body's vertices start in the state's arrays (State::x, v)
   int vertex_count = 0;
 };
 

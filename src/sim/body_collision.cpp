@@ -56,12 +56,13 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 }  // namespace
 
 // Cell k along an axis holds [origin + k·size, origin + (k + 1)·size): k = ⌊(p − origin) / size⌋ clamped to
-// [0, kMaxCellIndex]; for s = (p − origin) / size ≥ 0 the floor is the truncation, and s < 0 gives 0.
+// [0, kMaxGridCells - 1]; for s = (p − origin) / size ≥ 0 the floor is the truncation, and s < 0 gives 0.
 inline Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
   Eigen::Vector3i cell;
   for (int k = 0; k < 3; ++k) {
     const double scaled = (p[k] - grid_origin_[k]) / cell_size_;
-    cell[k] = scaled <= 0.0 ? 0 : scaled >= double{kMaxCellIndex} ? kMaxCellIndex : static_cast<int>(scaled);
+    constexpr int kLast = kMaxGridCells - 1;
+    cell[k] = scaled <= 0.0 ? 0 : scaled >= double{kLast} ? kLast : static_cast<int>(scaled);
   }
   return cell;
 }

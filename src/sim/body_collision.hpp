@@ -18,7 +18,7 @@ namespace sim {
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
-  // `inverse_mass`: per vertex of `state`, all bodies (the world's own array).
+  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass).
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
               const ContactMaterial& material);
 
@@ -30,9 +30,10 @@ class BodyCollider {
   void build_grid(const Body& body, const State& state, const Box& region, double search, double cell_size);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material);
-  static constexpr int kMaxCellIndex = (1 << 21) - 1;     // per axis, as the cell keys of the old sorted grid
-  static constexpr std::int64_t kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
-  Eigen::Vector3i cell_of(const Vec3& p) const;            // clamped to [0, kMaxCellIndex]
+  static constexpr int kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
+  // The cell holding p, each index clamped to [0, kMaxGridCells - 1]: a table never has more cells along an axis,
+  // and the clamp keeps a far point's index from overflowing an int.
+  Eigen::Vector3i cell_of(const Vec3& p) const;
   int cell_index(int cx, int cy, int cz) const { return (cx * grid_cells_.y() + cy) * grid_cells_.z() + cz; }
 
   std::vector<Box> boxes_;          // per body, this step

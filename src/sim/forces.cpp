@@ -83,6 +83,14 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
   return six_volume / 6.0;
 }
 
+void volume_gradient(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& gradient) {
+  gradient.assign(x.size(), Vec3::Zero());
+  for (const Triangle& f : faces) {
+    const Vec3 area_vector = 0.5 * (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);  // A n̂ [m²]
+    for (int i : f) gradient[i] += area_vector / 3.0;
+  }
+}
+
 double guarded_volume(double volume_m3, double rest_volume_m3) {
   constexpr double kMinimumVolumeFraction = 1e-3;  // of V0: the gas then pushes 1000× its rest pressure
   return std::max(volume_m3, kMinimumVolumeFraction * rest_volume_m3);

@@ -31,6 +31,11 @@ void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<con
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);
 
+// ∂V/∂x_i = Σ_{f ∋ i} A_f n̂_f / 3 for every vertex [m²] (sized here): the reference form that intent and the
+// stability estimate use. The gas's face pass below computes the same gradient fused with the volume, as
+// area sums g_i = 6 ∂V/∂x_i (equal to round-off; tests/forces_test.cpp).
+void volume_gradient(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& gradient);
+
 // The volume below which the gas law is evaluated at this floor instead (V → 0 would give P → ∞).
 double guarded_volume(double volume_m3, double rest_volume_m3);
 

@@ -15,16 +15,6 @@
 namespace sim {
 namespace {
 
-// ∂V/∂x_i = Σ_{f∋i} A_f n̂_f / 3 for every vertex [m²].
-std::vector<Vec3> volume_gradient(const Topology& t, std::span<const Vec3> x) {
-  std::vector<Vec3> g(x.size(), Vec3::Zero());
-  for (const Triangle& f : t.faces) {
-    const Vec3 area_vector = 0.5 * (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
-    for (int i : f) g[i] += area_vector / 3.0;
-  }
-  return g;
-}
-
 // Edge tensions t_e [N] per unit nRT that balance the gas at shape x, vertex by vertex:
 //   Σ_{e∋i} −t_e d̂_e(i) + (1/V) ∂V/∂x_i = 0,  d̂_e(i) the unit vector from the other end to i.
 // 3n equations for 3n − 6 tensions (a closed triangulated surface); rigid motions are balanced anyway, and
@@ -45,7 +35,8 @@ std::vector<double> unit_gas_tensions(const Topology& t, std::span<const Vec3> x
   Eigen::SparseMatrix<double> A(n, m);
   A.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd rhs(n);
-  const std::vector<Vec3> g = volume_gradient(t, x);
+  std::vector<Vec3> g;
+  volume_gradient(t.faces, x, g);
   for (std::size_t i = 0; i < x.size(); ++i) rhs.segment<3>(3 * static_cast<Eigen::Index>(i)) = g[i] / volume;
   Eigen::LeastSquaresConjugateGradient<Eigen::SparseMatrix<double>> solver;
   solver.setTolerance(1e-12);

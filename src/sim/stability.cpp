@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/errors.hpp"
+#include "sim/forces.hpp"
 
 namespace sim {
 namespace {
@@ -94,19 +95,14 @@ double gas_omega2(const Body& body, std::span<const Vec3> x) {
   const double nRT = body.params.pressure_J;
   if (nRT == 0.0) return 0.0;
   std::vector<double> local(x.size(), 0.0);
-  std::vector<Vec3> dV(x.size(), Vec3::Zero());
-  double six_volume = 0.0;
   for (const Triangle& f : t.faces) {
     const Vec3 &a = x[f[0]], &b = x[f[1]], &c = x[f[2]];
     const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
-    const Vec3 area_vector = 0.5 * (b - a).cross(c - a);  // A n̂ [m²]
-    six_volume += (a - x[0]).dot(2.0 * area_vector);
-    for (int i : f) {
-      local[i] += perimeter / 6.0;
-      dV[i] += area_vector / 3.0;  // ∂V/∂x_i = Σ_f A_f n̂_f / 3
-    }
+    for (int i : f) local[i] += perimeter / 6.0;
   }
-  const double volume = std::max(six_volume / 6.0, 1e-3 * body.rest.volume_m3);
+  std::vector<Vec3> dV;
+  volume_gradient(t.faces, x, dV);
+  const double volume = guarded_volume(enclosed_volume(t.faces, x), body.rest.volume_m3);
   double local_max = 0.0, breathing = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     local_max = std::max(local_max, local[i] / body.masses.kg[i]);

@@ -52,7 +52,7 @@ struct BodyStats {
   double rest_volume_m3 = 0.0;
 };
 
-// The stable dt of every integrator, smallest over the world's bodies.
+// The stable dt of every integrator, smallest over the model's bodies.
 struct StabilityEstimate {
   static constexpr double kUnlimited = std::numeric_limits<double>::infinity();
   std::vector<ModeBounds> bodies;                      // per body
