@@ -4,6 +4,7 @@
 
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
+#include "app/run_plan.hpp"
 #include "output/mesh_exporter.hpp"
 
 namespace app {
@@ -11,17 +12,21 @@ namespace {
 
 struct ExportOptions {
   SceneOptions scene;
+  FrameOptions frames;
   std::string dir;
   output::MeshFormat format = output::MeshFormat::Obj;
 };
 
 int run_export(const ExportOptions& options) {
   PreparedRun run = prepare_run(options.scene);
+  const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::MeshExporter exporter(dir, options.format);
   frames::FrameSink* sinks[] = {&exporter};
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
-  print_run_summary(run, stats, "wrote " + exporter.frame_path(0).string() + " .. " + exporter.frame_path(stats.frames - 1).filename().string());
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  const frames::FrameSelection& chosen = planned.plan().frames;
+  print_run_summary(run, stats, "wrote " + exporter.frame_path(chosen.first()).string() + " .. " +
+                                    exporter.frame_path(chosen.last()).filename().string());
   return 0;
 }
 
@@ -37,6 +42,7 @@ Action register_export(CLI::App& parent) {
   command->add_option("--format", options->format, "obj (text, one object per body) or ply (binary, all bodies in one)")
       ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
       ->default_str("obj");
+  add_frame_options(*command, options->frames);
   return [options] { return run_export(*options); };
 }
 

@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
+#include "scene/scene_json.hpp"
 #include "sim/stability.hpp"
 
 namespace app {
@@ -38,8 +39,20 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
   }
 }
 
-int run_info(const SceneOptions& options) {
-  PreparedRun run = prepare_run(options);
+struct InfoOptions {
+  SceneOptions scene;
+  bool plan = false;
+};
+
+int run_info(const InfoOptions& options) {
+  if (options.plan) {  // for scripts (scripts/slurm-render): no world is built
+    const scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
+    std::printf("last_frame %d\nfps %d\nname %s\n",
+                frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s).frame_count, scene.fps,
+                scene.name.c_str());
+    return 0;
+  }
+  PreparedRun run = prepare_run(options.scene);
   const sim::StabilityEstimate estimate = sim::estimate_stability(run.world.model, run.world.state);
   const auto& bodies = run.world.model.bodies;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -63,10 +76,13 @@ int run_info(const SceneOptions& options) {
 }  // namespace
 
 Action register_info(CLI::App& parent) {
-  auto options = std::make_shared<SceneOptions>();
+  auto options = std::make_shared<InfoOptions>();
   CLI::App* command = parent.add_subcommand(
       "info", "Print mesh statistics, lumped masses, the fastest modes and each integrator's stable dt");
-  add_scene_options(*command, *options);
+  add_scene_options(*command, options->scene);
+  command->add_flag("--plan", options->plan,
+                    "Print only the run's frames, for scripts: 'last_frame N' (frame 0 is the initial state), "
+                    "'fps F', 'name NAME'");
   return [options] { return run_info(*options); };
 }
 

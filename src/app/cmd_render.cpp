@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
+#include "app/run_plan.hpp"
 #include "frames/overlapped_frame_loop.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
@@ -18,6 +19,7 @@ namespace {
 
 struct RenderOptions {
   SceneOptions scene;
+  FrameOptions frames;
   std::string output_dir;
   std::string video_file;
   bool no_png = false;
@@ -50,6 +52,8 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 
 int run_render(const RenderOptions& options) {
   PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
+  const PlannedFrames planned(run, options.frames);
+  const frames::FrameSelection& chosen = planned.plan().frames;
   scene::Scene& scene = run.scene;
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   output::check_frame_pattern(scene.output.pattern, scene.source.string());
@@ -63,8 +67,10 @@ int run_render(const RenderOptions& options) {
   outputs.write_frames = !options.no_png;
   if (!options.video_file.empty()) outputs.video = options.video_file;
   outputs.fps = scene.fps;
-  outputs.figure_frames = scene.render.figure_frames;
+  // A run of some frames only (a farm chunk) neither makes the figure nor removes frames past the last one.
+  outputs.figure_frames = chosen.everything() ? scene.render.figure_frames : 0;
   outputs.last_frame = run.clock.frame_count;
+  outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
   output::RenderSink sink(renderer, outputs);
 
@@ -73,7 +79,8 @@ int run_render(const RenderOptions& options) {
   frames::RunStats stats;
   try {
     // The next frame steps on a worker thread while this one (the GL context's) renders the last.
-    stats = frames::run_frames_overlapped(run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); });
+    stats = frames::run_frames_overlapped(
+        run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); }, planned.plan());
   } catch (...) {
     progress.clear();
     throw;
@@ -97,11 +104,14 @@ Action register_render(CLI::App& parent) {
   command->add_option("--video", options->video_file, "Also write an H.264 MP4 (needs ffmpeg on PATH)")
       ->type_name("FILE.mp4");
   command->add_flag("--no-png", options->no_png, "Write no PNG frames (figure.png and --video still are)");
+  add_frame_options(*command, options->frames);
   command->footer(
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
       "  rename), and frames numbered after the last one, left by an earlier longer run, are removed.\n"
       "  DIR/figure.png shows render.figure_frames frames evenly spaced over the run (0: none).\n"
+      "  With --frames only those frames are drawn (the states before come from --from-cache or are simulated\n"
+      "  silently), no figure is made and no other frame file is touched: chunks can render side by side.\n"
       "  Size, MSAA, shadows, camera and light come from the scene's render, camera and light keys.\n"
       "  Prints a progress line when stderr is a terminal, and a summary with the time per frame of each stage.");
   return [options] { return run_render(*options); };

@@ -1,26 +1,50 @@
 // `softbody simulate SCENE [--csv FILE] [--set ...]`: run without rendering, write the CSV.
 #include <memory>
 
+#include <cstdio>
+#include <optional>
+#include <vector>
+
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
+#include "app/run_plan.hpp"
 #include "output/csv_sink.hpp"
+#include "output/state_cache.hpp"
+#include "setup/scene_hash.hpp"
 
 namespace app {
 namespace {
 
 struct SimulateOptions {
   SceneOptions scene;
+  FrameOptions frames;
   std::string csv_file;
+  std::string cache_dir;
+  int cache_every = 1;
 };
 
 int run_simulate(const SimulateOptions& options) {
   PreparedRun run = prepare_run(options.scene);
+  const PlannedFrames planned(run, options.frames);
   const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"
                                                              : std::filesystem::path(options.csv_file);
   output::CsvSink csv_sink(csv);
-  frames::FrameSink* sinks[] = {&csv_sink};
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
-  print_run_summary(run, stats, "wrote " + csv.string());
+  std::vector<frames::FrameSink*> sinks = {&csv_sink};
+  std::optional<output::StateCacheSink> cache;
+  if (!options.cache_dir.empty()) {
+    cache.emplace(options.cache_dir, setup::simulation_hash(run.scene), options.cache_every, run.clock.frame_count,
+                  run.scene.fps);
+    sinks.push_back(&*cache);
+  }
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  std::string written = "wrote " + csv.string();
+  if (cache) {
+    char text[256];
+    std::snprintf(text, sizeof text, "; cached %d states of %.1f kB each in %s", cache->states_written(),
+                  static_cast<double>(cache->bytes_per_state()) / 1e3, options.cache_dir.c_str());
+    written += text;
+  }
+  print_run_summary(run, stats, written);
   return 0;
 }
 
@@ -33,6 +57,16 @@ Action register_simulate(CLI::App& parent) {
   add_scene_options(*command, options->scene);
   command->add_option("--csv", options->csv_file, "CSV output file (default: <output.dir>/simulation.csv)")
       ->type_name("FILE");
+  command->add_option("--cache", options->cache_dir,
+                      "Also write the state of every frame to DIR (state_NNNNNN.bin and cache.json), for "
+                      "`render --from-cache` and farm rendering")
+      ->type_name("DIR");
+  command->add_option("--cache-every", options->cache_every,
+                      "Keep only every Nth frame's state (and the last); frames between are simulated again from "
+                      "the one before when rendered")
+      ->check(CLI::Range(1, 1000000))
+      ->type_name("N");
+  add_frame_options(*command, options->frames);
   command->footer(
       "CSV columns: frame,time,body,com_x,com_y,com_z,vel_x,vel_y,vel_z,volume,kinetic_energy,total_energy,min_y\n"
       "  vel_* is the centre-of-mass velocity; total_energy = kinetic + gravitational (y relative to 0)\n"

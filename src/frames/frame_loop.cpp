@@ -1,41 +1,59 @@
 // The frame loop.
 #include "frames/frame_loop.hpp"
 
-#include <chrono>
-
 #include "frames/wall_clock.hpp"
 
 namespace frames {
-void advance_one_frame(sim::World& world, const FrameClock& clock, int frame) {
-  if (world.adaptive()) {
-    world.advance_to(frame * clock.frame_interval_s);
-    return;
+
+Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current, int target,
+                         const Checkpoints* checkpoints) {
+  Advance advance;
+  if (checkpoints) {
+    const int stored = checkpoints->latest_at_or_before(target);
+    if (stored > current) {
+      world.state = checkpoints->load(stored);  // a copied State is a checkpoint: the same bits as stepping
+      current = stored;
+      advance.loaded = true;
+    }
   }
-  for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
-  world.check_before_frame();  // the guard's full check before the frame is handed out
+  const long long steps_before = world.state.steps, rejected_before = world.state.rejected_steps;
+  for (int frame = current + 1; frame <= target; ++frame) {
+    if (world.adaptive()) {
+      world.advance_to(frame * clock.frame_interval_s);  // its every step had the full check
+    } else {
+      for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
+      world.check_before_frame();  // the guard's full check before the frame is handed out
+    }
+  }
+  advance.steps = world.state.steps - steps_before;
+  advance.rejected = world.state.rejected_steps - rejected_before;
+  return advance;
 }
 
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,
-                    const Progress& progress) {
+                    const Progress& progress, const RunPlan& plan) {
+  const FrameSelection selection = plan.frames.count() > 0 ? plan.frames : FrameSelection::all(clock.frame_count);
   RunStats stats;
-  const long long steps_before = world.state.steps;
-  const long long rejected_before = world.state.rejected_steps;
   const auto start = WallClock::now();
   auto emit = [&](int index) {
     // Time from the frame index, not the accumulated step sum, so frame times carry no round-off drift.
     const double time_s = index * clock.frame_interval_s;
     for (FrameSink* sink : sinks) sink->on_frame(index, time_s, world);
     ++stats.frames;
-    if (progress) progress(index, clock.frame_count);
+    if (progress) progress(stats.frames, selection.count());
   };
   try {
-    emit(0);
-    for (int frame = 1; frame <= clock.frame_count; ++frame) {
+    int current = 0;
+    if (selection.contains(0)) emit(0);
+    for (int frame = 1; frame <= selection.last(); ++frame) {
+      if (!selection.contains(frame)) continue;
       const auto step_start = WallClock::now();
-      advance_one_frame(world, clock, frame);
+      const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+      current = frame;
       stats.step_wall_s += seconds_since(step_start);
-      stats.steps = world.state.steps - steps_before;
-      stats.rejected_steps = world.state.rejected_steps - rejected_before;
+      stats.loaded_states += advance.loaded ? 1 : 0;
+      stats.steps += advance.steps;
+      stats.rejected_steps += advance.rejected;
       emit(frame);
     }
   } catch (...) {

@@ -1,47 +1,59 @@
-// The overlapped frame loop: one worker thread per frame interval steps the world while the caller delivers.
+// The overlapped frame loop: one worker thread per chosen frame steps the world while the caller delivers.
 #include "frames/overlapped_frame_loop.hpp"
 
-#include <chrono>
+#include <future>
+#include <utility>
 
 #include "frames/wall_clock.hpp"
-#include <future>
 
 namespace frames {
+
 RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
-                               std::span<CapturingFrameSink* const> sinks, const Progress& progress) {
+                               std::span<CapturingFrameSink* const> sinks, const Progress& progress,
+                               const RunPlan& plan) {
+  const FrameSelection selection = plan.frames.count() > 0 ? plan.frames : FrameSelection::all(clock.frame_count);
   RunStats stats;
-  const long long steps_before = world.state.steps;
-  const long long rejected_before = world.state.rejected_steps;
   const auto start = WallClock::now();
   auto capture = [&](int index) {
     for (CapturingFrameSink* sink : sinks) sink->capture(index, index * clock.frame_interval_s, world);
   };
-  auto deliver = [&](int index) {
+  auto deliver = [&]() {
     for (CapturingFrameSink* sink : sinks) sink->deliver();
     ++stats.frames;
-    if (progress) progress(index, clock.frame_count);
+    if (progress) progress(stats.frames, selection.count());
   };
   try {
-    capture(0);
-    for (int frame = 1; frame <= clock.frame_count; ++frame) {
+    bool captured = false;  // a frame waits to be delivered
+    if (selection.contains(0)) {
+      capture(0);
+      captured = true;
+    }
+    int current = 0;
+    for (int frame = 1; frame <= selection.last(); ++frame) {
+      if (!selection.contains(frame)) continue;
       // The world is only touched by the worker until get(); the sinks work from their captured copy.
-      std::future<double> stepping = std::async(std::launch::async, [&world, &clock, frame] {
-        const auto step_start = WallClock::now();
-        advance_one_frame(world, clock, frame);
-        return seconds_since(step_start);
-      });
+      std::future<std::pair<Advance, double>> stepping =
+          std::async(std::launch::async, [&world, &clock, &plan, current, frame] {
+            const auto step_start = WallClock::now();
+            const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+            return std::make_pair(advance, seconds_since(step_start));
+          });
       try {
-        deliver(frame - 1);
+        if (captured) deliver();
       } catch (...) {
         stepping.wait();  // the worker must be done with the world before anyone else sees it
         throw;
       }
-      stats.step_wall_s += stepping.get();  // rethrows the worker's DivergedError
-      stats.steps = world.state.steps - steps_before;
-      stats.rejected_steps = world.state.rejected_steps - rejected_before;
+      const auto [advance, seconds] = stepping.get();  // rethrows the worker's DivergedError
+      stats.step_wall_s += seconds;
+      stats.loaded_states += advance.loaded ? 1 : 0;
+      stats.steps += advance.steps;
+      stats.rejected_steps += advance.rejected;
+      current = frame;
       capture(frame);
+      captured = true;
     }
-    deliver(clock.frame_count);
+    if (captured) deliver();
   } catch (...) {
     for (CapturingFrameSink* sink : sinks) sink->finish(false);
     throw;

@@ -10,10 +10,11 @@ namespace frames {
 
 // Same frames, same states and same sink calls as run_frames (capture then deliver, in frame order), but
 // while the sinks deliver frame n on the calling thread (the one that owns a GL context), a worker thread
-// steps the world to frame n + 1. On divergence every frame before the diverged one has been delivered;
-// the sinks are finished with complete = false and the DivergedError propagates, as with run_frames.
-// RunStats::step_wall_s is then the worker's stepping time, which overlaps the sinks' time.
+// steps the world (or loads a checkpoint) to the next chosen frame. On divergence every frame before the
+// diverged one has been delivered; the sinks are finished with complete = false and the DivergedError
+// propagates, as with run_frames. RunStats::step_wall_s is then the worker's time, which overlaps the sinks'.
 RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
-                               std::span<CapturingFrameSink* const> sinks, const Progress& progress = {});
+                               std::span<CapturingFrameSink* const> sinks, const Progress& progress = {},
+                               const RunPlan& plan = {});
 
 }  // namespace frames

@@ -85,7 +85,7 @@ void RenderSink::finish(bool complete) {
     lap(start, timings_.video_s);
   }
   if (figure_ && figure_->complete()) write_figure();
-  if (outputs_.write_frames) remove_stale_frames();
+  if (outputs_.write_frames && outputs_.remove_stale_frames) remove_stale_frames();
 }
 
 void RenderSink::write_figure() {

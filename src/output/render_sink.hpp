@@ -29,6 +29,7 @@ struct RenderOutputs {
   int fps = 30;                               // the video's frame rate
   int figure_frames = 8;                      // tiles in figure.png; 0: no figure
   int last_frame = 0;                         // index of the run's last frame (frame 0 is the initial state)
+  bool remove_stale_frames = true;            // remove frame files numbered after last_frame (a longer earlier run's)
 };
 
 // Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.

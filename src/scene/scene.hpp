@@ -62,6 +62,10 @@ struct Output {
 
 struct Scene {
   std::filesystem::path source;        // the scene file ("" when built in code)
+  // The validated document with --set applied, less the keys that do not change the simulation (name,
+  // render, camera, light, output), as compact JSON: what a state cache's scene hash covers (with the
+  // mesh files' bytes, setup/scene_hash.hpp).
+  std::string simulation_json;
   std::string name = "scene";
   double duration_s = 3.0;             // simulated seconds
   int fps = 30;                        // frames per simulated second

@@ -368,6 +368,9 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.camera = read_camera(top);
   s.light = read_light(top);
   s.output = read_output(top, s.name);
+  json simulation = document;
+  for (const char* key : {"name", "render", "camera", "light", "output"}) simulation.erase(key);
+  s.simulation_json = simulation.dump();
   top.reject_unknown();
   return s;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "output/png_codec.hpp"
@@ -133,6 +134,40 @@ TEST(SimulationSide, SimulateRunsWithoutADisplayOrRenderer) {
                   quoted(out / "track.csv"));
   EXPECT_EQ(result.exit_status, 0) << result.output;
   EXPECT_TRUE(std::filesystem::exists(out / "track.csv"));
+}
+
+}  // namespace
+
+namespace {
+
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A farm chunk: frames drawn from a state cache (every 4th state kept, the rest simulated again from the one
+// before) are byte-identical to the same frames of a full render, and a chunk touches no other frame file.
+TEST(RenderCommand, FramesFromTheStateCacheAreTheFullRendersBytes) {
+  const std::filesystem::path full = render_test::fresh_output_dir("cli_cache_full");
+  const std::filesystem::path chunk = render_test::fresh_output_dir("cli_cache_chunk");
+  const std::filesystem::path cache = render_test::fresh_output_dir("cli_cache_states");
+  ASSERT_EQ(run_shell(render_command(full)).exit_status, 0);
+  const std::string scene = quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json");
+  const CommandResult simulate = run_shell(quoted(SOFTBODY_EXE) + " simulate " + scene + " --csv " +
+                                           quoted(cache / "sim.csv") + " --cache " + quoted(cache) + " --cache-every 4");
+  ASSERT_EQ(simulate.exit_status, 0) << simulate.output;
+  const CommandResult render = run_shell(render_command(chunk, "--from-cache " + quoted(cache) + " --frames 3-6,9"));
+  ASSERT_EQ(render.exit_status, 0) << render.output;
+  EXPECT_EQ(count_frame_files(chunk), 5);
+  for (int frame : {3, 4, 5, 6, 9}) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", frame);
+    EXPECT_EQ(file_bytes(chunk / name), file_bytes(full / name)) << name;
+  }
+  // The cache of another scene is refused with exit status 2, naming the manifest.
+  const CommandResult other = run_shell(render_command(chunk, "--from-cache " + quoted(cache) + " --set gravity=[0,-5,0]"));
+  EXPECT_EQ(other.exit_status, 2) << other.output;
+  EXPECT_NE(other.output.find("a cache of another scene"), std::string::npos) << other.output;
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+// The scene's simulation hash.
+#include "setup/scene_hash.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <xxhash.h>
+
+#include "core/errors.hpp"
+
+namespace setup {
+
+std::uint64_t simulation_hash(const scene::Scene& scene) {
+  XXH3_state_t* state = XXH3_createState();
+  XXH3_64bits_reset(state);
+  const std::string version = SOFTBODY_VERSION;
+  XXH3_64bits_update(state, version.data(), version.size() + 1);  // the terminating zero separates the parts
+  XXH3_64bits_update(state, scene.simulation_json.data(), scene.simulation_json.size() + 1);
+  for (const scene::Body& body : scene.bodies) {
+    if (body.mesh_file.empty()) continue;
+    std::ifstream in(body.mesh_file, std::ios::binary);
+    if (!in.is_open()) {
+      XXH3_freeState(state);
+      throw softbody::InputError(body.mesh_file.string() + ": cannot read the mesh file to hash the scene");
+    }
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    const std::string content = bytes.str();
+    XXH3_64bits_update(state, content.data(), content.size());
+  }
+  const std::uint64_t hash = XXH3_64bits_digest(state);
+  XXH3_freeState(state);
+  return hash;
+}
+
+std::string hash_text(std::uint64_t hash) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+}  // namespace setup
