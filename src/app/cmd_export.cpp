@@ -1,9 +1,11 @@
 // `softbody export SCENE [-o DIR] [--format obj|ply] [--set ...]`: the simulated mesh of every frame.
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
+#include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "output/mesh_exporter.hpp"
 
@@ -13,17 +15,30 @@ namespace {
 struct ExportOptions {
   SceneOptions scene;
   FrameOptions frames;
+  bool resume = false;
   std::string dir;
   output::MeshFormat format = output::MeshFormat::Obj;
 };
 
 int run_export(const ExportOptions& options) {
   PreparedRun run = prepare_run(options.scene);
+  check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::MeshExporter exporter(dir, options.format);
-  frames::FrameSink* sinks[] = {&exporter};
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  std::unique_ptr<ResumableRun> resumable;
+  std::vector<frames::FrameSink*> sinks = {&exporter};
+  if (options.resume) {
+    const auto frame_done = [&exporter](int frame) {
+      std::error_code ec;
+      return std::filesystem::is_regular_file(exporter.frame_path(frame), ec);
+    };
+    resumable = std::make_unique<ResumableRun>(run, dir / ".softbody-resume", frame_done, dir);
+    sinks.push_back(&resumable->store_sink());
+  }
+  const frames::RunStats stats =
+      frames::run_frames(run.world, run.clock, sinks, {}, resumable ? resumable->plan() : planned.plan());
+  if (resumable) resumable->remove_store();
   const frames::FrameSelection& chosen = planned.plan().frames;
   print_run_summary(run, stats, "wrote " + exporter.frame_path(chosen.first()).string() + " .. " +
                                     exporter.frame_path(chosen.last()).filename().string());
@@ -43,6 +58,7 @@ Action register_export(CLI::App& parent) {
       ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
       ->default_str("obj");
   add_frame_options(*command, options->frames);
+  add_resume_option(*command, options->resume);
   return [options] { return run_export(*options); };
 }
 

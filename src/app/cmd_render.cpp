@@ -2,12 +2,16 @@
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "app/commands.hpp"
+#include "core/errors.hpp"
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
+#include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "frames/overlapped_frame_loop.hpp"
+#include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
 #include "render/gl_context.hpp"
@@ -23,6 +27,7 @@ struct RenderOptions {
   std::string output_dir;
   std::string video_file;
   bool no_png = false;
+  bool resume = false;
 };
 
 double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
@@ -52,6 +57,10 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 
 int run_render(const RenderOptions& options) {
   PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
+  check_resume_options(options.resume, options.frames);
+  if (options.resume && options.no_png) {
+    throw softbody::InputError("--resume continues from the PNG frames on disk: use it without --no-png");
+  }
   const PlannedFrames planned(run, options.frames);
   const frames::FrameSelection& chosen = planned.plan().frames;
   scene::Scene& scene = run.scene;
@@ -72,20 +81,34 @@ int run_render(const RenderOptions& options) {
   outputs.last_frame = run.clock.frame_count;
   outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
+  std::unique_ptr<ResumableRun> resumable;
+  if (options.resume) {
+    const auto frame_done = [&outputs](int frame) {
+      std::error_code ec;
+      return std::filesystem::is_regular_file(outputs.dir / output::frame_file_name(outputs.pattern, frame), ec);
+    };
+    resumable = std::make_unique<ResumableRun>(run, outputs.dir / ".softbody-resume", frame_done, outputs.dir);
+    if (outputs.video) output::remove_stale_temporaries(outputs.video->parent_path());
+    outputs.resumed_after = resumable->resumed_after();
+    outputs.video_from_files = true;
+  }
   output::RenderSink sink(renderer, outputs);
 
   ProgressLine progress;
-  frames::CapturingFrameSink* sinks[] = {&sink};
+  std::vector<frames::CapturingFrameSink*> sinks = {&sink};
+  if (resumable) sinks.push_back(&resumable->store_sink());
   frames::RunStats stats;
   try {
     // The next frame steps on a worker thread while this one (the GL context's) renders the last.
     stats = frames::run_frames_overlapped(
-        run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); }, planned.plan());
+        run.world, run.clock, sinks, [&](int done, int last) { progress.update(done, last); },
+        resumable ? resumable->plan() : planned.plan());
   } catch (...) {
     progress.clear();
     throw;
   }
   progress.clear();
+  if (resumable) resumable->remove_store();
   print_summary(scene, renderer, stats, sink.timings());
   print_written(outputs, sink, stats.frames);
   return 0;
@@ -105,6 +128,7 @@ Action register_render(CLI::App& parent) {
       ->type_name("FILE.mp4");
   command->add_flag("--no-png", options->no_png, "Write no PNG frames (figure.png and --video still are)");
   add_frame_options(*command, options->frames);
+  add_resume_option(*command, options->resume);
   command->footer(
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"

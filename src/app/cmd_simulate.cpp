@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
+#include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "output/csv_sink.hpp"
 #include "output/state_cache.hpp"
@@ -21,22 +22,38 @@ struct SimulateOptions {
   std::string csv_file;
   std::string cache_dir;
   int cache_every = 1;
+  bool resume = false;
 };
 
 int run_simulate(const SimulateOptions& options) {
   PreparedRun run = prepare_run(options.scene);
+  check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"
                                                              : std::filesystem::path(options.csv_file);
-  output::CsvSink csv_sink(csv);
-  std::vector<frames::FrameSink*> sinks = {&csv_sink};
+  // --resume: the rows go to a journal as they are made, and every frame's state beside it.
+  std::unique_ptr<ResumableRun> resumable;
+  std::unique_ptr<output::CsvSink> csv_sink;
+  if (options.resume) {
+    const std::filesystem::path store = csv.string() + ".resume", journal = store / "rows.csv";
+    const int journalled = output::CsvSink::journalled_through(journal, run.world.model.bodies.size());
+    resumable = std::make_unique<ResumableRun>(
+        run, store, [journalled](int frame) { return frame <= journalled; }, csv.parent_path());
+    csv_sink = std::make_unique<output::CsvSink>(csv, journal, resumable->resumed_after());
+  } else {
+    csv_sink = std::make_unique<output::CsvSink>(csv);
+  }
+  std::vector<frames::FrameSink*> sinks = {csv_sink.get()};
+  if (resumable) sinks.push_back(&resumable->store_sink());
   std::optional<output::StateCacheSink> cache;
   if (!options.cache_dir.empty()) {
     cache.emplace(options.cache_dir, setup::simulation_hash(run.scene), options.cache_every, run.clock.frame_count,
-                  run.scene.fps);
+                  run.scene.fps, /*keep=*/resumable && resumable->resumed_after() >= 0);
     sinks.push_back(&*cache);
   }
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  const frames::RunStats stats =
+      frames::run_frames(run.world, run.clock, sinks, {}, resumable ? resumable->plan() : planned.plan());
+  if (resumable) resumable->remove_store();
   std::string written = "wrote " + csv.string();
   if (cache) {
     char text[256];
@@ -67,6 +84,7 @@ Action register_simulate(CLI::App& parent) {
       ->check(CLI::Range(1, 1000000))
       ->type_name("N");
   add_frame_options(*command, options->frames);
+  add_resume_option(*command, options->resume);
   command->footer(
       "CSV columns: frame,time,body,com_x,com_y,com_z,vel_x,vel_y,vel_z,volume,kinetic_energy,total_energy,min_y\n"
       "  vel_* is the centre-of-mass velocity; total_energy = kinetic + gravitational (y relative to 0)\n"

@@ -24,6 +24,19 @@ void add_frame_options(CLI::App& command, FrameOptions& options) {
       ->type_name("DIR");
 }
 
+void add_resume_option(CLI::App& command, bool& resume) {
+  command.add_flag("--resume", resume,
+                   "Keep a state of every frame beside the outputs, and continue from the last complete frame "
+                   "when an earlier run of the same command was killed; the outputs end as an uninterrupted "
+                   "run's, byte for byte");
+}
+
+void check_resume_options(bool resume, const FrameOptions& options) {
+  if (resume && (!options.frames.empty() || !options.from_cache.empty())) {
+    throw softbody::InputError("--resume continues a whole run: use it without --frames and --from-cache");
+  }
+}
+
 PlannedFrames::PlannedFrames(const PreparedRun& run, const FrameOptions& options) {
   const int last_frame = run.clock.frame_count;
   plan_.frames = options.frames.empty() ? frames::FrameSelection::all(last_frame)

@@ -21,6 +21,11 @@ struct FrameOptions {
 // Adds --frames and --from-cache to a subcommand.
 void add_frame_options(CLI::App& command, FrameOptions& options);
 
+// Adds --resume to a subcommand; check_resume_options() refuses it with --frames or --from-cache (a resumed
+// run continues a whole run).
+void add_resume_option(CLI::App& command, bool& resume);
+void check_resume_options(bool resume, const FrameOptions& options);
+
 // The plan of `run` for these options. With --from-cache, the cache's manifest is read and checked against
 // the scene (its hash and last frame) and every chosen frame's starting state must be in the cache (a missing
 // one is refused, naming the file). Keeps what the plan points to.

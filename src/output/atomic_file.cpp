@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <signal.h>
 #include <unistd.h>
 
 namespace output {
@@ -15,6 +16,39 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   name += ".tmp";
   name += std::to_string(::getpid());
   return path.parent_path() / name;
+}
+
+namespace {
+
+// True while process `pid` runs on this machine (a zombie, killed but not yet reaped, does not run).
+bool process_runs(pid_t pid) {
+  if (::kill(pid, 0) != 0 && errno != EPERM) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  std::getline(stat, text);
+  const std::size_t paren = text.rfind(')');  // "pid (comm) S ...": the state follows the command's name
+  return paren == std::string::npos || paren + 2 >= text.size() || (text[paren + 2] != 'Z' && text[paren + 2] != 'X');
+}
+
+}  // namespace
+
+int remove_stale_temporaries(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) return 0;
+  int removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    std::string name = entry.path().filename().string();
+    if (name.size() < 2 || name[0] != '.') continue;
+    if (name.size() > 4 && name.compare(name.size() - 4, 4, ".log") == 0) name.resize(name.size() - 4);
+    const std::size_t tmp = name.rfind(".tmp");
+    if (tmp == std::string::npos || tmp + 4 == name.size()) continue;
+    const std::string digits = name.substr(tmp + 4);
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const auto pid = static_cast<pid_t>(std::stol(digits));
+    if (pid == ::getpid() || process_runs(pid)) continue;  // its writer still runs
+    if (std::filesystem::remove(entry.path(), ec)) ++removed;
+  }
+  return removed;
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {

@@ -2,15 +2,84 @@
 #include "output/csv_sink.hpp"
 
 #include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
 
 #include "output/atomic_file.hpp"
 #include "sim/diagnostics.hpp"
 
 namespace output {
 
+namespace {
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The frame number that starts a journal line, or -1 for a line that is not a whole row.
+int row_frame(std::string_view line) {
+  const std::size_t comma = line.find(',');
+  if (comma == std::string_view::npos || comma == 0 || comma > 9) return -1;
+  int frame = 0;
+  for (char c : line.substr(0, comma)) {
+    if (c < '0' || c > '9') return -1;
+    frame = 10 * frame + (c - '0');
+  }
+  return frame;
+}
+
+}  // namespace
+
 CsvSink::CsvSink(std::filesystem::path path) : path_(std::move(path)) { text_ = std::string(kCsvHeader) + "\n"; }
 
+CsvSink::CsvSink(std::filesystem::path path, std::filesystem::path journal, int resume_after)
+    : CsvSink(std::move(path)) {
+  journal_path_ = std::move(journal);
+  std::filesystem::create_directories(journal_path_.parent_path());
+  std::string kept;
+  if (resume_after >= 0) {
+    const std::string old = read_text(journal_path_);
+    for (std::size_t start = 0; start < old.size();) {
+      const std::size_t end = old.find('\n', start);
+      if (end == std::string::npos) break;  // a line cut by the kill: not a row
+      const int frame = row_frame(std::string_view(old).substr(start, end - start));
+      if (frame >= 0 && frame <= resume_after) kept.append(old, start, end - start + 1);
+      start = end + 1;
+    }
+  }
+  write_file_atomically(journal_path_, kept);
+  text_ += kept;
+  journal_ = std::fopen(journal_path_.c_str(), "ab");
+  if (!journal_) throw std::runtime_error(journal_path_.string() + ": cannot open the CSV journal for appending");
+}
+
+CsvSink::~CsvSink() {
+  if (journal_) std::fclose(journal_);
+}
+
+int CsvSink::journalled_through(const std::filesystem::path& journal, std::size_t bodies) {
+  const std::string text = read_text(journal);
+  std::vector<std::size_t> rows;  // per frame
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) break;
+    const int frame = row_frame(std::string_view(text).substr(start, end - start));
+    if (frame >= 0) {
+      if (rows.size() <= static_cast<std::size_t>(frame)) rows.resize(static_cast<std::size_t>(frame) + 1, 0);
+      ++rows[static_cast<std::size_t>(frame)];
+    }
+    start = end + 1;
+  }
+  int through = -1;
+  while (through + 1 < static_cast<int>(rows.size()) && rows[static_cast<std::size_t>(through + 1)] == bodies) ++through;
+  return through;
+}
+
 void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
+  const std::size_t frame_start = text_.size();
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, b);
     char row[512];
@@ -21,8 +90,21 @@ void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
                   d.min_y_m);
     text_ += row;
   }
+  if (journal_) {
+    const std::string_view rows = std::string_view(text_).substr(frame_start);
+    if (std::fwrite(rows.data(), 1, rows.size(), journal_) != rows.size() || std::fflush(journal_) != 0) {
+      throw std::runtime_error(journal_path_.string() + ": cannot append to the CSV journal");
+    }
+  }
 }
 
-void CsvSink::finish(bool /*complete*/) { write_file_atomically(path_, text_); }
+void CsvSink::finish(bool complete) {
+  write_file_atomically(path_, text_);
+  if (journal_ && complete) {
+    std::fclose(journal_);
+    journal_ = nullptr;
+    std::filesystem::remove(journal_path_);
+  }
+}
 
 }  // namespace output

@@ -28,12 +28,15 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
     : renderer_(renderer), outputs_(std::move(outputs)) {
   const render::RenderSettings& settings = renderer_.settings();
   if (outputs_.write_frames) png_writer_.emplace(kPngQueueFrames);
-  if (outputs_.video) {
+  if (outputs_.video && !outputs_.video_from_files) {
     video_ = std::make_unique<VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   }
   if (outputs_.figure_frames > 0) {
     figure_.emplace(evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame), settings.width_px,
                     settings.height_px);
+    for (int index = 0; index <= outputs_.resumed_after; ++index) {
+      if (figure_->wants(index)) figure_->add(index, read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)));
+    }
   }
 }
 
@@ -84,8 +87,20 @@ void RenderSink::finish(bool complete) {
     video_->finish();
     lap(start, timings_.video_s);
   }
+  if (outputs_.video && outputs_.video_from_files) encode_video_from_files();
   if (figure_ && figure_->complete()) write_figure();
   if (outputs_.write_frames && outputs_.remove_stale_frames) remove_stale_frames();
+}
+
+void RenderSink::encode_video_from_files() {
+  auto start = Clock::now();
+  const render::RenderSettings& settings = renderer_.settings();
+  VideoWriter video(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
+  for (int index = 0; index <= outputs_.last_frame; ++index) {
+    video.write(read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)));
+  }
+  video.finish();
+  lap(start, timings_.video_s);
 }
 
 void RenderSink::write_figure() {

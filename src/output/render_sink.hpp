@@ -30,6 +30,11 @@ struct RenderOutputs {
   int figure_frames = 8;                      // tiles in figure.png; 0: no figure
   int last_frame = 0;                         // index of the run's last frame (frame 0 is the initial state)
   bool remove_stale_frames = true;            // remove frame files numbered after last_frame (a longer earlier run's)
+  // A resumed run (--resume): frames 0 .. resumed_after are already on disk (the figure takes its tiles of
+  // them from there). With resume, the video is made when the run completes, from the PNG files, rather
+  // than piped while rendering (a killed ffmpeg cannot be continued): the same frames into the same pipe.
+  int resumed_after = -1;
+  bool video_from_files = false;
 };
 
 // Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.
@@ -67,6 +72,8 @@ class RenderSink final : public frames::CapturingFrameSink {
  private:
   void write_figure();
   void remove_stale_frames() const;
+  // The video from the PNG files 0 .. last_frame (video_from_files).
+  void encode_video_from_files();
 
   render::Renderer& renderer_;
   RenderOutputs outputs_;

@@ -60,8 +60,7 @@ bool has_cached_state(const std::filesystem::path& dir, int frame) {
   return std::filesystem::is_regular_file(cached_state_path(dir, frame), ec);
 }
 
-void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash, const sim::Model& model,
-                        const sim::State& state) {
+std::string cached_state_file(int frame, std::uint64_t scene_hash, const sim::Model& model, const sim::State& state) {
   const std::string payload = sim::encode_state(state);
   std::string bytes;
   bytes.reserve(kHeaderBytes + payload.size());
@@ -81,7 +80,12 @@ void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64
   put<std::uint64_t>(bytes, XXH3_64bits(payload.data(), payload.size()));
   put<std::uint64_t>(bytes, XXH3_64bits(bytes.data(), kCheckedHeaderBytes));
   bytes += payload;
-  write_file_atomically(cached_state_path(dir, frame), bytes);
+  return bytes;
+}
+
+void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash, const sim::Model& model,
+                        const sim::State& state) {
+  write_file_atomically(cached_state_path(dir, frame), cached_state_file(frame, scene_hash, model, state));
 }
 
 sim::State read_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash,
@@ -178,7 +182,8 @@ int cached_frame_at_or_before(const CacheManifest& manifest, int frame) {
   return frame / manifest.every * manifest.every;
 }
 
-StateCacheSink::StateCacheSink(std::filesystem::path dir, std::uint64_t scene_hash, int every, int last_frame, int fps)
+StateCacheSink::StateCacheSink(std::filesystem::path dir, std::uint64_t scene_hash, int every, int last_frame, int fps,
+                               bool keep)
     : dir_(std::move(dir)) {
   manifest_.scene_hash = scene_hash;
   manifest_.every = every;
@@ -187,16 +192,24 @@ StateCacheSink::StateCacheSink(std::filesystem::path dir, std::uint64_t scene_ha
   std::filesystem::create_directories(dir_);
   // A new cache replaces whatever states an earlier run left in the folder.
   for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+    if (keep) break;
     const std::string name = entry.path().filename().string();
     if (name.rfind("state_", 0) == 0 && entry.path().extension() == ".bin") std::filesystem::remove(entry.path());
   }
   write_manifest(dir_, manifest_);
 }
 
-void StateCacheSink::on_frame(int index, double /*time_s*/, const sim::World& world) {
+void StateCacheSink::capture(int index, double /*time_s*/, const sim::World& world) {
+  captured_index_ = index;
+  captured_.clear();
   if (index % manifest_.every != 0 && index != manifest_.last_frame) return;
-  write_cached_state(dir_, index, manifest_.scene_hash, world.model, world.state);
-  bytes_per_state_ = std::filesystem::file_size(cached_state_path(dir_, index));
+  captured_ = cached_state_file(index, manifest_.scene_hash, world.model, world.state);
+}
+
+void StateCacheSink::deliver() {
+  if (captured_.empty()) return;
+  write_file_atomically(cached_state_path(dir_, captured_index_), captured_);
+  bytes_per_state_ = captured_.size();
   ++states_written_;
 }
 

@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "frames/frame_sink.hpp"
+#include "frames/capturing_sink.hpp"
 #include "sim/model.hpp"
 #include "sim/state.hpp"
 
@@ -32,6 +32,9 @@ struct CacheManifest {
 };
 
 std::filesystem::path cached_state_path(const std::filesystem::path& dir, int frame);
+
+// The file of frame `frame`'s state: header and encoded state.
+std::string cached_state_file(int frame, std::uint64_t scene_hash, const sim::Model& model, const sim::State& state);
 
 // Writes frame `frame`'s state atomically. Throws std::runtime_error naming the file on I/O failure.
 void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash,
@@ -55,12 +58,16 @@ CacheManifest read_manifest(const std::filesystem::path& dir, std::uint64_t scen
 // spacing caches (a multiple of `every`, or the last frame).
 int cached_frame_at_or_before(const CacheManifest& manifest, int frame);
 
-// A frame sink that caches the state of every `every`th frame and the last one, and keeps the manifest. It
-// starts by removing the states an earlier run left in the folder.
-class StateCacheSink final : public frames::FrameSink {
+// A frame sink that caches the state of every `every`th frame and the last one, and keeps the manifest.
+// A new cache starts by removing the states an earlier run left in the folder; a continued one (a resumed
+// run: `keep` true) keeps them.
+class StateCacheSink final : public frames::CapturingFrameSink {
  public:
-  StateCacheSink(std::filesystem::path dir, std::uint64_t scene_hash, int every, int last_frame, int fps);
-  void on_frame(int index, double time_s, const sim::World& world) override;
+  StateCacheSink(std::filesystem::path dir, std::uint64_t scene_hash, int every, int last_frame, int fps,
+                 bool keep = false);
+  // Encodes the state (while the world is at rest); deliver() writes it.
+  void capture(int index, double time_s, const sim::World& world) override;
+  void deliver() override;
   // Marks the manifest complete when the run reached its last frame.
   void finish(bool complete) override;
 
@@ -71,6 +78,8 @@ class StateCacheSink final : public frames::FrameSink {
  private:
   std::filesystem::path dir_;
   CacheManifest manifest_;
+  std::string captured_;  // the file of the captured frame ("" when it is not cached)
+  int captured_index_ = 0;
   std::size_t bytes_per_state_ = 0;
   int states_written_ = 0;
 };

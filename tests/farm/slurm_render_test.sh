@@ -34,11 +34,11 @@ scene="$source_dir/scenes/bounce.json"
 small=(--set duration=0.5 --set render.width=160 --set render.height=120)  # frames 0..15
 started=$(date +%s.%N)
 "$softbody" render "$scene" "${small[@]}" -o "$scratch/local" --video "$scratch/local/bounce.mp4" >/dev/null
-local_s=$(echo "$(date +%s.%N) - $started" | bc)
+local_s=$(awk -v a="$(date +%s.%N)" -v b="$started" 'BEGIN {printf "%.1f", a - b}')
 
 started=$(date +%s.%N)
 SOFTBODY="$softbody" "$source_dir/scripts/slurm-render" "$scene" -o "$scratch/farm" --chunk 4 --wait "${small[@]}"
-farm_s=$(echo "$(date +%s.%N) - $started" | bc)
+farm_s=$(awk -v a="$(date +%s.%N)" -v b="$started" 'BEGIN {printf "%.1f", a - b}')
 
 failures=0
 check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi; }
