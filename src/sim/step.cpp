@@ -120,6 +120,15 @@ bool retry_in_more_substeps(const Model& model, State& state, Workspace& workspa
   return false;
 }
 
+// An adaptive attempt rejected: the state saved before it again, the rejection counted and remembered by the
+// step-size control, and the next attempt's size.
+void reject_attempt(State& state, const Workspace& workspace, double next_dt_s) {
+  state = workspace.saved;
+  record_rejection(state.carry);
+  ++state.rejected_steps;
+  state.next_dt_s = next_dt_s;
+}
+
 }  // namespace
 
 void step(const Model& model, State& state, Workspace& workspace, double dt) {
@@ -156,19 +165,13 @@ void advance_to(const Model& model, State& state, Workspace& workspace, double e
     const double error = integrate(model, state, workspace, dt, /*with_error=*/true);
     const StepSizeDecision decision = decide_step_size(dt, error, state.carry);
     if (!decision.accepted) {
-      state = workspace.saved;
-      record_rejection(state.carry);
-      ++state.rejected_steps;
-      state.next_dt_s = decision.next_dt_s;
+      reject_attempt(state, workspace, decision.next_dt_s);
       continue;
     }
     // Phases 2 to 4; the guard rejecting the step: undo it and try a quarter of the step.
     resolve_contacts(model, state, workspace);
     if (auto found = guard(model, state, /*full=*/true)) {
-      state = workspace.saved;
-      record_rejection(state.carry);
-      ++state.rejected_steps;
-      state.next_dt_s = 0.25 * dt;
+      reject_attempt(state, workspace, 0.25 * dt);
       last_finding = found;
       continue;
     }
