@@ -22,8 +22,10 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
               body.params.damping_N_s_per_m, body.params.pressure_J);
   std::printf("  lambda_max(M^-1 K/k) = %.4g 1/kg (power iterations; Gershgorin bound %.4g)\n", b.lambda_max_per_kg,
               b.lambda_gershgorin_per_kg);
-  std::printf("  omega_max = %.4g rad/s (springs %.4g, gas %.4g), fastest-mode damping rate %.4g 1/s\n",
-              b.omega_max(), std::sqrt(b.omega2_springs), std::sqrt(b.omega2_gas), b.damping_rate);
+  std::printf("  omega_max = %.4g rad/s (springs %.4g, gas %.4g", b.omega_max(), std::sqrt(b.omega2_springs),
+              std::sqrt(b.omega2_gas));
+  if (b.omega2_contact > 0.0) std::printf(", smooth floor contact %.4g", std::sqrt(b.omega2_contact));
+  std::printf("), fastest-mode damping rate %.4g 1/s\n", b.damping_rate);
 }
 
 void print_integrator(sim::IntegratorKind integrator, double dt, double frame_interval_s) {

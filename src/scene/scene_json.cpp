@@ -165,15 +165,25 @@ sim::Solver read_solver(ObjectReader& top) {
   return solver;
 }
 
+// The smooth contact's keys, read whatever the contact model, so that --set can switch a scene to smooth.
+void read_smooth_contact(ObjectReader& r, sim::SmoothContact& smooth) {
+  smooth.time_constant_s = r.number("time_constant", smooth.time_constant_s, kPositive);
+  if (r.has("damping_ratio")) smooth.damping_ratio = r.number("damping_ratio", 0.0, kNonNegative);
+  smooth.slip_speed_m_per_s = r.number("slip_speed", smooth.slip_speed_m_per_s, kPositive);
+  smooth.smoothing_m = r.number("smoothing", smooth.smoothing_m, kPositive);
+}
+
 std::optional<sim::Floor> read_floor(ObjectReader& top) {
   if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
   ObjectReader r(top.at("floor"), "floor", top.file());
   sim::Floor floor;
   floor.height_m = r.number("height", floor.height_m);
   floor.contact = r.choice<sim::FloorContact>(
-      "contact", floor.contact, {{"paper", sim::FloorContact::Paper}, {"friction", sim::FloorContact::Friction}});
+      "contact", floor.contact,
+      {{"paper", sim::FloorContact::Paper}, {"friction", sim::FloorContact::Friction}, {"smooth", sim::FloorContact::Smooth}});
   floor.material.restitution = r.number("restitution", floor.material.restitution, kUnitInterval);
   floor.material.friction = r.number("friction", floor.material.friction, kNonNegative);
+  read_smooth_contact(r, floor.smooth);
   r.reject_unknown();
   return floor;
 }
@@ -275,8 +285,11 @@ sim::BodyContact read_collisions(ObjectReader& top) {
   sim::BodyContact collisions;
   if (!top.has("collisions")) return collisions;
   ObjectReader r(top.at("collisions"), "collisions", top.file());
+  collisions.contact = r.choice<sim::BodyContactModel>(
+      "contact", collisions.contact, {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
   collisions.material.restitution = r.number("restitution", collisions.material.restitution, kUnitInterval);
   collisions.material.friction = r.number("friction", collisions.material.friction, kNonNegative);
+  read_smooth_contact(r, collisions.smooth);
   r.reject_unknown();
   return collisions;
 }

@@ -67,7 +67,7 @@ inline Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
   return cell;
 }
 
-void BodyCollider::build_grid(const Body& surface, const State& state, const Box& region, double search,
+void BodyCollider::build_grid(const Body& surface, std::span<const Vec3> x_all, const Box& region, double search,
                               double cell_size) {
   grid_origin_ = region.lo;
   // Vertices tested lie in the region, so a query never reaches past the cell of region.hi + search: the
@@ -87,7 +87,7 @@ void BodyCollider::build_grid(const Body& surface, const State& state, const Box
   grid_triangles_.clear();
   cell_start_.assign(static_cast<std::size_t>(grid_cells_.prod()) + 1, 0);
   // Pass 1: each triangle's box and cells, counted per cell (in cell_start_[c + 1]).
-  const Vec3* x = state.x.data() + surface.first_vertex;
+  const Vec3* x = x_all.data() + surface.first_vertex;
   for (std::size_t f = 0; f < face_count; ++f) {
     const Triangle& t = surface.topology.faces[f];
     const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
@@ -166,28 +166,25 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 
 }  // namespace
 
-int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
-                                                     std::span<const double> inverse_mass, State& state,
-                                                     const ContactMaterial& material) {
+template <class Visit>
+void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search,
+                                    Visit visit) {
   const double edge = surface.rest.mean_edge_m;
-  const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
   // holds the surface triangles there, and only moving vertices there are tested.
   const Box& moving_box = boxes_[moving_index_];
   const Box& surface_box = boxes_[surface_index_];
   const Box region{moving_box.lo.cwiseMax(surface_box.lo) - Vec3::Constant(search),
                    moving_box.hi.cwiseMin(surface_box.hi) + Vec3::Constant(search)};
-  build_grid(surface, state, region, search, std::max(2 * search, kCellFraction * edge));
-  const Vec3* x_surface = state.x.data() + surface.first_vertex;
-  int contacts = 0;
+  build_grid(surface, x, region, search, std::max(2 * search, kCellFraction * edge));
+  const Vec3* x_surface = x.data() + surface.first_vertex;
   for (int i = 0; i < moving.vertex_count; ++i) {
     const int vertex = moving.first_vertex + i;
-    const Vec3 p = state.x[vertex];
+    const Vec3 p = x[vertex];
     if ((p.array() < region.lo.array()).any() || (p.array() > region.hi.array()).any()) continue;
     // Nearest triangle among those in the grid cells that the search sphere's box touches.
     double best_distance = search;
-    int best = -1;
-    ClosestPoint best_point{};
+    Nearest best;
     const Eigen::Vector3i first = cell_of(p - Vec3::Constant(search));
     const Eigen::Vector3i last = cell_of(p + Vec3::Constant(search)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
     for (int cx = first.x(); cx <= last.x(); ++cx) {
@@ -205,41 +202,92 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
             const Triangle& t = surface.topology.faces[static_cast<std::size_t>(f)];
             const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
             const double distance = (p - q.point).norm();
-            if (distance < best_distance || (distance == best_distance && f < best)) {
+            if (distance < best_distance || (distance == best_distance && f < best.triangle)) {
               best_distance = distance;
-              best = f;
-              best_point = q;
+              best = Nearest{f, q.point, q.weights};
             }
           }
         }
       }
     }
-    if (best < 0) continue;
-    const Triangle& t = surface.topology.faces[best];
+    if (best.triangle >= 0) visit(vertex, best);
+  }
+}
+
+int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
+                                                     std::span<const double> inverse_mass, State& state,
+                                                     const ContactMaterial& material) {
+  const double edge = surface.rest.mean_edge_m;
+  const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
+  const Vec3* x_surface = state.x.data() + surface.first_vertex;
+  int contacts = 0;
+  for_each_nearest(moving, surface, state.x, search, [&](int vertex, const Nearest& best) {
+    const Vec3 p = state.x[vertex];
+    const Triangle& t = surface.topology.faces[best.triangle];
     const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
-    const double height = (p - best_point.point).dot(normal);  // < 0: inside the surface body
-    if (height >= thickness) continue;
+    const double height = (p - best.point).dot(normal);  // < 0: inside the surface body
+    if (height >= thickness) return;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
-                          best_point.weights, normal, thickness - height, 0.1 * search};
+                          best.weights, normal, thickness - height, 0.1 * search};
     apply_contact(contact, inverse_mass, state, material);
     ++contacts;
-  }
+  });
   return contacts;
 }
 
-int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-                          const ContactMaterial& material) {
-  if (bodies.size() < 2) return 0;
+int BodyCollider::add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
+                                         std::span<const Vec3> x, std::span<const Vec3> v,
+                                         const SmoothResponse& contact, std::span<Vec3> force) {
+  const double search = kSearchFraction * surface.rest.mean_edge_m;
+  const double skin = contact.smoothing_m;  // the contact starts δ outside the surface: at s = 0 the ramp is done
+  const double eps2 = contact.slip_speed_m_per_s * contact.slip_speed_m_per_s;
+  const Vec3* x_surface = x.data() + surface.first_vertex;
+  int contacts = 0;
+  for_each_nearest(moving, surface, x, search, [&](int vertex, const Nearest& best) {
+    const Triangle& t = surface.topology.faces[best.triangle];
+    const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
+    const Vec3 offset = x[vertex] - best.point;
+    const double distance = offset.norm();
+    const double side = offset.dot(normal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
+    const double signed_distance = side * distance;
+    const double depth = skin - signed_distance;
+    if (depth <= 0.0) return;
+    // Along the offset from the closest point (continuous where the nearest triangle changes on a convex
+    // surface); the face normal where the vertex sits on the surface.
+    const Vec3 direction = distance > 1e-9 * search ? Vec3(side / distance * offset) : normal;
+    const std::array<int, 3> corners{surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]};
+    Vec3 surface_velocity = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) surface_velocity += best.weights[k] * v[corners[k]];
+    const Vec3 relative = v[vertex] - surface_velocity;
+    const double normal_speed = relative.dot(direction);
+    const Vec3 tangential = relative - normal_speed * direction;
+    const double m = mass_kg[vertex];
+    const double elastic = m * smooth_elastic_per_mass(contact, depth);                                // [N]
+    const double dashpot = -m * contact.damping_rate * normal_speed * smooth_dashpot_weight(contact, depth);  // [N]
+    const double per_slip = contact.friction * elastic / std::sqrt(tangential.squaredNorm() + eps2);   // μ N / √(v_t² + ε²)
+    const Vec3 f = (elastic + dashpot) * direction - per_slip * tangential;
+    force[vertex] += f;
+    for (int k = 0; k < 3; ++k) force[corners[k]] -= best.weights[k] * f;
+    ++contacts;
+  });
+  return contacts;
+}
+
+void BodyCollider::compute_boxes(const std::vector<Body>& bodies, std::span<const Vec3> x) {
   boxes_.resize(bodies.size());
   for (const Body& body : bodies) {
     Box& box = boxes_[&body - bodies.data()];
-    box.lo = box.hi = state.x[body.first_vertex];
+    box.lo = box.hi = x[body.first_vertex];
     for (int i = 0; i < body.vertex_count; ++i) {
-      box.lo = box.lo.cwiseMin(state.x[body.first_vertex + i]);
-      box.hi = box.hi.cwiseMax(state.x[body.first_vertex + i]);
+      box.lo = box.lo.cwiseMin(x[body.first_vertex + i]);
+      box.hi = box.hi.cwiseMax(x[body.first_vertex + i]);
     }
   }
+}
+
+template <class Visit>
+int BodyCollider::for_each_touching_pair(const std::vector<Body>& bodies, Visit visit) {
   int contacts = 0;
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -248,10 +296,29 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
       surface_index_ = b;
-      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, material);
+      contacts += visit(bodies[a], bodies[b]);
     }
   }
   return contacts;
+}
+
+int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
+                          const ContactMaterial& material) {
+  if (bodies.size() < 2) return 0;
+  compute_boxes(bodies, state.x);
+  return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
+    return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material);
+  });
+}
+
+int BodyCollider::add_smooth_forces(const std::vector<Body>& bodies, std::span<const double> mass_kg,
+                                    std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
+                                    std::span<Vec3> force) {
+  if (bodies.size() < 2) return 0;
+  compute_boxes(bodies, x);
+  return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
+    return add_smooth_pair_forces(moving, surface, mass_kg, x, v, contact, force);
+  });
 }
 
 double winding_number(std::span<const Vec3> x, std::span<const Triangle> faces, const Vec3& p) {

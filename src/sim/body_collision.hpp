@@ -2,7 +2,8 @@
 // bounding box overlaps it. Broad phase: bounding boxes, then a uniform grid of triangles (a dense cell
 // table over the pair's overlap region, counting-sorted, rebuilt each step without allocating). Narrow
 // phase: closest point on the nearest triangle, each triangle tested once per vertex.
-// Applied after each step, like the floor; a single body costs nothing (no search at all).
+// The impulse model is applied after each step, like the floor; the smooth model adds penalty forces inside
+// the force evaluation (sim::Dynamics). A single body costs nothing (no search at all).
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "sim/body.hpp"
 #include "sim/settings.hpp"
+#include "sim/smooth_contact.hpp"
 #include "sim/state.hpp"
 
 namespace sim {
@@ -22,14 +24,42 @@ class BodyCollider {
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
               const ContactMaterial& material);
 
+  // The smooth model: for every vertex of each body within the contact's skin δ of the nearest triangle of
+  // another body (or inside it, up to half an edge deep), a penalty spring-damper on the penetration
+  // d = δ − s (s the signed distance to that triangle, along the direction from its closest point) with
+  // regularised Coulomb friction on the relative velocity, the same force law as the smooth floor
+  // (sim/smooth_contact.hpp) on the vertex's mass: +F on the vertex, −w_k F on the triangle's corners by
+  // barycentric weight, so momentum is conserved exactly. Adds to `force` (every vertex of x).
+  // Returns the contacts found.
+  int add_smooth_forces(const std::vector<Body>& bodies, std::span<const double> mass_kg, std::span<const Vec3> x,
+                        std::span<const Vec3> v, const SmoothResponse& contact, std::span<Vec3> force);
+
  private:
   struct Box {
     Vec3 lo, hi;
   };
+  // The nearest triangle of a surface body to a vertex: its index, closest point and barycentric weights.
+  struct Nearest {
+    int triangle = -1;
+    Vec3 point = Vec3::Zero();
+    Vec3 weights = Vec3::Zero();
+  };
 
-  void build_grid(const Body& body, const State& state, const Box& region, double search, double cell_size);
+  void compute_boxes(const std::vector<Body>& bodies, std::span<const Vec3> x);
+  // Calls visit(pair) for every ordered pair of bodies whose boxes (grown by the surface's search) overlap,
+  // with moving_index_ and surface_index_ set.
+  template <class Visit>
+  int for_each_touching_pair(const std::vector<Body>& bodies, Visit visit);
+  void build_grid(const Body& body, std::span<const Vec3> x, const Box& region, double search, double cell_size);
+  // Builds the pair's grid and calls visit(vertex, nearest) for each vertex of `moving` with a triangle of
+  // `surface` within `search`, in vertex order. `x` may change under it (the vertex visited only).
+  template <class Visit>
+  void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material);
+  int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
+                             std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
+                             std::span<Vec3> force);
   static constexpr int kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
   // The cell holding p, each index clamped to [0, kMaxGridCells - 1]: a table never has more cells along an axis,
   // and the clamp keeps a far point's index from overflowing an int.

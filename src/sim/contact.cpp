@@ -20,6 +20,12 @@ FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::s
   return found;
 }
 
+double deepest_below_floor(double height_m, std::span<const Vec3> x) {
+  double deepest = 0.0;
+  for (const Vec3& p : x) deepest = std::max(deepest, height_m - p.y());
+  return deepest;
+}
+
 FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x,
                                          std::span<Vec3> v) {
   FloorContactFound found;

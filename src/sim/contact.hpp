@@ -1,5 +1,6 @@
-// Contact with the floor plane y = height, applied after each integration step. Both models put every
-// vertex found below the plane back on it, so no vertex passes through the floor at any speed.
+// Contact with the floor plane y = height, applied after each integration step (the paper's and the friction
+// model). Both put every vertex found below the plane back on it, so no vertex passes through the floor at
+// any speed. The smooth contact is a force instead (sim/smooth_contact.hpp).
 #pragma once
 
 #include <span>
@@ -30,6 +31,10 @@ FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::s
 //   normal:     v_n' = −e v_n for an impact, 0 for a resting contact;
 //   tangential: Δv_n = v_n' − v_n is the normal impulse; if |v_t| ≤ μ Δv_n the vertex sticks (v_t' = 0,
 //               static friction), else it slides and loses μ Δv_n of tangential speed (sliding friction).
+// The deepest penetration of any vertex below the floor (0: none) [m], for the smooth contact, which leaves
+// vertices where its force put them.
+double deepest_below_floor(double height_m, std::span<const Vec3> x);
+
 FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x,
                                          std::span<Vec3> v);
 

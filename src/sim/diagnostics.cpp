@@ -6,6 +6,7 @@
 
 #include "sim/energy.hpp"
 #include "sim/forces.hpp"
+#include "sim/smooth_contact.hpp"
 
 namespace sim {
 
@@ -28,7 +29,11 @@ BodyDiagnostics diagnose(const Body& body, std::span<const Vec3> x, std::span<co
 
 BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t index) {
   const Body& body = model.bodies[index];
-  return diagnose(body, model.of(body, state.x), model.of(body, state.v), model.gravity_m_per_s2);
+  BodyDiagnostics d = diagnose(body, model.of(body, state.x), model.of(body, state.v), model.gravity_m_per_s2);
+  if (model.floor && model.floor->contact == FloorContact::Smooth) {
+    d.contact_J = smooth_floor_energy(resolve_smooth_floor(*model.floor), body.masses.kg, model.of(body, state.x));
+  }
+  return d;
 }
 
 }  // namespace sim

@@ -15,13 +15,14 @@ struct BodyDiagnostics {
   double gravitational_J = 0.0;            // −Σ m g·x (zero at y = 0 for g along −y)
   double spring_J = 0.0;                   // Σ ½ k (|d| − L0)²
   double gas_J = 0.0;                      // −nRT ln(V / V0)
+  double contact_J = 0.0;                  // the smooth floor contact's springs (0 with the other contacts)
   double min_y_m = 0.0;                    // lowest vertex
-  double total_J() const { return kinetic_J + gravitational_J + spring_J + gas_J; }
+  double total_J() const { return kinetic_J + gravitational_J + spring_J + gas_J + contact_J; }
 };
 
 BodyDiagnostics diagnose(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, const Vec3& gravity);
 
-// Diagnostics of body `index` of the model in `state`.
+// Diagnostics of body `index` of the model in `state` (with the smooth floor contact's energy).
 BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t index);
 
 }  // namespace sim

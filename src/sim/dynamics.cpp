@@ -1,9 +1,30 @@
-// Force assembly: per body, gravity, the springs and dampers (fused), then the gas, handed out per vertex.
+// Force assembly: per body, gravity, the springs and dampers (fused), the smooth floor contact, then the gas,
+// handed out per vertex.
 #include "sim/dynamics.hpp"
 
 #include "sim/forces.hpp"
 
 namespace sim {
+
+Dynamics::Dynamics(const Model& model, ForceScratch& scratch) : model_(model), scratch_(scratch) {
+  if (model.floor && model.floor->contact == FloorContact::Smooth) smooth_floor_ = resolve_smooth_floor(*model.floor);
+  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+    smooth_bodies_ = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
+  }
+}
+
+bool Dynamics::body_contact_forces(const State& state) {
+  if (!smooth_bodies_) return false;
+  scratch_.contact_force.assign(state.x.size(), Vec3::Zero());
+  scratch_.collider.add_smooth_forces(model_.bodies, model_.mass_kg, state.x, state.v, *smooth_bodies_,
+                                      scratch_.contact_force);
+  return true;
+}
+
+void Dynamics::floor_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
+                                    std::span<Vec3> f) const {
+  if (smooth_floor_) add_smooth_floor_forces(*smooth_floor_, body.masses.kg, x, v, f);
+}
 
 void Dynamics::gravity_and_spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                                          std::span<Vec3> f) const {
@@ -35,20 +56,32 @@ void hand_out_net_forces(std::size_t first, std::size_t begin, std::size_t end, 
 
 }  // namespace
 
+namespace {
+
+// f += the body contact's share of these vertices.
+void add_contact_forces(std::span<const Vec3> contact, std::span<Vec3> f) {
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] += contact[i];
+}
+
+}  // namespace
+
 template <class Use>
 void Dynamics::visit_net_forces(const State& state, std::vector<Vec3>& partial, Use use) {
   partial.resize(state.x.size());
+  const bool body_contact = body_contact_forces(state);
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const Body& body = model_.bodies[b];
     const auto first = static_cast<std::size_t>(body.first_vertex);
     const auto count = static_cast<std::size_t>(body.vertex_count);
     const std::span<Vec3> f(partial.data() + first, count);
     if (scratch_.threads > 1 && count >= kParallelMinVertices) {
-      visit_body_forces_in_parallel(b, state, f, use);
+      visit_body_forces_in_parallel(b, state, f, body_contact, use);
       continue;
     }
     const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
     gravity_and_spring_forces(body, x, v, f);
+    floor_contact_forces(body, x, v, f);
+    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
     const double per_area_sum = gas_face_pass(b, x);
     const std::span<const Vec3> area_sums = per_area_sum == 0.0 ? std::span<const Vec3>() : scratch_.area_sums[b];
     hand_out_net_forces(first, 0, count, f, area_sums, per_area_sum, use);
@@ -56,7 +89,8 @@ void Dynamics::visit_net_forces(const State& state, std::vector<Vec3>& partial, 
 }
 
 template <class Use>
-void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, Use& use) {
+void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, bool body_contact,
+                                             Use& use) {
   const Body& body = model_.bodies[b];
   const auto first = static_cast<std::size_t>(body.first_vertex);
   const std::size_t n = f.size();
@@ -66,6 +100,8 @@ void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, 
   scratch_.runner->run(2, [&](int part) {
     if (part == 0) {
       gravity_and_spring_forces(body, x, v, f);
+      floor_contact_forces(body, x, v, f);
+      if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, n), f);
     } else {
       per_area_sum = gas_face_pass(b, x);
     }

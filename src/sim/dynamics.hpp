@@ -1,13 +1,17 @@
 // The equations of motion the integrators see: the net force on every vertex from the model's forces
-// (gravity, springs, dampers, gas), a(x, v) = f / m, and the fused first-order step.
+// (gravity, springs, dampers, gas, the smooth floor and body contacts), a(x, v) = f / m, and the fused
+// first-order step.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "sim/body_collision.hpp"
 #include "sim/model.hpp"
 #include "sim/part_runner.hpp"
+#include "sim/smooth_contact.hpp"
 #include "sim/state.hpp"
 
 namespace sim {
@@ -44,11 +48,13 @@ struct ForceScratch {
   std::unique_ptr<PartRunner> runner;        // runs those parts (its workers start when first needed)
   std::vector<std::vector<Vec3>> area_sums;  // per body of the model, one entry per vertex: the gas's face pass
   std::vector<Vec3> net_force;               // every vertex: the fused step's partial sums
+  BodyCollider collider;                     // the smooth body contact's search
+  std::vector<Vec3> contact_force;           // every vertex: the smooth body contact's forces
 };
 
 class Dynamics {
  public:
-  Dynamics(const Model& model, ForceScratch& scratch) : model_(model), scratch_(scratch) {}
+  Dynamics(const Model& model, ForceScratch& scratch);
 
   const Model& model() const { return model_; }
 
@@ -68,18 +74,28 @@ class Dynamics {
   void visit_net_forces(const State& state, std::vector<Vec3>& partial, Use use);
   // visit_net_forces for one body on two threads (see kParallelMinVertices).
   template <class Use>
-  void visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, Use& use);
+  void visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, bool body_contact, Use& use);
   template <FirstOrderUpdate kUpdate>
   void fused_first_order_step(State& state, double dt);
   // Gravity, then the springs and dampers (one fused pass), summed into f (overwritten).
   void gravity_and_spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                                  std::span<Vec3> f) const;
+  // The smooth floor contact's forces added to f (only with floor.contact smooth; the other contacts are
+  // projections after the step, sim/step.cpp).
+  void floor_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
+                            std::span<Vec3> f) const;
   // Body b's gas: its area sums into scratch_.area_sums[b]; returns the gas force per area sum (nRT / V / 6),
   // 0 without gas.
   double gas_face_pass(std::size_t b, std::span<const Vec3> x);
 
   const Model& model_;
   ForceScratch& scratch_;
+  // The smooth body contact's forces of the whole state into scratch_.contact_force (they couple the bodies,
+  // so all are found before any body's net force is handed out). False when there are none to add.
+  bool body_contact_forces(const State& state);
+
+  std::optional<SmoothFloor> smooth_floor_;     // the floor's constants when its contact is a force
+  std::optional<SmoothResponse> smooth_bodies_; // the bodies' contact constants when theirs is a force
 };
 
 }  // namespace sim

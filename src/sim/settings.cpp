@@ -16,8 +16,13 @@ std::string to_string(FloorContact contact) {
   switch (contact) {
     case FloorContact::Paper: return "paper";
     case FloorContact::Friction: return "friction";
+    case FloorContact::Smooth: return "smooth";
   }
   return "?";
+}
+
+std::string to_string(BodyContactModel contact) {
+  return contact == BodyContactModel::Smooth ? "smooth" : "impulse";
 }
 
 }  // namespace sim

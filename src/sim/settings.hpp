@@ -55,6 +55,7 @@ std::optional<IntegratorKind> integrator_named(std::string_view name);
 enum class FloorContact {
   Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
   Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
+  Smooth,    // a penalty spring-damper with regularised Coulomb friction, a force inside a(x, v) (sim/smooth_contact.hpp)
 };
 std::string to_string(FloorContact contact);
 
@@ -68,15 +69,43 @@ struct ContactMaterial {
   double resting_speed_m_per_s = 0.05;
 };
 
+// The smooth contact's constants, from an intent: how fast a contact pushes back and how much of an impact's
+// speed it returns. Per vertex of mass m the contact is a spring m/τ² and a dashpot 2ζm/τ on the
+// penetration (an oscillator of ω = 1/τ and damping ratio ζ, like MuJoCo's solref), so every vertex, light
+// or heavy, meets the floor on the same time scale, and the stable step it asks for does not depend on the
+// mesh (sim/smooth_contact.hpp derives the force).
+struct SmoothContact {
+  double time_constant_s = 0.002;   // τ = 1/ω: an impact of one vertex lasts about π τ
+  double damping_ratio = -1.0;      // ζ; < 0: from the material's restitution, e = exp(−πζ/√(1−ζ²))
+  double slip_speed_m_per_s = 0.1;  // ε: Coulomb friction is regularised as μ N v_t / √(|v_t|² + ε²); its
+                                    // stiffness μN/ε limits explicit steps (0.01 m/s needed 4× smaller ones)
+  double smoothing_m = 0.002;       // δ: the spring stiffens from 0 to m/τ² over the first δ of penetration
+                                    // (a C² ramp, so that the equations of motion stay smooth: rk4 keeps
+                                    // its order through an impact)
+};
+
 struct Floor {
   double height_m = 0.0;  // the plane y = height_m
   FloorContact contact = FloorContact::Paper;
-  ContactMaterial material;  // the friction contact's restitution and friction
+  ContactMaterial material;  // the friction and smooth contacts' restitution and friction
+  SmoothContact smooth;      // the smooth contact's constants
 };
+
+// How bodies touch each other.
+enum class BodyContactModel {
+  Impulse,  // after each step: a vertex inside is moved out, with restitution and Coulomb friction impulses
+  Smooth,   // a penalty spring-damper with regularised friction inside a(x, v) (sim/body_collision.hpp)
+};
+std::string to_string(BodyContactModel contact);
 
 // Contact between bodies (vertices of one against the triangles of another), when there are several.
 struct BodyContact {
+  BodyContactModel contact = BodyContactModel::Impulse;
   ContactMaterial material{0.3, 0.5};
+  // The smooth model's constants (its spring acts on the vertex's mass). Stiffer than the floor's by default:
+  // a body often rests on another on few vertices (a coarse mesh's), each of which then carries much more
+  // than its own weight; at τ = 0.5 ms a vertex carrying 200× its weight stays within the 2 mm skin.
+  SmoothContact smooth{0.0005};
 };
 
 struct Solver {

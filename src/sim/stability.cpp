@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "sim/forces.hpp"
+#include "sim/smooth_contact.hpp"
 
 namespace sim {
 namespace {
@@ -190,7 +191,7 @@ double mode_limit(IntegratorKind integrator, double mu, double gamma) {
 
 }  // namespace
 
-double ModeBounds::omega_max() const { return std::sqrt(omega2_springs + omega2_gas); }
+double ModeBounds::omega_max() const { return std::sqrt(omega2_springs + omega2_gas + omega2_contact); }
 
 BodyStats body_stats(const Body& body, std::span<const Vec3> x) {
   const Topology& t = body.topology;
@@ -226,10 +227,12 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x) {
 }
 
 double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
-  const double mu_max = bounds.omega2_springs + bounds.omega2_gas;
+  const double mu_max = bounds.omega2_springs + bounds.omega2_gas + bounds.omega2_contact;
   if (integrator == IntegratorKind::Implicit) {
-    // Springs and dampers implicit (unconditionally stable); the explicit gas term as in symplectic Euler.
-    return bounds.omega2_gas > 0.0 ? 2.0 / std::sqrt(bounds.omega2_gas) : StabilityEstimate::kUnlimited;
+    // Springs and dampers implicit (unconditionally stable); the explicit gas and contact terms as in
+    // symplectic Euler.
+    const double explicit_omega2 = bounds.omega2_gas + bounds.omega2_contact;
+    return explicit_omega2 > 0.0 ? 2.0 / std::sqrt(explicit_omega2) : StabilityEstimate::kUnlimited;
   }
   if (mu_max == 0.0 && bounds.damping_rate == 0.0) return StabilityEstimate::kUnlimited;  // free particles
   // Forward Euler without dampers: ρ² = 1 + h²ω² > 1 at every h (the tolerance above would hide it).
@@ -249,7 +252,11 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
 
 StabilityEstimate estimate_stability(const Model& model, const State& state) {
   StabilityEstimate estimate = estimate_stability(model.bodies, state.x);
-  if (!model.floor) return estimate;
+  for (const Vec3& v : state.v) estimate.impact_speed_m_per_s = std::max(estimate.impact_speed_m_per_s, v.norm());
+  if (!model.floor) {
+    scale_for_contacts(estimate, model);
+    return estimate;
+  }
   const double g = model.gravity_m_per_s2.norm();
   for (const Body& body : model.bodies) {
     const auto x = model.of(body, state.x);
@@ -260,17 +267,45 @@ StabilityEstimate estimate_stability(const Model& model, const State& state) {
       height = std::max(height, x[i].y() - model.floor->height_m);
     }
     speed += std::sqrt(2.0 * g * std::max(0.0, height));  // m/s, v² = 2 g h
+    estimate.impact_speed_m_per_s = std::max(estimate.impact_speed_m_per_s, speed);
     if (speed > 0.0) {
       const double travel = kTravelFraction * body_stats(body, x).edge_min_m / speed;
       estimate.travel_dt_s = std::min(estimate.travel_dt_s, travel);
     }
   }
-  scale_for_floor_contact(estimate, model.floor->contact);
+  scale_for_contacts(estimate, model);
   for (double& dt : estimate.stable_dt_s) dt = std::min(dt, estimate.travel_dt_s);
   return estimate;
 }
 
-void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact) {
+namespace {
+
+// A smooth contact in every body's bounds, and each integrator's limit taken again from them. Its dashpot
+// adds 2ζω to the damping rate, and so does its regularised friction while a vertex nearly sticks:
+// ∂f_t/∂v_t = μ N / ε per unit mass, with N the contact spring's force per unit mass at the depth an impact at
+// the estimate's speed reaches, about v τ (at least the smoothing depth δ).
+void add_smooth_contact(StabilityEstimate& estimate, const SmoothResponse& contact) {
+  const double tau = 1.0 / std::sqrt(contact.omega2);
+  const double depth = std::max(contact.smoothing_m, estimate.impact_speed_m_per_s * tau);
+  const double friction_rate = contact.friction * smooth_elastic_per_mass(contact, depth) / contact.slip_speed_m_per_s;
+  for (ModeBounds& b : estimate.bodies) {
+    b.omega2_contact += contact.omega2;
+    b.damping_rate += contact.damping_rate + friction_rate;
+    for (const IntegratorInfo& integrator : kIntegrators) {
+      double& limit = estimate.stable_dt_s[static_cast<int>(integrator.kind)];
+      limit = std::min(limit, stable_dt(integrator.kind, b));
+    }
+  }
+}
+
+}  // namespace
+
+void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
+  if (floor.contact == FloorContact::Smooth) {
+    add_smooth_contact(estimate, resolve_smooth_floor(floor));  // a force like the others: no projection, no projection margins
+    return;
+  }
+  const FloorContact contact = floor.contact;
   for (const IntegratorInfo& integrator : kIntegrators) {
     if (integrator.explicit_springs) estimate.stable_dt_s[static_cast<int>(integrator.kind)] *= kContactMargin;
   }
@@ -283,6 +318,13 @@ void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact) 
     const double zeta = b.damping_rate / (2.0 * std::sqrt(b.omega2_springs));  // of the fastest mode
     euler = std::min(euler, c_over_k * (zeta < kPaperEulerZeta ? kPaperEulerFractionLightDamping
                                                                 : kPaperEulerFractionHeavyDamping));
+  }
+}
+
+void scale_for_contacts(StabilityEstimate& estimate, const Model& model) {
+  if (model.floor) scale_for_floor_contact(estimate, *model.floor);
+  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+    add_smooth_contact(estimate, resolve_smooth_response(model.body_contact.smooth, model.body_contact.material));
   }
 }
 

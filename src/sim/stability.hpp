@@ -17,7 +17,7 @@
 //   verlet       kick-drift-kick with cached a (3×3 map)         h < 2/ω
 //   rk4          Σ_{j≤4} (hA)^j / j!                             h < 2.83/ω
 //   rk45         Σ_{j≤5} (hA)^j / j! + (hA)^6 / 600 (DOPRI5)     h < 3.3/ω (step chosen adaptively)
-//   implicit     springs and dampers implicit: no limit; the gas is explicit: h < 2/ω_gas
+//   implicit     springs and dampers implicit: no limit; the gas (and a smooth contact) explicit: h < 2/ω_gas
 #pragma once
 
 #include <array>
@@ -39,8 +39,9 @@ struct ModeBounds {
   double lambda_gershgorin_per_kg = 0.0;// Gershgorin's upper bound on the same: max_i (‖K_ii‖ + Σ_j ‖K_ij‖) / m_i
   double omega2_springs = 0.0;          // k λ [1/s²], with the stretched springs' geometric stiffness
   double omega2_gas = 0.0;              // the gas's local and breathing stiffness over the mass [1/s²]
-  double damping_rate = 0.0;            // γ = c λ of the fastest mode [1/s]
-  double omega_max() const;             // √(ω²_springs + ω²_gas) [rad/s]
+  double damping_rate = 0.0;            // γ = c λ of the fastest mode [1/s] (+ the smooth contact's 2ζω)
+  double omega2_contact = 0.0;          // the smooth floor contact's spring per unit mass, 1/τ² [1/s²]
+  double omega_max() const;             // √(ω²_springs + ω²_gas + ω²_contact) [rad/s]
 };
 
 // Mesh statistics the `info` command prints with the estimate.
@@ -59,6 +60,7 @@ struct StabilityEstimate {
   std::array<double, kIntegrators.size()> stable_dt_s{};  // indexed by IntegratorKind; 0: unstable at every dt
   double travel_dt_s = kUnlimited;                     // contact limit (with a floor), already in stable_dt_s
   int limiting_body = 0;                               // the body with the highest ω_max
+  double impact_speed_m_per_s = 0.0;                   // the fastest vertex, plus a fall to the floor if any
   double stable_dt(IntegratorKind integrator) const { return stable_dt_s[static_cast<int>(integrator)]; }
 };
 
@@ -115,8 +117,12 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
                const std::string& scene_file);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
-// kPaperEuler*); the travel limit needs velocities and is applied by estimate_stability(model, state).
-void scale_for_floor_contact(StabilityEstimate& estimate, FloorContact contact);
+// kPaperEuler*; the smooth contact adds its spring and dashpot to every body's fastest mode, a bound: the
+// contact acts on the same vertices as the springs, so the stiffest mode is at most the sum); the travel
+// limit needs velocities and is applied by estimate_stability(model, state).
+void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor);
+// The floor's (if any) and the smooth body contact's (with several bodies) costs.
+void scale_for_contacts(StabilityEstimate& estimate, const Model& model);
 
 
 }  // namespace sim

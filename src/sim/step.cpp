@@ -26,14 +26,16 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
   return 0.0;
 }
 
-// Phase 2: impulses between bodies (a single body does no search). Returns the contacts resolved.
+// Phase 2: impulses between bodies (a single body does no search; the smooth contact is a force inside
+// phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace) {
-  if (model.bodies.size() < 2) return 0;
+  if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
   return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material);
 }
 
-// Phase 3: the floor's contact model. Returns the vertices it found below the floor. The paper's model lists
-// the vertices it reversed in state.coasting (symplectic Euler's next step reads them).
+// Phase 3: the floor's contact model. Returns the vertices it moved. The paper's model lists the vertices it
+// reversed in state.coasting (symplectic Euler's next step reads them); the smooth contact is a force and
+// moves none.
 int resolve_floor(const Model& model, State& state, Workspace& workspace) {
   if (!model.floor) return 0;
   FloorContactFound found;
@@ -45,6 +47,10 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace) {
     case FloorContact::Friction:
       found = resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
       break;
+    case FloorContact::Smooth:  // a force inside the dynamics: nothing to project, only the depth to report
+      workspace.deepest_floor_penetration_m =
+          std::max(workspace.deepest_floor_penetration_m, deepest_below_floor(model.floor->height_m, state.x));
+      return 0;
   }
   workspace.deepest_floor_penetration_m = std::max(workspace.deepest_floor_penetration_m, found.deepest_m);
   return found.below;
@@ -85,7 +91,7 @@ std::optional<Divergence> run_substeps(const Model& model, State& state, Workspa
 // The stable-dt estimate at the model's initial state (the diverged state says nothing about it).
 StabilityEstimate estimate_at_start(const Model& model) {
   StabilityEstimate estimate = estimate_stability(model.bodies, model.initial_x);
-  if (model.floor) scale_for_floor_contact(estimate, model.floor->contact);
+  scale_for_contacts(estimate, model);
   return estimate;
 }
 
