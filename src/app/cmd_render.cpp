@@ -1,6 +1,7 @@
 // `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -10,10 +11,13 @@
 #include "app/progress.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "frames/frame_loop.hpp"
 #include "frames/overlapped_frame_loop.hpp"
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
+#include "output/swept_bounds.hpp"
+#include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
@@ -30,11 +34,28 @@ struct RenderOptions {
   bool resume = false;
 };
 
+// A scene without `camera`: one silent pass over every frame finds the box the bodies sweep, and the camera
+// frames it. The pass starts from and returns to the same State (a copy is a checkpoint), so the run
+// afterwards gives the same bits, and every farm chunk gets the same camera.
+render::CameraSettings camera_framing_the_run(PreparedRun& run, float aspect, float fov_deg) {
+  const sim::State start = run.world.state;
+  output::SweptBounds swept;
+  std::vector<frames::FrameSink*> sinks = {&swept};
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
+  run.world.state = start;
+  std::fprintf(stderr, "note: no camera in the scene: framed the bodies' trajectory from a pass over its %d frames "
+                       "(%.2f s)\n", stats.frames, stats.wall_s);
+  const auto to_glm = [](const softbody::Vec3& v) {
+    return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
+  };
+  return render::frame_swept_box({to_glm(swept.min()), to_glm(swept.max())}, aspect, fov_deg);
+}
+
 double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
 
 // One line of figures the README and the benchmarks quote: what a frame costs, stage by stage.
 void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
-                   const output::RenderTimings& t) {
+                   const output::RenderTimings& t, const std::string& backend) {
   const int n = run.frames;
   std::printf("%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
               "simulate %.1f, render %.1f, read-back %.1f, encode %.1f (writer thread; +%.1f writing files)",
@@ -44,7 +65,15 @@ void print_summary(const scene::Scene& scene, const render::Renderer& renderer, 
               ms_per_frame(t.read_back_s, n), ms_per_frame(t.png.encode_s, t.png.frames),
               ms_per_frame(t.png.store_s, t.png.frames));
   if (t.video_s > 0.0) std::printf(", video %.1f", ms_per_frame(t.video_s, n));
-  std::printf("\n");
+  std::printf("; backend %s\n", backend.c_str());
+}
+
+// "egl (auto from render.backend: OpenGL 4.5 ... on llvmpipe ... (EGL, surfaceless))".
+std::string backend_words(const render::GlContext& context, const render::GlBackendRequest& request) {
+  std::string words(render::gl_backend_name(context.backend()));
+  if (request.backend == render::GlBackend::Auto) words += " (auto";
+  else words += " (asked for";
+  return words + " by " + request.source + "; " + context.description() + ")";
 }
 
 void print_written(const output::RenderOutputs& outputs, const output::RenderSink& sink, int frames) {
@@ -67,8 +96,14 @@ int run_render(const RenderOptions& options) {
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   output::check_frame_pattern(scene.output.pattern, scene.source.string());
 
-  const std::unique_ptr<render::GlContext> context = render::create_offscreen_context();
-  render::Renderer renderer(*context, render::settings_from_scene(scene));
+  const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
+  const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
+  render::RenderSettings settings = render::settings_from_scene(scene);
+  if (!scene.camera.given) {
+    settings.camera = camera_framing_the_run(run, static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
+                                             settings.camera.fov_deg);
+  }
+  render::Renderer renderer(*context, settings);
 
   output::RenderOutputs outputs;
   outputs.dir = scene.output.dir;
@@ -109,7 +144,7 @@ int run_render(const RenderOptions& options) {
   }
   progress.clear();
   if (resumable) resumable->remove_store();
-  print_summary(scene, renderer, stats, sink.timings());
+  print_summary(scene, renderer, stats, sink.timings(), backend_words(*context, backend));
   print_written(outputs, sink, stats.frames);
   return 0;
 }
@@ -119,7 +154,7 @@ int run_render(const RenderOptions& options) {
 Action register_render(CLI::App& parent) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = parent.add_subcommand(
-      "render", "Simulate a scene and render every frame off-screen (OSMesa) to PNG files, figure.png and a video");
+      "render", "Simulate a scene and render every frame off-screen (EGL or OSMesa) to PNG files, figure.png and a video");
   add_scene_options(*command, options->scene);
   command->add_option("-o,--output", options->output_dir, "Output folder (default: the scene's output.dir, "
                                                           "else out/<scene name>)")
@@ -137,6 +172,8 @@ Action register_render(CLI::App& parent) {
       "  With --frames only those frames are drawn (the states before come from --from-cache or are simulated\n"
       "  silently), no figure is made and no other frame file is touched: chunks can render side by side.\n"
       "  Size, MSAA, shadows, camera and light come from the scene's render, camera and light keys.\n"
+      "  The GL backend: render.backend (auto | egl | osmesa; auto tries EGL, then OSMesa), overridden by the\n"
+      "  environment variable SOFTBODY_GL when it is set; the summary line names the backend used.\n"
       "  Prints a progress line when stderr is a terminal, and a summary with the time per frame of each stage.");
   return [options] { return run_render(*options); };
 }

@@ -298,6 +298,8 @@ RenderSettings read_render(ObjectReader& top) {
   render.shadows = r.boolean("shadows", render.shadows);
   render.background = r.color("background", render.background);
   render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
+  render.backend = r.choice<GlBackend>("backend", render.backend,
+                                       {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
   r.reject_unknown();
   return render;
 }
@@ -306,6 +308,7 @@ Camera read_camera(ObjectReader& top) {
   Camera camera;
   if (!top.has("camera")) return camera;
   ObjectReader r(top.at("camera"), "camera", top.file());
+  camera.given = true;
   camera.position_m = r.vec3("position", camera.position_m);
   camera.target_m = r.vec3("target", camera.target_m);
   camera.up = r.vec3("up", camera.up);

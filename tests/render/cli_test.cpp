@@ -107,7 +107,7 @@ TEST(RenderCommand, RerunRemovesFramesLeftByALongerRun) {
 
 TEST(SimulationSide, CoreLibraryCallsNoOpenGl) {
   // softbody_core (scene, mesh, sim, frames, outputs) and so `softbody simulate` must work where no GL
-  // context can be made. Structural check: no object in the core library references an OSMesa or GL
+  // context can be made. Structural check: no object in the core library references an OSMesa, EGL or GL
   // function (`nm -u` lists the symbols it needs from elsewhere).
   const CommandResult symbols = run_shell("nm -u --format=just-symbols " + quoted(SOFTBODY_CORE_LIBRARY));
   ASSERT_EQ(symbols.exit_status, 0) << symbols.output;
@@ -117,6 +117,7 @@ TEST(SimulationSide, CoreLibraryCallsNoOpenGl) {
     const std::size_t line_end = symbols.output.find('\n', line_start);
     const std::string symbol = symbols.output.substr(line_start, line_end - line_start);
     const bool gl_call = symbol.rfind("OSMesa", 0) == 0 ||
+                         (symbol.size() > 3 && symbol.rfind("egl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[3]))) ||
                          (symbol.size() > 2 && symbol.rfind("gl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[2])));
     EXPECT_FALSE(gl_call) << "softbody_core needs " << symbol;
     if (line_end == std::string::npos) break;
