@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -16,7 +17,8 @@
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
-#include "output/swept_bounds.hpp"
+#include "output/figure_frames.hpp"
+#include "output/motion_track.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -34,21 +36,39 @@ struct RenderOptions {
   bool resume = false;
 };
 
-// A scene without `camera`: one silent pass over every frame finds the box the bodies sweep, and the camera
-// frames it. The pass starts from and returns to the same State (a copy is a checkpoint), so the run
-// afterwards gives the same bits, and every farm chunk gets the same camera.
-render::CameraSettings camera_framing_the_run(PreparedRun& run, float aspect, float fov_deg) {
+// One silent pass over every frame, for what must be known before frame 0 is drawn: the box the bodies
+// sweep (the camera of a scene without one) and the moments figure.png shows. The pass starts from and
+// returns to the same State (a copy is a checkpoint), so the run afterwards gives the same bits, and every
+// farm chunk gets the same camera and figure; with --from-cache it reads the cache instead of stepping.
+output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoints* checkpoints) {
   const sim::State start = run.world.state;
-  output::SweptBounds swept;
-  std::vector<frames::FrameSink*> sinks = {&swept};
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks);
+  output::MotionTrack motion;
+  std::vector<frames::FrameSink*> sinks = {&motion};
+  const frames::RunStats stats = frames::run_frames(
+      run.world, run.clock, sinks, {}, {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
   run.world.state = start;
-  std::fprintf(stderr, "note: no camera in the scene: framed the bodies' trajectory from a pass over its %d frames "
-                       "(%.2f s)\n", stats.frames, stats.wall_s);
-  const auto to_glm = [](const softbody::Vec3& v) {
-    return glm::vec3(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
-  };
-  return render::frame_swept_box({to_glm(swept.min()), to_glm(swept.max())}, aspect, fov_deg);
+  std::fprintf(stderr, "note: a pass over the run's %d frames for the camera framing or the figure's frames took %.2f s\n",
+               stats.frames, stats.wall_s);
+  return motion;
+}
+
+glm::vec3 to_glm(const softbody::Vec3& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+// The frames of figure.png: render.figure_frames's list, or that many chosen from the motion.
+std::vector<int> figure_frames(const scene::Scene& scene, const output::MotionTrack* motion, int last_frame) {
+  if (!scene.render.figure_frame_list.empty()) {
+    if (scene.render.figure_frame_list.back() > last_frame) {
+      throw softbody::InputError(scene.source.string() + ": render.figure_frames: expected frames 0.." +
+                                 std::to_string(last_frame) + ", got " + std::to_string(scene.render.figure_frame_list.back()));
+    }
+    return scene.render.figure_frame_list;
+  }
+  if (motion == nullptr || scene.render.figure_frames == 0) return {};
+  std::optional<double> floor;
+  if (scene.floor) floor = scene.floor->height_m;
+  return output::frames_from_motion(motion->samples(), scene.render.figure_frames, floor);
 }
 
 double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
@@ -99,10 +119,18 @@ int run_render(const RenderOptions& options) {
   const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
   render::RenderSettings settings = render::settings_from_scene(scene);
+  const int last_frame = run.clock.frame_count;
+  // A run of some frames only (a farm chunk) makes no figure.
+  const bool motion_figure = chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
+  std::optional<output::MotionTrack> motion;
+  if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
   if (!scene.camera.given) {
-    settings.camera = camera_framing_the_run(run, static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
-                                             settings.camera.fov_deg);
+    settings.camera = render::frame_swept_box({to_glm(motion->swept_min()), to_glm(motion->swept_max())},
+                                              static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
+                                              settings.camera.fov_deg);
   }
+  const std::vector<int> figure = chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame)
+                                                      : std::vector<int>{};
   render::Renderer renderer(*context, settings);
 
   output::RenderOutputs outputs;
@@ -112,7 +140,8 @@ int run_render(const RenderOptions& options) {
   if (!options.video_file.empty()) outputs.video = options.video_file;
   outputs.fps = scene.fps;
   // A run of some frames only (a farm chunk) neither makes the figure nor removes frames past the last one.
-  outputs.figure_frames = chosen.everything() ? scene.render.figure_frames : 0;
+  outputs.figure_frames = 0;
+  outputs.figure_frame_list = figure;
   outputs.last_frame = run.clock.frame_count;
   outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
@@ -168,7 +197,11 @@ Action register_render(CLI::App& parent) {
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
       "  rename), and frames numbered after the last one, left by an earlier longer run, are removed.\n"
-      "  DIR/figure.png shows render.figure_frames frames evenly spaced over the run (0: none).\n"
+      "  DIR/figure.png shows render.figure_frames frames chosen from the motion (frame 0, the first contact, the\n"
+      "  deepest compression, rest, the highest rebound, the turn back, then frames spread between), each labelled\n"
+      "  with its time; render.figure_frames as a list ([0, 19, 24]) shows exactly those frames; 0: no figure.\n"
+      "  A scene without camera gets one that frames the bodies' whole trajectory (floor horizon in view).\n"
+      "  Either needs a silent pass over the run before drawing (from the cache with --from-cache).\n"
       "  With --frames only those frames are drawn (the states before come from --from-cache or are simulated\n"
       "  silently), no figure is made and no other frame file is touched: chunks can render side by side.\n"
       "  Size, MSAA, shadows, camera and light come from the scene's render, camera and light keys.\n"

@@ -42,7 +42,8 @@ struct RenderSettings {
   int msaa = 4;          // samples per pixel: 1 (off), 2 or 4
   bool shadows = true;   // the body casts a shadow-mapped shadow on the floor
   std::array<float, 3> background = {0.62f, 0.72f, 0.85f};  // linear RGB
-  int figure_frames = 8; // frames in the contact sheet figure.png (0: no figure)
+  int figure_frames = 8; // frames in the contact sheet figure.png, chosen from the motion (0: no figure)
+  std::vector<int> figure_frame_list;  // "figure_frames": [0, 19, 24, ...] instead: exactly these frames
   GlBackend backend = GlBackend::Auto;  // "auto" | "egl" | "osmesa"
 };
 
