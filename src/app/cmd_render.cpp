@@ -1,5 +1,6 @@
 // `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -44,11 +45,16 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
   const sim::State start = run.world.state;
   output::MotionTrack motion;
   std::vector<frames::FrameSink*> sinks = {&motion};
-  const frames::RunStats stats = frames::run_frames(
-      run.world, run.clock, sinks, {}, {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    frames::run_frames(run.world, run.clock, sinks, {}, {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
+  } catch (const softbody::DivergedError&) {
+    // The run proper diverges at the same step and reports it, after writing the frames before it: the
+    // camera frames those.
+  }
   run.world.state = start;
-  std::fprintf(stderr, "note: a pass over the run's %d frames for the camera framing or the figure's frames took %.2f s\n",
-               stats.frames, stats.wall_s);
+  std::fprintf(stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
+               motion.samples().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   return motion;
 }
 
@@ -124,7 +130,7 @@ int run_render(const RenderOptions& options) {
   const bool motion_figure = chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
   std::optional<output::MotionTrack> motion;
   if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
-  if (!scene.camera.given) {
+  if (!scene.camera.given && !motion->samples().empty()) {
     settings.camera = render::frame_swept_box({to_glm(motion->swept_min()), to_glm(motion->swept_max())},
                                               static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
                                               settings.camera.fov_deg);
