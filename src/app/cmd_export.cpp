@@ -1,31 +1,62 @@
-// `softbody export SCENE [-o DIR] [--format obj|ply] [--set ...]`: the simulated mesh of every frame.
+// `softbody export SCENE [-o DIR] [--format obj|ply|pc2|mdd] [--set ...]`: the simulated mesh of every frame,
+// or per body one mesh and a point cache of its positions.
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "output/mesh_exporter.hpp"
+#include "output/point_cache.hpp"
 
 namespace app {
 namespace {
+
+enum class ExportFormat { Obj, Ply, Pc2, Mdd };
 
 struct ExportOptions {
   SceneOptions scene;
   FrameOptions frames;
   bool resume = false;
   std::string dir;
-  output::MeshFormat format = output::MeshFormat::Obj;
+  ExportFormat format = ExportFormat::Obj;
 };
 
+// --format pc2 | mdd: DIR/body<N>.obj and DIR/body<N>.pc2 (.mdd), written when the run ends.
+int run_point_cache_export(const ExportOptions& options, output::PointCacheFormat format) {
+  if (options.resume) {
+    throw softbody::InputError("--resume: a point cache is written whole at the end; export it again instead");
+  }
+  PreparedRun run = prepare_run(options.scene);
+  const PlannedFrames planned(run, options.frames);
+  const frames::FrameSelection& chosen = planned.plan().frames;
+  if (chosen.count() != chosen.last() - chosen.first() + 1) {
+    throw softbody::InputError("--frames: a point cache holds frames one after another (one range), got " +
+                               options.frames.frames);
+  }
+  const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
+  output::PointCacheExporter exporter(dir, format);
+  std::vector<frames::FrameSink*> sinks = {&exporter};
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  print_run_summary(run, stats, "wrote " + exporter.mesh_path(0).string() + ", " + exporter.cache_path(0).filename().string() +
+                                    (exporter.body_count() > 1 ? " .. body" + std::to_string(exporter.body_count() - 1) : "") +
+                                    " (frames " + std::to_string(chosen.first()) + ".." + std::to_string(chosen.last()) + ")");
+  return 0;
+}
+
 int run_export(const ExportOptions& options) {
+  if (options.format == ExportFormat::Pc2) return run_point_cache_export(options, output::PointCacheFormat::Pc2);
+  if (options.format == ExportFormat::Mdd) return run_point_cache_export(options, output::PointCacheFormat::Mdd);
+  const output::MeshFormat mesh_format = options.format == ExportFormat::Obj ? output::MeshFormat::Obj : output::MeshFormat::Ply;
   PreparedRun run = prepare_run(options.scene);
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
-  output::MeshExporter exporter(dir, options.format);
+  output::MeshExporter exporter(dir, mesh_format);
   std::unique_ptr<ResumableRun> resumable;
   std::vector<frames::FrameSink*> sinks = {&exporter};
   if (options.resume) {
@@ -50,15 +81,26 @@ int run_export(const ExportOptions& options) {
 Action register_export(CLI::App& parent) {
   auto options = std::make_shared<ExportOptions>();
   CLI::App* command = parent.add_subcommand(
-      "export", "Run a scene and write the simulated mesh of every frame (OBJ or PLY), numbered like the PNGs");
+      "export", "Run a scene and write the simulated mesh of every frame (OBJ or PLY), numbered like the PNGs, "
+                "or per body one mesh and a point cache (PC2 or MDD)");
   add_scene_options(*command, options->scene);
   command->add_option("-o,--output", options->dir, "Output folder (default: <output.dir>/meshes)")->type_name("DIR");
-  const std::map<std::string, output::MeshFormat> formats{{"obj", output::MeshFormat::Obj}, {"ply", output::MeshFormat::Ply}};
-  command->add_option("--format", options->format, "obj (text, one object per body) or ply (binary, all bodies in one)")
+  const std::map<std::string, ExportFormat> formats{
+      {"obj", ExportFormat::Obj}, {"ply", ExportFormat::Ply}, {"pc2", ExportFormat::Pc2}, {"mdd", ExportFormat::Mdd}};
+  command->add_option("--format", options->format,
+                      "obj (text, one object per body) or ply (binary, all bodies in one), one file per frame; "
+                      "pc2 or mdd: per body DIR/body<N>.obj and a point cache DIR/body<N>.pc2 (.mdd) of every frame")
       ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
       ->default_str("obj");
   add_frame_options(*command, options->frames);
   add_resume_option(*command, options->resume);
+  command->footer(
+      "Point caches (--format pc2 | mdd), for Blender's Mesh Cache modifier, Maya and Houdini:\n"
+      "  DIR/body<N>.obj is the body's mesh at the first frame exported (vertex order = the cache's), DIR/body<N>.pc2\n"
+      "  (little-endian, \"POINTCACHE2\", start frame = the first frame, one sample per frame) or DIR/body<N>.mdd\n"
+      "  (big-endian, the simulated time of each frame) its positions, in the scene's units (m, y up).\n"
+      "  The frames (all, or one --frames range) are kept in memory (12 bytes per vertex per frame) and the files\n"
+      "  written whole at the end (also when the run diverges: the frames before it).");
   return [options] { return run_export(*options); };
 }
 

@@ -1,7 +1,10 @@
 // `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -10,10 +13,14 @@
 #include "app/progress.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "frames/frame_loop.hpp"
 #include "frames/overlapped_frame_loop.hpp"
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
+#include "output/figure_frames.hpp"
+#include "output/motion_track.hpp"
+#include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
@@ -30,11 +37,51 @@ struct RenderOptions {
   bool resume = false;
 };
 
+// One silent pass over every frame, for what must be known before frame 0 is drawn: the box the bodies
+// sweep (the camera of a scene without one) and the moments figure.png shows. The pass starts from and
+// returns to the same State (a copy is a checkpoint), so the run afterwards gives the same bits, and every
+// farm chunk gets the same camera and figure; with --from-cache it reads the cache instead of stepping.
+output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoints* checkpoints) {
+  const sim::State start = run.world.state;
+  output::MotionTrack motion;
+  std::vector<frames::FrameSink*> sinks = {&motion};
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    frames::run_frames(run.world, run.clock, sinks, {}, {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
+  } catch (const softbody::DivergedError&) {
+    // The run proper diverges at the same step and reports it, after writing the frames before it: the
+    // camera frames those.
+  }
+  run.world.state = start;
+  std::fprintf(stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
+               motion.samples().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  return motion;
+}
+
+glm::vec3 to_glm(const softbody::Vec3& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+}
+
+// The frames of figure.png: render.figure_frames's list, or that many chosen from the motion.
+std::vector<int> figure_frames(const scene::Scene& scene, const output::MotionTrack* motion, int last_frame) {
+  if (!scene.render.figure_frame_list.empty()) {
+    if (scene.render.figure_frame_list.back() > last_frame) {
+      throw softbody::InputError(scene.source.string() + ": render.figure_frames: expected frames 0.." +
+                                 std::to_string(last_frame) + ", got " + std::to_string(scene.render.figure_frame_list.back()));
+    }
+    return scene.render.figure_frame_list;
+  }
+  if (motion == nullptr || scene.render.figure_frames == 0) return {};
+  std::optional<double> floor;
+  if (scene.floor) floor = scene.floor->height_m;
+  return output::frames_from_motion(motion->samples(), scene.render.figure_frames, floor);
+}
+
 double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
 
 // One line of figures the README and the benchmarks quote: what a frame costs, stage by stage.
 void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
-                   const output::RenderTimings& t) {
+                   const output::RenderTimings& t, const std::string& backend) {
   const int n = run.frames;
   std::printf("%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
               "simulate %.1f, render %.1f, read-back %.1f, encode %.1f (writer thread; +%.1f writing files)",
@@ -44,7 +91,15 @@ void print_summary(const scene::Scene& scene, const render::Renderer& renderer, 
               ms_per_frame(t.read_back_s, n), ms_per_frame(t.png.encode_s, t.png.frames),
               ms_per_frame(t.png.store_s, t.png.frames));
   if (t.video_s > 0.0) std::printf(", video %.1f", ms_per_frame(t.video_s, n));
-  std::printf("\n");
+  std::printf("; backend %s\n", backend.c_str());
+}
+
+// "egl (auto from render.backend: OpenGL 4.5 ... on llvmpipe ... (EGL, surfaceless))".
+std::string backend_words(const render::GlContext& context, const render::GlBackendRequest& request) {
+  std::string words(render::gl_backend_name(context.backend()));
+  if (request.backend == render::GlBackend::Auto) words += " (auto";
+  else words += " (asked for";
+  return words + " by " + request.source + "; " + context.description() + ")";
 }
 
 void print_written(const output::RenderOutputs& outputs, const output::RenderSink& sink, int frames) {
@@ -67,8 +122,22 @@ int run_render(const RenderOptions& options) {
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   output::check_frame_pattern(scene.output.pattern, scene.source.string());
 
-  const std::unique_ptr<render::GlContext> context = render::create_offscreen_context();
-  render::Renderer renderer(*context, render::settings_from_scene(scene));
+  const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
+  const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
+  render::RenderSettings settings = render::settings_from_scene(scene);
+  const int last_frame = run.clock.frame_count;
+  // A run of some frames only (a farm chunk) makes no figure.
+  const bool motion_figure = chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
+  std::optional<output::MotionTrack> motion;
+  if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
+  if (!scene.camera.given && !motion->samples().empty()) {
+    settings.camera = render::frame_swept_box({to_glm(motion->swept_min()), to_glm(motion->swept_max())},
+                                              static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
+                                              settings.camera.fov_deg);
+  }
+  const std::vector<int> figure = chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame)
+                                                      : std::vector<int>{};
+  render::Renderer renderer(*context, settings);
 
   output::RenderOutputs outputs;
   outputs.dir = scene.output.dir;
@@ -77,7 +146,8 @@ int run_render(const RenderOptions& options) {
   if (!options.video_file.empty()) outputs.video = options.video_file;
   outputs.fps = scene.fps;
   // A run of some frames only (a farm chunk) neither makes the figure nor removes frames past the last one.
-  outputs.figure_frames = chosen.everything() ? scene.render.figure_frames : 0;
+  outputs.figure_frames = 0;
+  outputs.figure_frame_list = figure;
   outputs.last_frame = run.clock.frame_count;
   outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
@@ -109,7 +179,7 @@ int run_render(const RenderOptions& options) {
   }
   progress.clear();
   if (resumable) resumable->remove_store();
-  print_summary(scene, renderer, stats, sink.timings());
+  print_summary(scene, renderer, stats, sink.timings(), backend_words(*context, backend));
   print_written(outputs, sink, stats.frames);
   return 0;
 }
@@ -119,7 +189,7 @@ int run_render(const RenderOptions& options) {
 Action register_render(CLI::App& parent) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = parent.add_subcommand(
-      "render", "Simulate a scene and render every frame off-screen (OSMesa) to PNG files, figure.png and a video");
+      "render", "Simulate a scene and render every frame off-screen (EGL or OSMesa) to PNG files, figure.png and a video");
   add_scene_options(*command, options->scene);
   command->add_option("-o,--output", options->output_dir, "Output folder (default: the scene's output.dir, "
                                                           "else out/<scene name>)")
@@ -133,10 +203,16 @@ Action register_render(CLI::App& parent) {
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
       "  rename), and frames numbered after the last one, left by an earlier longer run, are removed.\n"
-      "  DIR/figure.png shows render.figure_frames frames evenly spaced over the run (0: none).\n"
+      "  DIR/figure.png shows render.figure_frames frames chosen from the motion (frame 0, the first contact, the\n"
+      "  deepest compression, rest, the highest rebound, the turn back, then frames spread between), each labelled\n"
+      "  with its time; render.figure_frames as a list ([0, 19, 24]) shows exactly those frames; 0: no figure.\n"
+      "  A scene without camera gets one that frames the bodies' whole trajectory (floor horizon in view).\n"
+      "  Either needs a silent pass over the run before drawing (from the cache with --from-cache).\n"
       "  With --frames only those frames are drawn (the states before come from --from-cache or are simulated\n"
       "  silently), no figure is made and no other frame file is touched: chunks can render side by side.\n"
       "  Size, MSAA, shadows, camera and light come from the scene's render, camera and light keys.\n"
+      "  The GL backend: render.backend (auto | egl | osmesa; auto tries EGL, then OSMesa), overridden by the\n"
+      "  environment variable SOFTBODY_GL when it is set; the summary line names the backend used.\n"
       "  Prints a progress line when stderr is a terminal, and a summary with the time per frame of each stage.");
   return [options] { return run_render(*options); };
 }

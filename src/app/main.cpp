@@ -11,13 +11,17 @@ namespace {
 
 constexpr const char* kFooter =
     "Exit status: 0 ok, 1 other failure, 2 bad input (scene, mesh, command line), 3 the simulation diverged.\n"
-    "Run 'softbody COMMAND --help' for a command's options.";
+    "Environment: SOFTBODY_GL=auto|egl|osmesa chooses the GL backend of `render` and wins over the scene's\n"
+    "render.backend.\n"
+    "Scenes to start from: share/softbody/scenes/ where softbody is installed (bounce.json: the paper's Figure 1).\n"
+    "Run 'softbody COMMAND --help' for a command's options, 'man softbody' for the whole manual.";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App cli("softbody: pressure-model soft bodies (Matyka & Ollila 2003), simulated and rendered off-screen");
   cli.footer(kFooter);
+  cli.set_version_flag("--version", std::string("softbody ") + SOFTBODY_VERSION);
   cli.require_subcommand(1);
   std::map<std::string, app::Action> actions;
   actions["simulate"] = app::register_simulate(cli);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "output/tile_label.hpp"
+
 namespace output {
 namespace {
 
@@ -13,6 +15,7 @@ constexpr int kMaxColumns = 4;
 constexpr int kMaxSheetWidth_px = 2560;
 constexpr int kGap_px = 8;               // white space between and around the tiles
 constexpr std::uint8_t kPaper = 255;
+constexpr int kLabelRowsPerFontPixel = 120;  // a 120 px tall tile gets a 1 px font pixel, 360 px gets 3
 
 // sRGB transfer function (IEC 61966-2-1), both ways.
 float srgb_to_linear(float encoded) {
@@ -69,7 +72,7 @@ bool ContactSheet::complete() const {
   return std::all_of(filled_.begin(), filled_.end(), [](bool filled) { return filled; });
 }
 
-void ContactSheet::add(int index, const softbody::Image& frame) {
+void ContactSheet::add(int index, const softbody::Image& frame, std::string_view label) {
   const auto found = std::find(frames_.begin(), frames_.end(), index);
   if (found == frames_.end()) return;
   const int tile = static_cast<int>(found - frames_.begin());
@@ -89,6 +92,10 @@ void ContactSheet::add(int index, const softbody::Image& frame) {
       std::uint8_t* target = sheet_.pixel(left + x, top + y);
       for (int c = 0; c < 3; ++c) target[c] = encode(sum[c] / samples);
     }
+  }
+  if (!label.empty()) {
+    const int scale = std::max(1, tile_height_ / kLabelRowsPerFontPixel);
+    draw_label(sheet_, left + scale * 2, top + scale * 2, label, scale);
   }
   filled_[tile] = true;
 }

@@ -2,16 +2,15 @@
 // to right, top to bottom, showing the fall, the landing and the bounce.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "core/image.hpp"
 
 namespace output {
 
-// The frames shown: `tiles` frame indices spread evenly over 0 .. last_frame, first and last included.
-// Evenly spaced (not chosen from the body's motion) so that the sheet can be filled while rendering,
-// keeping only the chosen frames, and so that equal gaps between tiles mean equal time. A bounce of a
-// few seconds spans the fall, the landing and the rebound with the default 8 tiles.
+// The frames shown when the motion is not known beforehand: `tiles` frame indices spread evenly over
+// 0 .. last_frame, first and last included (output/figure_frames.hpp chooses them from the motion).
 std::vector<int> evenly_spaced_frames(int tiles, int last_frame);
 
 class ContactSheet {
@@ -23,8 +22,9 @@ class ContactSheet {
   // True when frame `index` belongs on the sheet.
   bool wants(int index) const;
   // Shrinks `frame` into the tile of frame `index` (a box filter in linear light, so edges keep their
-  // brightness). Ignores frames the sheet does not want.
-  void add(int index, const softbody::Image& frame);
+  // brightness) and writes `label` (its time) into the tile's top-left corner. Ignores frames the sheet
+  // does not want.
+  void add(int index, const softbody::Image& frame, std::string_view label = {});
   // True when every tile has been filled.
   bool complete() const;
 

@@ -38,6 +38,21 @@ void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
 
 void MeshExporter::finish(bool /*complete*/) {}
 
+void append_obj_object(std::string& text, const sim::World& world, int body_index, int first_index) {
+  const sim::Body& body = world.model.bodies[static_cast<std::size_t>(body_index)];
+  char line[160];
+  std::snprintf(line, sizeof line, "o body%d\n", body_index);
+  text += line;
+  for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+    text += line;
+  }
+  for (const softbody::Triangle& f : body.topology.faces) {
+    std::snprintf(line, sizeof line, "f %d %d %d\n", f[0] + first_index, f[1] + first_index, f[2] + first_index);
+    text += line;
+  }
+}
+
 std::string world_to_obj(const sim::World& world, double time_s) {
   std::string text;
   char line[160];
@@ -45,18 +60,8 @@ std::string world_to_obj(const sim::World& world, double time_s) {
   text += line;
   int first_index = 1;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
-    const sim::Body& body = world.model.bodies[b];
-    std::snprintf(line, sizeof line, "o body%zu\n", b);
-    text += line;
-    for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
-      std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
-      text += line;
-    }
-    for (const softbody::Triangle& f : body.topology.faces) {
-      std::snprintf(line, sizeof line, "f %d %d %d\n", f[0] + first_index, f[1] + first_index, f[2] + first_index);
-      text += line;
-    }
-    first_index += body.vertex_count;
+    append_obj_object(text, world, static_cast<int>(b), first_index);
+    first_index += world.model.bodies[b].vertex_count;
   }
   return text;
 }

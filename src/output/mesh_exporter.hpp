@@ -25,6 +25,10 @@ class MeshExporter final : public frames::FrameSink {
   MeshFormat format_;
 };
 
+// Appends body `body` of `world` as one OBJ object ("o body<N>", its vertices, its faces numbered from
+// `first_index`, OBJ's 1-based index of the object's first vertex in the file).
+void append_obj_object(std::string& text, const sim::World& world, int body, int first_index);
+
 // The text of one frame as OBJ: one object per body ("o body0", ...), 1-based indices.
 std::string world_to_obj(const sim::World& world, double time_s);
 

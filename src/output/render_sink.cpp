@@ -2,6 +2,7 @@
 #include "output/render_sink.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
@@ -31,11 +32,14 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
   if (outputs_.video && !outputs_.video_from_files) {
     video_ = std::make_unique<VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   }
-  if (outputs_.figure_frames > 0) {
-    figure_.emplace(evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame), settings.width_px,
-                    settings.height_px);
+  std::vector<int> figure_frames = outputs_.figure_frame_list;
+  if (figure_frames.empty()) figure_frames = evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame);
+  if (!figure_frames.empty()) {
+    figure_.emplace(std::move(figure_frames), settings.width_px, settings.height_px);
     for (int index = 0; index <= outputs_.resumed_after; ++index) {
-      if (figure_->wants(index)) figure_->add(index, read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)));
+      if (figure_->wants(index)) {
+        figure_->add(index, read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)), time_label(index));
+      }
     }
   }
 }
@@ -60,7 +64,7 @@ void RenderSink::deliver() {
     lap(start, timings_.video_s);
   }
   if (figure_ && figure_->wants(index)) {
-    figure_->add(index, frame_);
+    figure_->add(index, frame_, time_label(index));
     lap(start, timings_.figure_s);
   }
   if (png_writer_) {
@@ -101,6 +105,12 @@ void RenderSink::encode_video_from_files() {
   }
   video.finish();
   lap(start, timings_.video_s);
+}
+
+std::string RenderSink::time_label(int index) const {
+  char text[32];
+  std::snprintf(text, sizeof text, "t = %.2f s", static_cast<double>(index) / outputs_.fps);
+  return text;
 }
 
 void RenderSink::write_figure() {

@@ -27,7 +27,9 @@ struct RenderOutputs {
   bool write_frames = true;                   // the PNG sequence
   std::optional<std::filesystem::path> video; // an MP4 when set
   int fps = 30;                               // the video's frame rate
-  int figure_frames = 8;                      // tiles in figure.png; 0: no figure
+  int figure_frames = 8;                      // tiles in figure.png, evenly spaced; 0: no figure
+  std::vector<int> figure_frame_list;         // when not empty: exactly these frames (chosen from the motion,
+                                              // or render.figure_frames as a list), instead of figure_frames
   int last_frame = 0;                         // index of the run's last frame (frame 0 is the initial state)
   bool remove_stale_frames = true;            // remove frame files numbered after last_frame (a longer earlier run's)
   // A resumed run (--resume): frames 0 .. resumed_after are already on disk (the figure takes its tiles of
@@ -71,6 +73,8 @@ class RenderSink final : public frames::CapturingFrameSink {
 
  private:
   void write_figure();
+  // "t = 0.63 s": the simulated time of frame `index` (frame k is at k / fps).
+  std::string time_label(int index) const;
   void remove_stale_frames() const;
   // The video from the PNG files 0 .. last_frame (video_from_files).
   void encode_video_from_files();

@@ -1,10 +1,12 @@
 // The OSMesa context: created with OSMesaCreateContextAttribs, because the classic OSMesaCreateContext
-// only gives a compatibility profile. The GL entry points come from libOSMesa itself (see render/gl.hpp).
+// only gives a compatibility profile. The GL entry points come from OSMesaGetProcAddress (render/gl.hpp).
 #include "render/osmesa_context.hpp"
 
 #include <stdexcept>
 
 #include <GL/osmesa.h>
+
+#include "render/gl_loader.hpp"
 
 namespace render {
 
@@ -24,6 +26,7 @@ OsMesaContext::OsMesaContext(int major, int minor) {
                              "needs Mesa's libOSMesa with llvmpipe, Debian package libosmesa6)");
   }
   make_current();
+  load_gl_functions([](const char* name) -> GlProc { return OSMesaGetProcAddress(name); }, "OSMesa");
 }
 
 OsMesaContext::~OsMesaContext() {
@@ -36,14 +39,6 @@ void OsMesaContext::make_current() {
   }
 }
 
-std::string OsMesaContext::description() const {
-  const auto text = [](GLenum name) {
-    const GLubyte* value = glGetString(name);
-    return value == nullptr ? std::string("?") : std::string(reinterpret_cast<const char*>(value));
-  };
-  return "OpenGL " + text(GL_VERSION) + " on " + text(GL_RENDERER) + " (OSMesa)";
-}
-
-std::unique_ptr<GlContext> create_offscreen_context() { return std::make_unique<OsMesaContext>(3, 3); }
+std::string OsMesaContext::description() const { return "OpenGL " + gl_version_and_renderer() + " (OSMesa)"; }
 
 }  // namespace render

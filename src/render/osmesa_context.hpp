@@ -20,6 +20,7 @@ class OsMesaContext final : public GlContext {
   OsMesaContext& operator=(const OsMesaContext&) = delete;
 
   void make_current() override;
+  GlBackend backend() const override { return GlBackend::OsMesa; }
   std::string description() const override;
 
  private:

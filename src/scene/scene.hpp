@@ -7,16 +7,19 @@
 #include <string>
 #include <vector>
 
+#include "core/gl_backend.hpp"
 #include "core/vec.hpp"
 #include "sim/intent.hpp"
 #include "sim/settings.hpp"
 
 namespace scene {
 
+using softbody::GlBackend;
 using softbody::Vec3;
 
 // A pattern painted on a body in its own (initial-shape) coordinates, so that its rotation shows.
 enum class Pattern { None, Checker, Stripes };
+
 struct Body {
   std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
   std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
@@ -39,10 +42,13 @@ struct RenderSettings {
   int msaa = 4;          // samples per pixel: 1 (off), 2 or 4
   bool shadows = true;   // the body casts a shadow-mapped shadow on the floor
   std::array<float, 3> background = {0.62f, 0.72f, 0.85f};  // linear RGB
-  int figure_frames = 8; // frames in the contact sheet figure.png (0: no figure)
+  int figure_frames = 8; // frames in the contact sheet figure.png, chosen from the motion (0: no figure)
+  std::vector<int> figure_frame_list;  // "figure_frames": [0, 19, 24, ...] instead: exactly these frames
+  GlBackend backend = GlBackend::Auto;  // "auto" | "egl" | "osmesa"
 };
 
 struct Camera {
+  bool given = false;  // the scene has a "camera" key; without one, render frames the bodies' whole trajectory
   Vec3 position_m{0.0, 2.5, 9.0};
   Vec3 target_m{0.0, 1.2, 0.0};
   Vec3 up{0.0, 1.0, 0.0};

@@ -1,6 +1,7 @@
 // Scene files: parse JSON with comments, apply overrides, validate every key, fill defaults.
 #include "scene/scene_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -300,6 +301,24 @@ int even_size(ObjectReader& r, const std::string& key, int fallback) {
   return size;
 }
 
+// 1 to 64 frame numbers (>= 0, each once), sorted: the contact sheet's tiles in reading order.
+std::vector<int> frame_list(ObjectReader& r, const std::string& key) {
+  const json& value = r.at(key);
+  if (value.empty() || value.size() > 64) r.fail(r.child(key), "expected a list of 1 to 64 frame numbers", &value);
+  std::vector<int> frames;
+  for (const json& item : value) {
+    if (!item.is_number_integer() || item.get<long long>() < 0 || item.get<long long>() > 1000000000) {
+      r.fail(r.child(key), "expected frame numbers (integers >= 0)", &item);
+    }
+    frames.push_back(item.get<int>());
+  }
+  std::sort(frames.begin(), frames.end());
+  if (std::adjacent_find(frames.begin(), frames.end()) != frames.end()) {
+    r.fail(r.child(key), "expected each frame once", &value);
+  }
+  return frames;
+}
+
 RenderSettings read_render(ObjectReader& top) {
   RenderSettings render;
   if (!top.has("render")) return render;
@@ -310,7 +329,14 @@ RenderSettings read_render(ObjectReader& top) {
   if (render.msaa == 3) r.fail("render.msaa", "expected 1, 2 or 4 samples", &r.at("msaa"));
   render.shadows = r.boolean("shadows", render.shadows);
   render.background = r.color("background", render.background);
-  render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
+  if (r.has("figure_frames") && r.at("figure_frames").is_array()) {
+    render.figure_frame_list = frame_list(r, "figure_frames");
+    render.figure_frames = static_cast<int>(render.figure_frame_list.size());
+  } else {
+    render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
+  }
+  render.backend = r.choice<GlBackend>("backend", render.backend,
+                                       {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
   r.reject_unknown();
   return render;
 }
@@ -319,6 +345,7 @@ Camera read_camera(ObjectReader& top) {
   Camera camera;
   if (!top.has("camera")) return camera;
   ObjectReader r(top.at("camera"), "camera", top.file());
+  camera.given = true;
   camera.position_m = r.vec3("position", camera.position_m);
   camera.target_m = r.vec3("target", camera.target_m);
   camera.up = r.vec3("up", camera.up);

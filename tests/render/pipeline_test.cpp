@@ -10,6 +10,7 @@
 #include "output/frame_pattern.hpp"
 #include "output/png_codec.hpp"
 #include "output/render_sink.hpp"
+#include "output/tile_label.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
 #include "sim/diagnostics.hpp"
@@ -162,18 +163,25 @@ TEST_F(RenderPipeline, FigureHoldsTheChosenFramesInReadingOrder) {
   // 4 tiles → one row of 4 full-size frames with 8 px gaps.
   EXPECT_EQ(figure.width, 8 + 4 * (160 + 8));
   EXPECT_EQ(figure.height, 8 + 120 + 8);
-  // Tile k shows frame round(k · 10 / 3): 0, 3, 7, 10; the shrink factor is 1, so each tile is its frame.
+  // Tile k shows frame round(k · 10 / 3): 0, 3, 7, 10; the shrink factor is 1, so each tile is its frame,
+  // but for its time label ("t = 0.30 s") in the top-left corner, which must hold dark ink.
   const int shown[] = {0, 3, 7, 10};
+  const int label_right = 2 + output::label_width_px(10, 1), label_bottom = 2 + output::label_height_px(1);
   for (int k = 0; k < 4; ++k) {
     const softbody::Image& frame = run_->frames[shown[k]];
-    int largest_difference = 0;
+    int largest_difference = 0, ink = 0;
     for (int y = 0; y < frame.height; ++y) {
       for (int x = 0; x < frame.width; ++x) {
         const std::uint8_t* tile = figure.pixel(8 + k * (160 + 8) + x, 8 + y);
+        if (x < label_right && y < label_bottom) {
+          ink += tile[0] < 64 ? 1 : 0;
+          continue;
+        }
         for (int c = 0; c < 3; ++c) largest_difference = std::max(largest_difference, std::abs(tile[c] - frame.pixel(x, y)[c]));
       }
     }
     EXPECT_LE(largest_difference, 1) << "tile " << k << " is not frame " << shown[k];
+    EXPECT_GT(ink, 40) << "tile " << k << " has no time label";
   }
 }
 

@@ -1,0 +1,22 @@
+// The camera a scene without `camera` gets: it looks at the box that the bodies sweep over the whole run,
+// from the default camera's direction, near enough to fill the picture and far enough to keep every body
+// in view with a margin.
+#pragma once
+
+#include "render/settings.hpp"
+#include "render/shadow_map.hpp"
+
+namespace render {
+
+// Fraction of the half-width and half-height of the picture kept free around the swept box.
+constexpr float kFramingMargin = 0.12f;
+
+// Looks at the centre of `swept` along the default camera's view direction (slightly from above: the
+// floor's horizon stays in the picture for any vertical field of view over 2 × 8.2°), at the smallest
+// distance at which each of the box's 8 corners lies inside the picture shrunk by `margin`: a corner at
+// (x, y, z) in camera axes around the centre (z towards the camera) needs
+//   d >= |x| / ((1 − margin) tan(θh)) + z  and  d >= |y| / ((1 − margin) tan(θv)) + z,
+// with θv half the vertical field of view and tan(θh) = aspect · tan(θv) (pinhole projection).
+CameraSettings frame_swept_box(const Bounds& swept, float aspect, float fov_deg, float margin = kFramingMargin);
+
+}  // namespace render
