@@ -9,7 +9,9 @@
 
 namespace {
 
+using integrator_tests::fitted_slope;
 using integrator_tests::make_world;
+using integrator_tests::observed_order;
 using integrator_tests::rms_position_difference;
 using integrator_tests::run_for;
 
@@ -42,29 +44,6 @@ const sim::State& reference() {
 double reference_uncertainty() {
   static const double difference = rms_position_difference(dormand_prince_state(2 * kReferenceDt), reference());
   return difference;
-}
-
-// Least-squares slope of y against x.
-double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double sum_x = 0, sum_y = 0, sum_xx = 0, sum_xy = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sum_x += x[k];
-    sum_y += y[k];
-    sum_xx += x[k] * x[k];
-    sum_xy += x[k] * y[k];
-  }
-  return (n * sum_xy - sum_x * sum_y) / (n * sum_xx - sum_x * sum_x);
-}
-
-// errors[k] at dt / 2^k: the slope of log2(error) against k is minus the observed order.
-double observed_order(const std::vector<double>& errors) {
-  std::vector<double> k, log_error;
-  for (std::size_t i = 0; i < errors.size(); ++i) {
-    k.push_back(static_cast<double>(i));
-    log_error.push_back(std::log2(errors[i]));
-  }
-  return -fitted_slope(k, log_error);
 }
 
 struct OrderCase {

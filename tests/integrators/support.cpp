@@ -43,4 +43,25 @@ double total_energy(const sim::World& world) {
   return energy;
 }
 
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sum_x = 0, sum_y = 0, sum_xx = 0, sum_xy = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    sum_x += x[k];
+    sum_y += y[k];
+    sum_xx += x[k] * x[k];
+    sum_xy += x[k] * y[k];
+  }
+  return (n * sum_xy - sum_x * sum_y) / (n * sum_xx - sum_x * sum_x);
+}
+
+double observed_order(const std::vector<double>& errors) {
+  std::vector<double> k, log_error;
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    k.push_back(static_cast<double>(i));
+    log_error.push_back(std::log2(errors[i]));
+  }
+  return -fitted_slope(k, log_error);
+}
+
 }  // namespace integrator_tests

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 #include "sim/world.hpp"
@@ -19,6 +20,12 @@ void run_for(sim::World& world, double duration_s, double dt);
 
 // RMS over vertices of |x_a − x_b| [m].
 double rms_position_difference(const sim::State& a, const sim::State& b);
+
+// Least-squares slope of y against x.
+double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
+
+// errors[k] measured at dt / 2^k: minus the least-squares slope of log2(error) against k, the observed order.
+double observed_order(const std::vector<double>& errors);
 
 // Total energy of every body: kinetic + gravitational + spring + gas [J].
 double total_energy(const sim::World& world);
