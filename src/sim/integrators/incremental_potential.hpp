@@ -30,7 +30,7 @@ namespace sim {
 //   - springs: −∂f/∂x = k [d̂d̂ᵀ + (1 − L0/|d|)(I − d̂d̂ᵀ)] (sim/integrators/spring_jacobian.hpp); definite:
 //     a compressed spring's negative geometric term clamped at zero (Choi & Ko 2002), as in `implicit`;
 //   - gas: ∇²(−nRT ln V) = nRT (∇V∇Vᵀ / V² − ∇²V / V). The first term is positive and rank one, u uᵀ with
-//     u = √nRT ∇V / V: it is returned as gas_terms() for a Sherman–Morrison solve, never as a dense
+//     u = √nRT ∇V / V: it is returned as gas_terms(), applied as u (uᵀp) by the solver, never as a dense
 //     matrix. ∇²V is sparse with zero diagonal blocks: V = Σ_f x_a·(x_b × x_c)/6 is linear in each vertex,
 //     and an edge (i, j) with the faces (i, j, c) and (j, i, d) on its two sides has
 //     ∂²V/∂x_i∂x_j = [x_d − x_c]× / 6. So −(nRT/V)∇²V is, per edge, the 6×6 [[0, W], [Wᵀ, 0]] with

@@ -1,4 +1,4 @@
-// Backward Euler by Newton: iterate, solve with Sherman–Morrison around the sparse LDLᵀ, line-search on E.
+// Backward Euler by Newton: iterate, solve by conjugate gradients (the gas as rank-one products), line-search on E.
 #include "sim/integrators/newton_euler.hpp"
 
 #include <algorithm>
