@@ -34,7 +34,8 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
   if (dt == 0.0) {
     std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
   } else if (dt == sim::StabilityEstimate::kUnlimited) {
-    std::printf("  %-10s  no limit (springs implicit, no gas term)\n", name);
+    const bool every_force_implicit = integrator == sim::IntegratorKind::Newton;
+    std::printf("  %-10s  no limit (%s)\n", name, every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
   } else {
     const double steps = std::ceil(frame_interval_s / (sim::kAutoDtSafety * dt));
     std::printf("  %-10s  %-12.4g %-12.4g %.0f\n", name, dt, sim::kAutoDtSafety * dt, steps);

@@ -29,7 +29,7 @@ std::string describe(const DivergenceReport& report) {
   if (report.finding.vertex >= 0) message << ", vertex " << report.finding.vertex;
   message << " " << report.finding.what << "; estimated stable: " << stable_dt_words(report.stable_dt_s) << " for "
           << to_string(report.integrator);
-  if (report.integrator != IntegratorKind::Implicit) {
+  if (integrator_info(report.integrator).explicit_springs) {
     message << ", " << stable_dt_words(report.implicit_stable_dt_s) << " for implicit";
   }
   message << " (softbody info SCENE prints the estimate)";

@@ -4,6 +4,7 @@
 #include "sim/integrators/dormand_prince.hpp"
 #include "sim/integrators/euler.hpp"
 #include "sim/integrators/implicit_euler.hpp"
+#include "sim/integrators/newton_euler.hpp"
 #include "sim/integrators/runge_kutta4.hpp"
 #include "sim/integrators/symplectic_euler.hpp"
 #include "sim/integrators/velocity_verlet.hpp"
@@ -18,6 +19,7 @@ std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double toleranc
     case IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
     case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
     case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
+    case IntegratorKind::Newton: return std::make_unique<NewtonEuler>();
   }
   return nullptr;
 }

@@ -18,6 +18,8 @@ enum class IntegratorKind {
   Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
   Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
   Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
+  Newton,      // backward Euler solved by Newton's method on its incremental potential (Gast et al. 2015), every
+               // force implicit (gas included): first order, L-stable, for 1/60 s steps
 };
 
 // What the program needs to know of an integrator besides its code.
@@ -26,18 +28,19 @@ struct IntegratorInfo {
   std::string_view name;  // in scene files, on the command line, in CSVs and messages
   int order;              // convergence order on smooth motion (rk45: 5, its propagated solution)
   bool adaptive;          // chooses its own step sizes (driven by sim::advance_to)
-  bool explicit_springs;  // the springs limit its stable step (every method but implicit)
+  bool explicit_springs;  // the springs limit its stable step (every method but implicit and newton)
 };
 
 // Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
 // benchmarks all iterate this list.
-inline constexpr std::array<IntegratorInfo, 6> kIntegrators = {{
+inline constexpr std::array<IntegratorInfo, 7> kIntegrators = {{
     {IntegratorKind::Euler, "euler", 1, false, true},
     {IntegratorKind::Symplectic, "symplectic", 1, false, true},
     {IntegratorKind::Verlet, "verlet", 2, false, true},
     {IntegratorKind::Rk4, "rk4", 4, false, true},
     {IntegratorKind::Rk45, "rk45", 5, true, true},
     {IntegratorKind::Implicit, "implicit", 1, false, false},
+    {IntegratorKind::Newton, "newton", 1, false, false},
 }};
 static_assert([] {
   for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
