@@ -99,3 +99,27 @@ TEST(Scene, InvalidJsonNamesTheFile) {
 }
 
 }  // namespace
+
+namespace {
+
+// The smooth contact's keys are read and checked; newton (whose potential has no smooth contact yet) refuses it.
+TEST(Scene, SmoothContactKeys) {
+  const scene::Scene s = scene_from_text(R"({ "floor": { "contact": "smooth", "time_constant": 0.001, "slip_speed": 0.2,
+      "smoothing": 0.003, "damping_ratio": 0.4 }, "collisions": { "contact": "smooth" },
+      "bodies": [ { "mesh": "icosphere:1" } ] })");
+  EXPECT_EQ(s.floor->contact, sim::FloorContact::Smooth);
+  EXPECT_EQ(s.floor->smooth.time_constant_s, 0.001);
+  EXPECT_EQ(s.floor->smooth.slip_speed_m_per_s, 0.2);
+  EXPECT_EQ(s.floor->smooth.smoothing_m, 0.003);
+  EXPECT_EQ(s.floor->smooth.damping_ratio, 0.4);
+  EXPECT_EQ(s.collisions.contact, sim::BodyContactModel::Smooth);
+  EXPECT_NE(error_of(R"({ "floor": { "contact": "smooth", "time_constant": 0 }, "bodies": [ { "mesh": "icosphere:1" } ] })")
+                .find("floor.time_constant: expected a finite number > 0"),
+            std::string::npos);
+  const std::string newton = error_of(R"({ "solver": { "integrator": "newton" }, "floor": { "contact": "smooth" },
+      "bodies": [ { "mesh": "icosphere:1" } ] })");
+  EXPECT_NE(newton.find("floor.contact"), std::string::npos) << newton;
+  EXPECT_NE(newton.find("newton"), std::string::npos) << newton;
+}
+
+}  // namespace
