@@ -227,8 +227,10 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x) {
 
 double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   const double mu_max = bounds.omega2_springs + bounds.omega2_gas;
-  if (integrator == IntegratorKind::Implicit) {
-    // Springs and dampers implicit (unconditionally stable); the explicit gas term as in symplectic Euler.
+  if (!integrator_info(integrator).explicit_springs) {
+    // implicit: springs and dampers implicit (unconditionally stable); xpbd: springs and dampers as compliant
+    // constraints, which for one mode is backward Euler on them. Both take the gas explicitly as symplectic
+    // Euler does (xpbd's prediction is a symplectic-Euler kick and drift).
     return bounds.omega2_gas > 0.0 ? 2.0 / std::sqrt(bounds.omega2_gas) : StabilityEstimate::kUnlimited;
   }
   if (mu_max == 0.0 && bounds.damping_rate == 0.0) return StabilityEstimate::kUnlimited;  // free particles
@@ -314,6 +316,16 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
   }
   if (limit == StabilityEstimate::kUnlimited) return frame_interval_s / 4.0;
   return std::min(kAutoDtSafety * limit, frame_interval_s);
+}
+
+int auto_substeps(const StabilityEstimate& estimate, double frame_interval_s) {
+  double h = frame_interval_s;
+  for (const ModeBounds& b : estimate.bodies) {
+    if (b.omega2_gas > 0.0) h = std::min(h, kXpbdGasPhase / std::sqrt(b.omega2_gas));
+  }
+  h = std::min(h, estimate.travel_dt_s);
+  const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));
+  return static_cast<int>(std::clamp(substeps, 1.0, double{kXpbdMostAutoSubsteps}));
 }
 
 }  // namespace sim

@@ -18,6 +18,7 @@
 //   rk4          Σ_{j≤4} (hA)^j / j!                             h < 2.83/ω
 //   rk45         Σ_{j≤5} (hA)^j / j! + (hA)^6 / 600 (DOPRI5)     h < 3.3/ω (step chosen adaptively)
 //   implicit     springs and dampers implicit: no limit; the gas is explicit: h < 2/ω_gas
+//   xpbd         springs and dampers as compliant constraints: no limit; the gas is explicit: h < 2/ω_gas
 #pragma once
 
 #include <array>
@@ -113,6 +114,14 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
 // without dampers (unstable at every dt), naming the key.
 double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file);
+
+// xpbd's `solver.substeps: "auto"` (and `dt: "auto"`): the fewest substeps per frame interval whose substep h
+// keeps (1) the explicit gas well inside its limit, h ω_gas ≤ kXpbdGasPhase, and (2) the contact travel of
+// every integrator, a tenth of the shortest edge per step (travel_dt_s). The springs set no limit (xpbd.hpp).
+// At least 1, at most kXpbdMostAutoSubsteps. What accuracy that gives is measured in the README.
+constexpr double kXpbdGasPhase = 0.5;  // rad per substep of the gas's fastest mode (its stability limit: 2)
+constexpr int kXpbdMostAutoSubsteps = 10000;
+int auto_substeps(const StabilityEstimate& estimate, double frame_interval_s);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
 // kPaperEuler*); the travel limit needs velocities and is applied by estimate_stability(model, state).
