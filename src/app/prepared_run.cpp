@@ -22,9 +22,9 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
     scene.solver.substeps = sim::auto_substeps(estimate, 1.0 / scene.fps);
     char note[200];
     std::snprintf(note, sizeof note,
-                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: h omega_gas <= %.2g and the contact "
+                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: h omega_max <= %.2g and the contact "
                   "travel limit %.4g s)",
-                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps), sim::kXpbdGasPhase,
+                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps), sim::kXpbdPhase,
                   estimate.travel_dt_s);
     notes.insert(notes.begin(), note);
   }

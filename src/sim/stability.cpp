@@ -321,7 +321,7 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
 int auto_substeps(const StabilityEstimate& estimate, double frame_interval_s) {
   double h = frame_interval_s;
   for (const ModeBounds& b : estimate.bodies) {
-    if (b.omega2_gas > 0.0) h = std::min(h, kXpbdGasPhase / std::sqrt(b.omega2_gas));
+    if (b.omega_max() > 0.0) h = std::min(h, kXpbdPhase / b.omega_max());
   }
   h = std::min(h, estimate.travel_dt_s);
   const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));
