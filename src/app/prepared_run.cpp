@@ -19,13 +19,13 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   const bool xpbd = scene.solver.integrator == sim::IntegratorKind::Xpbd;
   if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
     const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-    scene.solver.substeps = sim::auto_substeps(estimate, 1.0 / scene.fps);
+    scene.solver.substeps = sim::auto_substeps(world.model, estimate, 1.0 / scene.fps);
     char note[200];
     std::snprintf(note, sizeof note,
-                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: h omega_max <= %.2g and the contact "
-                  "travel limit %.4g s)",
-                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps), sim::kXpbdPhase,
-                  estimate.travel_dt_s);
+                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: a volume bias of about %.2g %% and "
+                  "the contact travel limit %.4g s)",
+                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps),
+                  100.0 * sim::kXpbdVolumeBias, estimate.travel_dt_s);
     notes.insert(notes.begin(), note);
   }
   if (xpbd && scene.solver.substeps > 0) {
