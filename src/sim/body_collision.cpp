@@ -168,7 +168,7 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
-                                                     const ContactMaterial& material) {
+                                                     const ContactMaterial& material, bool full_push) {
   const double edge = surface.rest.mean_edge_m;
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
@@ -221,7 +221,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     if (height >= thickness) continue;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
-                          best_point.weights, normal, thickness - height, 0.1 * search};
+                          best_point.weights, normal, thickness - height, full_push ? thickness - height : 0.1 * search};
     apply_contact(contact, inverse_mass, state, material);
     ++contacts;
   }
@@ -229,7 +229,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
 }
 
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-                          const ContactMaterial& material) {
+                          const ContactMaterial& material, bool full_push) {
   if (bodies.size() < 2) return 0;
   boxes_.resize(bodies.size());
   for (const Body& body : bodies) {
@@ -248,7 +248,7 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
       surface_index_ = b;
-      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, material);
+      contacts += resolve_vertices_against_triangles(bodies[a], bodies[b], inverse_mass, state, material, full_push);
     }
   }
   return contacts;

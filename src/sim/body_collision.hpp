@@ -18,9 +18,11 @@ namespace sim {
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
-  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass).
+  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass). A vertex is pushed out by at
+  // most a twentieth of the surface's mean edge per call, or, with `full_push` (position-based integrators,
+  // whose next substep derives velocities from positions), by its whole depth.
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-              const ContactMaterial& material);
+              const ContactMaterial& material, bool full_push = false);
 
  private:
   struct Box {
@@ -29,7 +31,7 @@ class BodyCollider {
 
   void build_grid(const Body& body, const State& state, const Box& region, double search, double cell_size);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
-                                         State& state, const ContactMaterial& material);
+                                         State& state, const ContactMaterial& material, bool full_push);
   static constexpr int kMaxGridCells = 1 << 21;  // dense table size cap: past it the cells grow
   // The cell holding p, each index clamped to [0, kMaxGridCells - 1]: a table never has more cells along an axis,
   // and the clamp keeps a far point's index from overflowing an int.

@@ -29,7 +29,8 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // Phase 2: impulses between bodies (a single body does no search). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace) {
   if (model.bodies.size() < 2) return 0;
-  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material);
+  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material,
+                                    /*full_push=*/integrator_info(model.solver.integrator).position_based);
 }
 
 // Phase 3: the floor's contact model, after every step of h (xpbd: every substep). Returns the vertices it

@@ -184,7 +184,11 @@ double deepest_inside(const sim::World& world) {
 }
 
 // A small ball (icosphere:2, radius 0.5 m) thrown down at 5 m/s onto a ball resting on the floor (icosphere:3,
-// radius 1 m): the body contact runs in every substep. Checked at every frame of 1/60 s for 1 s.
+// radius 1 m): the body contact runs in every substep and pushes a vertex out by its whole depth. Checked at
+// every frame of 1/60 s for 1 s. Measured: no vertex inside at 2, 4 and 10 substeps; at 1 substep (8 cm per
+// step, more than the search's half edge of 7.5 cm) the small ball passes through (no continuous collision).
+// Before the whole-depth push (a twentieth of an edge per step) it sank 1.7 cm at 4 substeps and passed
+// through at 2.
 TEST(Xpbd, BallAt5MetresPerSecondDoesNotSinkIntoAnotherBody) {
   constexpr const char* kDropOnBall = R"({
     "fps": 60,
@@ -193,7 +197,7 @@ TEST(Xpbd, BallAt5MetresPerSecondDoesNotSinkIntoAnotherBody) {
       { "mesh": "icosphere:3", "position": [0, 1.0, 0], "mass": 1.0, "stiffness": 1000.0, "damping": 1.0, "pressure": 50.0 },
       { "mesh": "icosphere:2", "scale": 0.5, "position": [0.0, 2.6, 0], "velocity": [0, -5, 0], "mass": 0.5,
         "stiffness": 1000.0, "damping": 1.0, "pressure": 25.0 } ] })";
-  for (const int substeps : {4, 10}) {
+  for (const int substeps : {2, 4, 10}) {
     sim::World world = integrator_tests::make_world(kDropOnBall, sim::IntegratorKind::Xpbd);
     const double h = frames::substep_dt(60, substeps);
     const double edge = world.model.bodies[0].rest.mean_edge_m;
