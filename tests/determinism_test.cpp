@@ -47,6 +47,20 @@ TEST(Determinism, StateHashMatchesCheckedInValue) {
   EXPECT_EQ(actual, kExpected) << "actual hash 0x" << std::hex << actual;
 }
 
+// The same for xpbd: the bounce with the friction floor at 20 substeps per 1/30 s frame, through the first
+// contact (its constraint order is fixed by the edge colouring). Same rule for updating it.
+TEST(Determinism, XpbdStateHashMatchesCheckedInValue) {
+  scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
+  s.solver.integrator = sim::IntegratorKind::Xpbd;
+  s.floor->contact = sim::FloorContact::Friction;
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(s, notes);
+  testing_support::run_steps(world, 30 * 20, 1.0 / 30.0 / 20.0);  // 1 s
+  constexpr std::uint64_t kExpected = 0xe9e615d3389437a6ULL;
+  const std::uint64_t actual = state_hash(world.state);
+  EXPECT_EQ(actual, kExpected) << "actual hash 0x" << std::hex << actual;
+}
+
 // A body of 10242 vertices (icosphere:5), above sim::kParallelMinVertices: its force passes run on two threads.
 sim::World large_body_world(int threads, sim::IntegratorKind integrator) {
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
@@ -59,7 +73,8 @@ sim::World large_body_world(int threads, sim::IntegratorKind integrator) {
 
 TEST(Determinism, LargeBodyStateDoesNotDependOnThreadCount) {
   static_assert(sim::kParallelMinVertices <= 10242);
-  for (sim::IntegratorKind integrator : {sim::IntegratorKind::Symplectic, sim::IntegratorKind::Rk4}) {
+  for (sim::IntegratorKind integrator :
+       {sim::IntegratorKind::Symplectic, sim::IntegratorKind::Rk4, sim::IntegratorKind::Xpbd}) {
     sim::World one = large_body_world(1, integrator), two = large_body_world(2, integrator);
     EXPECT_EQ(one.workspace.forces.threads, 1);
     EXPECT_EQ(two.workspace.forces.threads, 2);

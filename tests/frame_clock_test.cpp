@@ -33,4 +33,15 @@ TEST(FrameClock, PartialLastFrameIsRoundedUp) {
   EXPECT_EQ(frames::plan_frames(1.01, 10, 0.01).frame_count, 11);
 }
 
+// xpbd: dt = (1/fps) / substeps plans exactly `substeps` steps per frame, with no rounding note.
+TEST(FrameClock, SubstepDtGivesThatManyStepsPerFrame) {
+  for (int fps : {24, 30, 60}) {
+    for (int substeps : {1, 7, 20, 33, 353, 10000}) {
+      const frames::FrameClock clock = frames::plan_frames(3.0, fps, frames::substep_dt(fps, substeps));
+      EXPECT_EQ(clock.steps_per_frame, substeps) << fps << " fps";
+      EXPECT_TRUE(clock.dt_note.empty()) << clock.dt_note;
+    }
+  }
+}
+
 }  // namespace

@@ -91,7 +91,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{R"({ "floor": { "contact": "sticky" }, "bodies": [ { } ] })", "s.json: floor.contact: expected one of \"paper\" \"friction\""},
         BadInput{R"({ "render": { "width": 641 }, "bodies": [ { } ] })", "s.json: render.width: expected an even number of pixels"},
         BadInput{R"({ "bodies": [ { "color": [1, 2, 0] } ] })", "s.json: bodies.0.color.1: expected a finite number in [0, 1]"},
-        BadInput{R"([1, 2])", "s.json: (top level): expected an object"}),
+        BadInput{R"([1, 2])", "s.json: (top level): expected an object"},
+        BadInput{R"({ "solver": { "substeps": 0 }, "bodies": [ { } ] })", "s.json: solver.substeps: expected an integer in 1..1000000, got number 0"},
+        BadInput{R"({ "solver": { "substeps": "many" }, "bodies": [ { } ] })", "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""}),
     [](const auto& param) { return "case" + std::to_string(param.index); });
 
 TEST(Scene, InvalidJsonNamesTheFile) {

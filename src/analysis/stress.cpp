@@ -120,9 +120,15 @@ std::vector<StressCase> stress_cases(bool quick) {
   for (int i = 0; i <= (quick ? 4 : 12); ++i) dts.push_back(1e-6 * std::pow(10.0, i * (quick ? 1.0 : 1.0 / 3.0)));
   for (const sim::IntegratorInfo& listed : sim::kIntegrators) {
     const IntegratorKind integrator = listed.kind;
+    // A position-based integrator (xpbd) also at a frame's and a quarter frame's substep of 1/60 s frames.
+    std::vector<double> integrator_dts = dts;
+    if (listed.position_based) {
+      integrator_dts.push_back(1.0 / 240.0);
+      integrator_dts.push_back(1.0 / 60.0);
+    }
     for (double damping : quick ? std::vector<double>{0.5} : std::vector<double>{0.5, 0.0}) {
       for (double k : stiffness) {
-        for (double dt : dts) {
+        for (double dt : integrator_dts) {
           StressCase c{"map", "icosphere:1", integrator, k, damping, 30.0};
           c.dt_s = dt;
           cases.push_back(c);

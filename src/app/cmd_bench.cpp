@@ -78,7 +78,7 @@ Action add_accuracy_options(CLI::App& command) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command.add_option("--max-runs", o.max_runs, "Most runs per integrator")->check(CLI::Range(1, 40))->capture_default_str();
-  command.add_option("--integrators", state->integrators, "Only these (default: all six)")
+  command.add_option("--integrators", state->integrators, "Only these (default: all of them)")
       ->delimiter(',')
       ->type_name("NAME,...");
   command.footer(

@@ -42,6 +42,24 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
   }
 }
 
+// What one xpbd substep costs per vertex, one thread (predict with gravity and the gas, the edge pass, the
+// velocities, the floor): 92 ns of CPU time at icosphere:3 and :5 (build/bench_step
+// --benchmark_filter='BM_Step/6/(3|5)$'; symplectic Euler's step there: 50 and 62 ns).
+constexpr double kXpbdSubstepNsPerVertex = 92.0;
+
+// xpbd's line: the substeps per frame `substeps: auto` picks, and the wall time per simulated second they cost.
+void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
+                std::size_t vertices) {
+  const double dt = estimate.stable_dt(sim::IntegratorKind::Xpbd);
+  const int substeps = sim::auto_substeps(model, estimate, frame_interval_s);
+  const double substeps_per_s = substeps / frame_interval_s;
+  const double cost = substeps_per_s * static_cast<double>(vertices) * kXpbdSubstepNsPerVertex * 1e-9;
+  std::printf("  %-10s  %-12.4g %-12.4g %d substeps; expect about %.3g s of wall time per simulated second "
+              "(%.0f substeps/s x %zu vertices x %.0f ns)\n",
+              "xpbd", dt, frame_interval_s / substeps, substeps, cost, substeps_per_s, vertices,
+              kXpbdSubstepNsPerVertex);
+}
+
 struct InfoOptions {
   SceneOptions scene;
   bool plan = false;
@@ -69,7 +87,11 @@ int run_info(const InfoOptions& options) {
   }
   std::printf("  %-10s  %-12s %-12s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt");
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
-    print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s);
+    if (integrator.kind == sim::IntegratorKind::Xpbd) {
+      print_xpbd(run.world.model, estimate, run.clock.frame_interval_s, run.world.state.x.size());
+    } else {
+      print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s);
+    }
   }
   std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", sim::to_string(run.scene.solver.integrator).c_str(),
               run.clock.dt_s, run.clock.steps_per_frame);

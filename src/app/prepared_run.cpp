@@ -16,7 +16,22 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
   sim::World world = setup::build_world(scene, notes);
-  if (scene.solver.dt_auto) {
+  const bool xpbd = scene.solver.integrator == sim::IntegratorKind::Xpbd;
+  if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
+    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
+    scene.solver.substeps = sim::auto_substeps(world.model, estimate, 1.0 / scene.fps);
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: a volume bias of about %.2g %% and "
+                  "the contact travel limit %.4g s)",
+                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps),
+                  100.0 * sim::kXpbdVolumeBias, estimate.travel_dt_s);
+    notes.insert(notes.begin(), note);
+  }
+  if (xpbd && scene.solver.substeps > 0) {
+    scene.solver.dt_s = frames::substep_dt(scene.fps, scene.solver.substeps);
+    world.model.solver.dt_s = scene.solver.dt_s;
+  } else if (scene.solver.dt_auto) {
     const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
     scene.solver.dt_s = sim::auto_dt(estimate, scene.solver.integrator, 1.0 / scene.fps, scene.source.string());
     world.state.next_dt_s = scene.solver.dt_s;
@@ -28,7 +43,9 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   }
   const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
   const bool adaptive = scene.solver.integrator == sim::IntegratorKind::Rk45;  // chooses its own steps
-  if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto) notes.push_back(clock.dt_note);
+  if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto && !(xpbd && scene.solver.substeps > 0)) {
+    notes.push_back(clock.dt_note);
+  }
   for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }

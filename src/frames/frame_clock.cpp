@@ -28,4 +28,6 @@ FrameClock plan_frames(double duration_s, int fps, double requested_dt_s) {
   return clock;
 }
 
+double substep_dt(int fps, int substeps) { return 1.0 / fps / substeps; }
+
 }  // namespace frames

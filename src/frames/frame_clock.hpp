@@ -17,4 +17,8 @@ struct FrameClock {
 // the next dt that does (never drifting), and `dt_note` reports it.
 FrameClock plan_frames(double duration_s, int fps, double requested_dt_s);
 
+// xpbd: each frame interval split into `substeps` substeps, dt = (1/fps) / substeps [s] (plan_frames of this dt
+// gives steps_per_frame = substeps).
+double substep_dt(int fps, int substeps);
+
 }  // namespace frames

@@ -159,6 +159,15 @@ sim::Solver read_solver(ObjectReader& top) {
   } else {
     solver.dt_s = r.number("dt", solver.dt_s, kPositive);
   }
+  // xpbd's substeps per frame interval: a whole number >= 1 or "auto" (sim::Solver::substeps).
+  if (r.has("substeps") && r.at("substeps").is_string()) {
+    if (r.at("substeps").get<std::string>() != "auto") {
+      r.fail(r.child("substeps"), "expected a whole number >= 1 or \"auto\"", &r.at("substeps"));
+    }
+    solver.substeps_auto = true;
+  } else {
+    solver.substeps = r.integer("substeps", solver.substeps, 1, 1000000);
+  }
   solver.retry = r.boolean("retry", solver.retry);
   solver.tolerance = r.number("tolerance", solver.tolerance, kPositive);
   solver.threads = r.integer("threads", solver.threads, 0, 256);

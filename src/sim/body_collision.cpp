@@ -216,7 +216,7 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
 
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
-                                                     const ContactMaterial& material) {
+                                                     const ContactMaterial& material, bool full_push) {
   const double edge = surface.rest.mean_edge_m;
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   const Vec3* x_surface = state.x.data() + surface.first_vertex;
@@ -229,7 +229,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     if (height >= thickness) return;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
-                          best.weights, normal, thickness - height, 0.1 * search};
+                          best.weights, normal, thickness - height, full_push ? thickness - height : 0.1 * search};
     apply_contact(contact, inverse_mass, state, material);
     ++contacts;
   });
@@ -303,11 +303,11 @@ int BodyCollider::for_each_touching_pair(const std::vector<Body>& bodies, Visit 
 }
 
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-                          const ContactMaterial& material) {
+                          const ContactMaterial& material, bool full_push) {
   if (bodies.size() < 2) return 0;
   compute_boxes(bodies, state.x);
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
-    return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material);
+    return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material, full_push);
   });
 }
 

@@ -20,9 +20,11 @@ namespace sim {
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
-  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass).
+  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass). A vertex is pushed out by at
+  // most a twentieth of the surface's mean edge per call, or, with `full_push` (position-based integrators,
+  // whose next substep derives velocities from positions), by its whole depth.
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-              const ContactMaterial& material);
+              const ContactMaterial& material, bool full_push = false);
 
   // The smooth model: for every vertex of each body within the contact's skin δ of the nearest triangle of
   // another body (or inside it, up to half an edge deep), a penalty spring-damper on the penetration
@@ -56,7 +58,7 @@ class BodyCollider {
   template <class Visit>
   void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
-                                         State& state, const ContactMaterial& material);
+                                         State& state, const ContactMaterial& material, bool full_push);
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                              std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                              std::span<Vec3> force);

@@ -51,4 +51,28 @@ FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial&
   return found;
 }
 
+FloorContactFound resolve_floor_positional(double height_m, const ContactMaterial& material, double h,
+                                           std::span<Vec3> x, std::span<Vec3> v) {
+  FloorContactFound found;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i].y() >= height_m) continue;
+    const double depth = height_m - x[i].y();
+    found.deepest_m = std::max(found.deepest_m, depth);
+    ++found.below;
+    x[i].y() = height_m;
+    Vec3 tangential(v[i].x(), 0.0, v[i].z());  // m/s
+    const double tangential_speed = tangential.norm();
+    if (h * tangential_speed <= material.friction * depth) {
+      x[i] -= h * tangential;  // static friction: the substep's tangential travel undone
+      tangential.setZero();
+    } else {
+      tangential *= 1.0 - std::min(material.friction * depth / h, tangential_speed) / tangential_speed;
+    }
+    const double normal_speed = v[i].y();
+    v[i] = Vec3(tangential.x(), normal_speed < 0.0 ? separating_speed(normal_speed, material) : normal_speed,
+                tangential.z());
+  }
+  return found;
+}
+
 }  // namespace sim

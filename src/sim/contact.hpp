@@ -38,4 +38,17 @@ double deepest_below_floor(double height_m, std::span<const Vec3> x);
 FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial& material, std::span<Vec3> x,
                                          std::span<Vec3> v);
 
+// The friction floor of a position-based integrator (xpbd), after each substep of h seconds whose velocities
+// are v = (x − x_prev)/h, as in Müller et al., "Detailed Rigid Body Simulation with Extended Position Based
+// Dynamics" (SCA 2020, Sect. 3.5–3.6) for a particle (masses cancel). A vertex below the floor by d:
+//   position:   y ← floor (the normal constraint y ≥ floor, correction d);
+//               static friction: if the substep's tangential travel |h v_t| ≤ μ d, it is undone (x_t ← x_prev,t,
+//               v_t = 0): the vertex sticks where it touched down;
+//   velocity:   otherwise sliding friction takes min(μ d / h, |v_t|) of the tangential speed (the normal force
+//               of the correction, f_n = d m / h², over the substep: Δv = h μ f_n / m);
+//               the normal speed becomes −e v_n for an impact, 0 for a resting contact (sim/contact_response.hpp),
+//               never the d/h that the correction itself would imply.
+FloorContactFound resolve_floor_positional(double height_m, const ContactMaterial& material, double h,
+                                           std::span<Vec3> x, std::span<Vec3> v);
+
 }  // namespace sim

@@ -123,6 +123,25 @@ void Dynamics::accelerations(const State& state, std::vector<Vec3>& a) {
   visit_net_forces(state, a, [&](std::size_t i, const Vec3& f) { a[i] = f * inverse_mass[i]; });
 }
 
+void Dynamics::gravity_and_gas_forces(const State& state, std::vector<Vec3>& force) {
+  force.resize(state.x.size());
+  const bool body_contact = body_contact_forces(state);
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    const Body& body = model_.bodies[b];
+    const auto first = static_cast<std::size_t>(body.first_vertex);
+    const auto count = static_cast<std::size_t>(body.vertex_count);
+    const std::span<Vec3> f(force.data() + first, count);
+    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);
+    floor_contact_forces(body, x, v, f);  // a smooth contact is a force like gravity here (none otherwise)
+    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
+    const double per_area_sum = gas_face_pass(b, x);
+    if (per_area_sum == 0.0) continue;
+    const std::vector<Vec3>& area_sums = scratch_.area_sums[b];
+    for (std::size_t i = 0; i < count; ++i) f[i] += per_area_sum * area_sums[i];
+  }
+}
+
 template <FirstOrderUpdate kUpdate>
 void Dynamics::fused_first_order_step(State& state, double dt) {
   const std::vector<double>& inverse_mass = model_.inverse_mass;

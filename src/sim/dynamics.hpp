@@ -62,6 +62,9 @@ class Dynamics {
   void forces(const State& state, std::vector<Vec3>& force);
   // a_i = f_i(x, v) / m_i for every vertex [m/s²]; `a` is resized here.
   void accelerations(const State& state, std::vector<Vec3>& a);
+  // f_i of gravity and the gas only, without springs and dampers [N] (xpbd's prediction: its springs and
+  // dampers are constraints); `force` is resized here. One thread.
+  void gravity_and_gas_forces(const State& state, std::vector<Vec3>& force);
   // One forward or symplectic Euler step of `state` by dt, the update applied in the force evaluation's
   // last per-vertex pass (the same arithmetic as accelerations() and then the update: one pass fewer).
   void first_order_step(State& state, double dt, FirstOrderUpdate update);

@@ -8,6 +8,7 @@
 #include "sim/integrators/runge_kutta4.hpp"
 #include "sim/integrators/symplectic_euler.hpp"
 #include "sim/integrators/velocity_verlet.hpp"
+#include "sim/integrators/xpbd.hpp"
 
 namespace sim {
 
@@ -20,6 +21,7 @@ std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double toleranc
     case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
     case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
     case IntegratorKind::Newton: return std::make_unique<NewtonEuler>();
+    case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
   }
   return nullptr;
 }

@@ -20,6 +20,8 @@ enum class IntegratorKind {
   Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
   Newton,      // backward Euler solved by Newton's method on its incremental potential (Gast et al. 2015), every
                // force implicit (gas included): first order, L-stable, for 1/60 s steps
+  Xpbd,        // substepped extended position-based dynamics (Macklin et al. 2016, 2019): first order, one
+               // constraint pass per substep, springs as compliant constraints: stable at large steps
 };
 
 // What the program needs to know of an integrator besides its code.
@@ -28,19 +30,22 @@ struct IntegratorInfo {
   std::string_view name;  // in scene files, on the command line, in CSVs and messages
   int order;              // convergence order on smooth motion (rk45: 5, its propagated solution)
   bool adaptive;          // chooses its own step sizes (driven by sim::advance_to)
-  bool explicit_springs;  // the springs limit its stable step (every method but implicit and newton)
+  bool explicit_springs;  // the springs limit its stable step (every method but implicit, newton and xpbd)
+  bool position_based;    // velocities follow from positions, v = (x − x_prev)/h, and the friction floor is a
+                          // positional constraint with static friction (xpbd only; sim/contact.hpp)
 };
 
 // Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
 // benchmarks all iterate this list.
-inline constexpr std::array<IntegratorInfo, 7> kIntegrators = {{
-    {IntegratorKind::Euler, "euler", 1, false, true},
-    {IntegratorKind::Symplectic, "symplectic", 1, false, true},
-    {IntegratorKind::Verlet, "verlet", 2, false, true},
-    {IntegratorKind::Rk4, "rk4", 4, false, true},
-    {IntegratorKind::Rk45, "rk45", 5, true, true},
-    {IntegratorKind::Implicit, "implicit", 1, false, false},
-    {IntegratorKind::Newton, "newton", 1, false, false},
+inline constexpr std::array<IntegratorInfo, 8> kIntegrators = {{
+    {IntegratorKind::Euler, "euler", 1, false, true, false},
+    {IntegratorKind::Symplectic, "symplectic", 1, false, true, false},
+    {IntegratorKind::Verlet, "verlet", 2, false, true, false},
+    {IntegratorKind::Rk4, "rk4", 4, false, true, false},
+    {IntegratorKind::Rk45, "rk45", 5, true, true, false},
+    {IntegratorKind::Implicit, "implicit", 1, false, false, false},
+    {IntegratorKind::Newton, "newton", 1, false, false, false},
+    {IntegratorKind::Xpbd, "xpbd", 1, false, false, true},
 }};
 static_assert([] {
   for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
@@ -116,6 +121,10 @@ struct Solver {
   double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
                        // (rk45: only the first trial step; it then chooses its own)
   bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/stability.hpp)
+  // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps; 0: dt_s
+  // decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy sim::auto_substeps states.
+  int substeps = 0;
+  bool substeps_auto = false;
   bool retry = false;    // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]

@@ -228,9 +228,10 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x) {
 
 double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   const double mu_max = bounds.omega2_springs + bounds.omega2_gas + bounds.omega2_contact;
-  if (integrator == IntegratorKind::Implicit) {
-    // Springs and dampers implicit (unconditionally stable); the explicit gas and contact terms as in
-    // symplectic Euler.
+  if (integrator == IntegratorKind::Implicit || integrator == IntegratorKind::Xpbd) {
+    // implicit: springs and dampers implicit (unconditionally stable); xpbd: springs and dampers as compliant
+    // constraints, which for one mode is backward Euler on them. Both take the gas (and a smooth contact)
+    // explicitly as symplectic Euler does (xpbd's prediction is a symplectic-Euler kick and drift).
     const double explicit_omega2 = bounds.omega2_gas + bounds.omega2_contact;
     return explicit_omega2 > 0.0 ? 2.0 / std::sqrt(explicit_omega2) : StabilityEstimate::kUnlimited;
   }
@@ -363,6 +364,22 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
   }
   if (limit == StabilityEstimate::kUnlimited) return frame_interval_s / 4.0;
   return std::min(kAutoDtSafety * limit, frame_interval_s);
+}
+
+double xpbd_bias_dt(double omega_max, int vertices) {
+  if (omega_max <= 0.0) return StabilityEstimate::kUnlimited;
+  const double mesh = std::pow(std::max(vertices, 1) / 642.0, kXpbdBiasMeshPower);
+  const double phase = std::pow(kXpbdVolumeBias / (kXpbdBiasScale * mesh), 1.0 / kXpbdBiasPower);  // h ω_max
+  return phase / omega_max;
+}
+
+int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s) {
+  double h = std::min(frame_interval_s, estimate.travel_dt_s);
+  for (std::size_t b = 0; b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
+    h = std::min(h, xpbd_bias_dt(estimate.bodies[b].omega_max(), model.bodies[b].vertex_count));
+  }
+  const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));
+  return static_cast<int>(std::clamp(substeps, 1.0, double{kXpbdMostAutoSubsteps}));
 }
 
 }  // namespace sim

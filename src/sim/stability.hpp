@@ -18,6 +18,7 @@
 //   rk4          Σ_{j≤4} (hA)^j / j!                             h < 2.83/ω
 //   rk45         Σ_{j≤5} (hA)^j / j! + (hA)^6 / 600 (DOPRI5)     h < 3.3/ω (step chosen adaptively)
 //   implicit     springs and dampers implicit: no limit; the gas (and a smooth contact) explicit: h < 2/ω_gas
+//   xpbd         springs and dampers as compliant constraints: no limit; the gas explicit: h < 2/ω_gas
 #pragma once
 
 #include <array>
@@ -115,6 +116,28 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
 // without dampers (unstable at every dt), naming the key.
 double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file);
+
+// xpbd's `solver.substeps: "auto"` (and `dt: "auto"`): the fewest substeps per frame interval whose substep h
+// keeps (1) the volume bias below kXpbdVolumeBias and (2) the contact travel of every integrator, a tenth of the
+// shortest edge per step (travel_dt_s). The springs set no stability limit (xpbd.hpp), but one constraint pass
+// per substep leaves a pressurised network short of its equilibrium: the ball flies inflated by a bias that
+// grows with h ω_max (ω_max: the fastest mode of springs and gas, ModeBounds::omega_max) and, at the same h ω_max,
+// with the mesh (one Gauss–Seidel pass carries a correction only a few edges). Measured on the bounce ball
+// (k 1000 N/m, c 1 N·s/m, nRT 50 J, 1 kg), free-flight volume against symplectic Euler at 2.5e-5 s (icosphere:3)
+// and 1.75e-5 s (icosphere:5):
+//   icosphere:3 (642 vertices, ω_max 2037 rad/s), h ω_max 3.4, 1.7, 0.85, 0.42: +3.0, +1.0, +0.39, +0.16 %
+//   icosphere:5 (10242 vertices, ω_max 8428 rad/s), h ω_max 3.5, 1.75, 0.88:      +6, +2.9, +1.3 %
+// fitted by bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower (within 10 % of each
+// point from 0.85 to 3.5); auto solves it for h. A fit of two meshes and one material: a stiffer or softer body
+// moves ω_max, which the fit follows, but it was not measured.
+constexpr double kXpbdVolumeBias = 0.005;     // the bias auto aims for (0.5 % of the volume)
+constexpr double kXpbdBiasScale = 0.0048;     // bias at h ω_max = 1 on icosphere:3
+constexpr double kXpbdBiasPower = 1.25;
+constexpr double kXpbdBiasMeshPower = 0.43;
+constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
+// The substep bound of (1) for one body of `vertices` vertices with fastest mode ω_max [s] (kUnlimited: no modes).
+double xpbd_bias_dt(double omega_max, int vertices);
+int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
 // kPaperEuler*; the smooth contact adds its spring and dashpot to every body's fastest mode, a bound: the

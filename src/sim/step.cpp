@@ -30,13 +30,16 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace) {
   if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
-  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material);
+  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material,
+                                    /*full_push=*/integrator_info(model.solver.integrator).position_based);
 }
 
-// Phase 3: the floor's contact model. Returns the vertices it moved. The paper's model lists the vertices it
-// reversed in state.coasting (symplectic Euler's next step reads them); the smooth contact is a force and
+// Phase 3: the floor's contact model, after every step of h (xpbd: every substep). Returns the vertices it
+// moved. The paper's model lists the vertices it reversed in state.coasting (symplectic Euler's next step
+// reads them). A position-based integrator's friction floor is the positional constraint with static friction
+// (sim/contact.hpp); the paper's model already is one (y ← floor, v ← −v). The smooth contact is a force and
 // moves none.
-int resolve_floor(const Model& model, State& state, Workspace& workspace) {
+int resolve_floor(const Model& model, State& state, Workspace& workspace, double h) {
   if (!model.floor) return 0;
   FloorContactFound found;
   switch (model.floor->contact) {
@@ -45,7 +48,11 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace) {
       found = resolve_floor_paper(model.floor->height_m, state.x, state.v, state.coasting);
       break;
     case FloorContact::Friction:
-      found = resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
+      if (integrator_info(model.solver.integrator).position_based) {
+        found = resolve_floor_positional(model.floor->height_m, model.floor->material, h, state.x, state.v);
+      } else {
+        found = resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
+      }
       break;
     case FloorContact::Smooth:  // a force inside the dynamics: nothing to project, only the depth to report
       workspace.deepest_floor_penetration_m =
@@ -68,15 +75,15 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
 
 // Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
-void resolve_contacts(const Model& model, State& state, Workspace& workspace) {
-  const int touched = resolve_body_contacts(model, state, workspace) + resolve_floor(model, state, workspace);
+void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
+  const int touched = resolve_body_contacts(model, state, workspace) + resolve_floor(model, state, workspace, h);
   if (touched > 0) state.carry.acceleration.clear();
 }
 
 // The fixed-step phases of one step of h: integrate → body contacts → floor → guard.
 std::optional<Divergence> fixed_step_phases(const Model& model, State& state, Workspace& workspace, double h) {
   integrate(model, state, workspace, h, /*with_error=*/false);
-  resolve_contacts(model, state, workspace);
+  resolve_contacts(model, state, workspace, h);
   return guard(model, state, /*full=*/model.solver.retry);
 }
 
@@ -175,7 +182,7 @@ void advance_to(const Model& model, State& state, Workspace& workspace, double e
       continue;
     }
     // Phases 2 to 4; the guard rejecting the step: undo it and try a quarter of the step.
-    resolve_contacts(model, state, workspace);
+    resolve_contacts(model, state, workspace, dt);
     if (auto found = guard(model, state, /*full=*/true)) {
       reject_attempt(state, workspace, 0.25 * dt);
       last_finding = found;

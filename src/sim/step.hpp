@@ -5,8 +5,10 @@
 //   1. integrate     forces inside (gravity,      fixed step, solver.retry: restore the State saved before
 //                    springs, dampers, gas), as     the step and redo it as 2, 4, ... 1024 substeps
 //                    often as the integrator needs  adaptive (rk45): restore the State saved before the
-//   2. body contacts impulses between bodies         attempt and try the size the error estimate proposes
-//   3. floor         the floor's contact model       (or a quarter, after the guard rejected it)
+//                    (xpbd: one substep, h = 1/fps /  attempt and try the size the error estimate proposes
+//                    solver.substeps)                 (or a quarter, after the guard rejected it)
+//   2. body contacts impulses between bodies
+//   3. floor         the floor's contact model (xpbd's friction floor: positional, with static friction)
 //   4. guard         finite values every step;      otherwise: throw DivergedError with what, where, when
 //                    energy and volume every 8th      and the dt the estimate finds stable
 //                    (every step when a rejection

@@ -1,0 +1,64 @@
+// The XPBD substep: predict with gravity and the gas, one coloured pass over the edge constraints, velocities.
+#include "sim/integrators/xpbd.hpp"
+
+#include <cmath>
+
+namespace sim {
+namespace {
+
+// One pass over body's edge constraints in colour order (see xpbd.hpp for Δλ). x: the body's positions,
+// previous: the same at the start of the substep, w: inverse masses [1/kg].
+void solve_edges(const Body& body, const EdgeColouring& colouring, double h, std::span<Vec3> x,
+                 std::span<const Vec3> previous, std::span<const double> w) {
+  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
+  if (k == 0.0 && c == 0.0) return;
+  const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
+  const auto& edges = body.topology.edges;
+  const auto& rest = body.rest.edge_length_m;
+  for (const int e : colouring.edges) {
+    const auto [i, j] = edges[static_cast<std::size_t>(e)];
+    const Vec3 d = x[i] - x[j];
+    const double length = d.norm();
+    if (length == 0.0) continue;  // coincident ends: no direction, no correction
+    const Vec3 n = d / length;    // ∇_i C
+    const double stretch = length - rest[static_cast<std::size_t>(e)];                      // C [m]
+    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));             // ∇C·(x − x_prev) [m]
+    const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
+    x[i] += (w[i] * lambda) * n;
+    x[j] -= (w[j] * lambda) * n;
+  }
+}
+
+}  // namespace
+
+void Xpbd::colour_once(const Model& model) {
+  if (colourings_.size() == model.bodies.size()) return;
+  colourings_.clear();
+  for (const Body& body : model.bodies) colourings_.push_back(colour_edges(body.topology.edges, body.vertex_count));
+}
+
+void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
+  const Model& model = dynamics.model();
+  colour_once(model);
+  const double h = dt;
+  previous_x_ = state.x;
+  // 1. Predict with the forces that are not constraints: x* = x + h v + h² f/m.
+  dynamics.gravity_and_gas_forces(state, force_);
+  for (std::size_t i = 0; i < state.x.size(); ++i) {
+    state.v[i] += (h * model.inverse_mass[i]) * force_[i];
+    state.x[i] += h * state.v[i];
+  }
+  // 2. The edge constraints, body by body.
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
+    solve_edges(body, colourings_[b], h, std::span<Vec3>(state.x.data() + first, count),
+                std::span<const Vec3>(previous_x_.data() + first, count),
+                std::span<const double>(model.inverse_mass.data() + first, count));
+  }
+  // 3. Velocities from the positions.
+  const double inverse_h = 1.0 / h;
+  for (std::size_t i = 0; i < state.x.size(); ++i) state.v[i] = (state.x[i] - previous_x_[i]) * inverse_h;
+}
+
+}  // namespace sim

@@ -1,0 +1,43 @@
+// Substepped extended position-based dynamics (XPBD) for the same springs, dampers and gas.
+#pragma once
+
+#include <vector>
+
+#include "sim/edge_colouring.hpp"
+#include "sim/integrators.hpp"
+
+namespace sim {
+
+// One call of step(h) is one XPBD substep (Macklin, Müller & Chentanez, "XPBD: Position-Based Simulation of
+// Compliant Constrained Dynamics", MIG 2016; Macklin et al., "Small Steps in Physics Simulation", SCA 2019:
+// n substeps of one constraint iteration each). The frame clock splits each frame interval into
+// solver.substeps of them (sim::Solver), and sim::step runs the contacts after each one.
+//
+//   1. predict   v ← v + h (f_gravity + f_gas)/m,  x ← x + h v      x* = x + h v + h² f/m, the gas explicit
+//   2. edges     one pass over every edge constraint C = |x_i − x_j| − L0, colour by colour (EdgeColouring):
+//                with compliance α = 1/k, damping β = c (the Rayleigh dissipation ½ β Ċ² of the dashpot c along
+//                the edge) and γ = α β / h (XPBD Eq. 26, λ = 0 at the start of the single iteration):
+//                  Δλ = (−C − γ ∇C·(x − x_prev)) / ((1 + γ) (w_i + w_j) + α/h²)
+//                multiplied through by k h², which also serves k = 0 (a damper alone) and c = 0:
+//                  Δλ = (−k h² C − c h ∇C·(x − x_prev)) / ((k h² + c h)(w_i + w_j) + 1)      [m·kg]
+//                  x_i += w_i Δλ n̂,  x_j −= w_j Δλ n̂,  n̂ = (x_i − x_j)/|x_i − x_j|, w = 1/m
+//   3. velocity  v = (x − x_prev)/h
+//
+// Why it is the same model: for h → 0 the correction is Δx_i = −h² w_i (k C + c Ċ) n̂ = h² f_i/m_i, the
+// spring-damper force of sim/forces.hpp, so the substeps converge to the same ODE as the other integrators,
+// at first order (the pass is one Gauss–Seidel sweep, symplectic Euler in the limit). At large h the springs
+// behave like backward Euler: no step limit from them; the explicit gas and gravity in step 1 keep
+// symplectic Euler's limit h < 2/ω_gas (sim/stability.hpp). Nothing is carried between substeps but x, v.
+class Xpbd final : public Integrator {
+ public:
+  void step(Dynamics& dynamics, State& state, double dt) override;
+
+ private:
+  void colour_once(const Model& model);
+
+  std::vector<EdgeColouring> colourings_;  // per body of the model, computed on the first step
+  std::vector<Vec3> previous_x_;           // scratch: x at the start of the substep
+  std::vector<Vec3> force_;                // scratch: gravity + gas on every vertex [N]
+};
+
+}  // namespace sim
