@@ -1,0 +1,30 @@
+// SIGINT and SIGTERM as a request to stop after the frame in progress: the frame loops end there, the sinks
+// finish with the complete frames (the CSV keeps their rows), and the program exits 128 + the signal.
+#pragma once
+
+#include <stdexcept>
+
+namespace frames {
+
+// Installs the handlers (once per process; a second signal of the same kind kills at once, the default).
+void stop_on_signals();
+
+// The signal that asked to stop (SIGINT, SIGTERM), or 0.
+int stop_signal();
+
+// Thrown by the frame loops once a stop was requested, after `complete_frames` frames were handed out.
+class Interrupted : public std::runtime_error {
+ public:
+  Interrupted(int signal, int complete_frames);
+  int signal() const { return signal_; }
+  int complete_frames() const { return complete_frames_; }
+
+ private:
+  int signal_;
+  int complete_frames_;
+};
+
+// Throws Interrupted when a stop was requested.
+void throw_if_stop_requested(int complete_frames);
+
+}  // namespace frames
