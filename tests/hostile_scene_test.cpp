@@ -99,6 +99,23 @@ TEST(HostileScene, DeepValuesAreDescribedWithoutRecursion) {
   EXPECT_EQ(scene::describe_json(nlohmann::json::parse("[[1, 2], 3]")), "array [[1,2],3]");
 }
 
+// Found by fuzz_scene: a --set value is taken as bytes, and one that is not UTF-8 made the scene hash's
+// dump throw nlohmann's type_error (exit 1 with its raw text) instead of the key's message.
+TEST(HostileScene, SetValuesThatAreNotUtf8GetTheKeysMessage) {
+  nlohmann::json document = scene::parse_scene_text(R"({ "bodies": [ {} ] })", "s.json");
+  scene::apply_override(document, "floor.contact=fric\xfftion");
+  try {
+    scene::scene_from_json(document, "s.json");
+    FAIL() << "accepted";
+  } catch (const softbody::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.json: floor.contact: expected one of \"paper\" \"friction\""), std::string::npos)
+        << e.what();
+  }
+  scene::apply_override(document, "name=caf\xff");  // a valid value whose bytes are not UTF-8: dumped, replaced
+  scene::apply_override(document, "floor.contact=paper");
+  EXPECT_NO_THROW(scene::scene_from_json(document, "s.json"));
+}
+
 TEST(HostileScene, DepthLimitLeavesRoomForRealScenes) {
   const std::string ok = std::string(scene::kMaxJsonDepth, '[') + std::string(scene::kMaxJsonDepth, ']');
   EXPECT_NO_THROW(scene::parse_json_limited(ok, "t", false));

@@ -44,8 +44,7 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   }
   constexpr std::uintmax_t kHeadBytes = 64 << 10;  // enough for any PLY or OFF header this loader accepts
   const std::string head = head_of(file, std::min(bytes, kHeadBytes));
-  const bool binary_ply = looks_like_ply(head) && head.find("format binary") != std::string::npos;
-  if (looks_like_ply(head)) check_ply_header(binary_ply ? head_of(file, bytes) : head, bytes, limits);
+  if (looks_like_ply(head)) check_ply_header(head_of(file, bytes), bytes, limits);  // the whole file: its body too
   if (looks_like_off(head)) check_off_header(head, bytes, limits);
 }
 

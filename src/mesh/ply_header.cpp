@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cctype>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,7 @@ int type_bytes(std::string_view type, bool* integer) {
 struct Property {
   int bytes = 0;        // a scalar's bytes, or a list item's
   int count_bytes = 0;  // a list's count: 1, 2 or 4 bytes; 0 for a scalar
+  bool vertex_indices = false;  // a face's vertex_index (or vertex_indices) list
 };
 
 struct Element {
@@ -100,6 +102,9 @@ void check_binary_body(std::string_view body, const std::vector<Element>& elemen
         const unsigned long long n =
             list_count(reinterpret_cast<const unsigned char*>(body.data() + at), p.count_bytes, big_endian);
         at += static_cast<std::size_t>(p.count_bytes);
+        if (p.vertex_indices && n < 3) {
+          throw InputError("has face " + std::to_string(row) + " of " + std::to_string(n) + " vertices (expected 3 or more)");
+        }
         if (n > (body.size() - at) / static_cast<std::size_t>(p.bytes)) {
           throw InputError("has " + e.name + " " + std::to_string(row) + " with a list of " + std::to_string(n) +
                            " items, more than the rest of the file holds");
@@ -135,6 +140,51 @@ std::size_t end_header_line(std::string_view head) {
     start = end + 1;
   }
   return std::string_view::npos;
+}
+
+// A number as PLY text holds it: an optional sign, digits, '.', an exponent (and inf/nan, which are refused
+// later as coordinates).
+bool is_number_word(std::string_view word) {
+  if (word.empty() || word.size() > 64) return false;
+  const std::string text(word);
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
+// Walks an ASCII body value by value: every value a number, every list count a whole number that the rest
+// of the file can hold, and every face of at least 3 vertices (assimp aborts on some malformed faces).
+void check_ascii_body(std::string_view body, const std::vector<Element>& elements) {
+  std::size_t at = 0;
+  auto next_word = [&]() -> std::string_view {
+    while (at < body.size() && std::isspace(static_cast<unsigned char>(body[at]))) ++at;
+    const std::size_t start = at;
+    while (at < body.size() && !std::isspace(static_cast<unsigned char>(body[at]))) ++at;
+    return body.substr(start, at - start);
+  };
+  for (const Element& e : elements) {
+    for (long long row = 0; row < e.count; ++row) {
+      for (const Property& p : e.layout) {
+        auto bad = [&](const std::string& what) {
+          throw InputError("has " + e.name + " " + std::to_string(row) + " with " + what);
+        };
+        const std::string_view word = next_word();
+        if (word.empty()) throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+        if (p.count_bytes == 0) {
+          if (!is_number_word(word)) bad("a value that is not a number: \"" + std::string(word.substr(0, 20)) + "\"");
+          continue;
+        }
+        const long long n = count_of(word);
+        if (n < 0) bad("a list count that is not a whole number: \"" + std::string(word.substr(0, 20)) + "\"");
+        if (p.vertex_indices && n < 3) bad("a face of " + std::to_string(n) + " vertices (expected 3 or more)");
+        if (static_cast<unsigned long long>(n) > (body.size() - at) / 2 + 1) bad("a list of " + std::to_string(n) + " items, more than the rest of the file holds");
+        for (long long i = 0; i < n; ++i) {
+          const std::string_view item = next_word();
+          if (!is_number_word(item)) bad("a list item that is not a number");
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -183,12 +233,12 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
         const int item_bytes = type_bytes(words[3], nullptr);
         if (item_bytes == 0) bad("unknown item type \"" + std::string(words[3]) + "\"");
         element.row_min_bytes += count_bytes;
-        element.layout.push_back({item_bytes, count_bytes});
+        element.layout.push_back({item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices"});
       } else if (words.size() == 3) {
         const int bytes = type_bytes(words[1], &integer);
         if (bytes == 0) bad("unknown property type \"" + std::string(words[1]) + "\"");
         element.row_min_bytes += bytes;
-        element.layout.push_back({bytes, 0});
+        element.layout.push_back({bytes, 0, false});
       } else {
         bad("expected property TYPE NAME or property list COUNT_TYPE ITEM_TYPE NAME");
       }
@@ -219,8 +269,10 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
   if (format == "ascii") needed -= 1.0L;  // the last value needs no separator after it
   const std::uintmax_t body = file_bytes > header_bytes ? file_bytes - header_bytes : 0;
   if (needed > 0.0L) check_body_size(body, needed, announced);
-  if (format != "ascii") {
-    if (head.size() < file_bytes) throw InputError("is a binary PLY file that could not be read whole");
+  if (head.size() < file_bytes) throw InputError("is a PLY file that could not be read whole");
+  if (format == "ascii") {
+    check_ascii_body(head.substr(header_bytes), elements);
+  } else {
     check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian");
   }
 }

@@ -14,7 +14,8 @@ namespace mesh {
 bool looks_like_ply(std::string_view head);
 
 // Throws softbody::InputError (message without the file name) unless `head`, which holds the whole header
-// (and for a binary PLY the whole file: every list's count is checked against the bytes left),
+// and the whole body (every value of an ASCII body a number; every list's count within what is left of the
+// file; every face of at least 3 vertices),
 // is a well-formed PLY header: format ascii / binary_little_endian / binary_big_endian 1.0, every element
 // with a decimal count and at least one property of a known type, list counts of an integer type, an
 // end_header line; vertex and face counts within `limits`; and a body (file_bytes minus the header) large

@@ -89,7 +89,8 @@ std::string describe_json(const json& value) {
     for (const json& child : *node) stack.emplace_back(&child, depth + 1);
     if (stack.size() > 4096) return value.type_name() + std::string(" of ") + std::to_string(value.size()) + " elements";
   }
-  std::string text = value.dump();
+  // Invalid UTF-8 (a --set value is taken as bytes) is replaced, not thrown about.
+  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   return value.type_name() + std::string(" ") + text;
 }

@@ -394,7 +394,9 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.output = read_output(top, s.name);
   json simulation = document;
   for (const char* key : {"name", "render", "camera", "light", "output", "limits"}) simulation.erase(key);
-  s.simulation_json = simulation.dump();
+  // Invalid UTF-8 (possible in --set values, which are taken as bytes) is replaced (U+FFFD), not thrown about;
+  // valid text dumps exactly as before.
+  s.simulation_json = simulation.dump(-1, ' ', false, json::error_handler_t::replace);
   top.reject_unknown();
   return s;
 }
