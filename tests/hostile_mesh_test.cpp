@@ -56,6 +56,9 @@ INSTANTIATE_TEST_SUITE_P(
         HostileMesh{"ply_binary_list_past_end.ply", "with a list of 255 items, more than the rest of the file holds"},
         HostileMesh{"off_two_billion_vertices.off", "announces 2000000000 vertices"},
         // found by fuzz_mesh_ply_text: a face count "&" made assimp's triangulation abort (ai_assert).
+        // found by fuzz_mesh_ply_text: "ply" then other bytes than a line break (so not checked as PLY) and no
+        // end_header: assimp (which goes by the magic word) looped for ever.
+        HostileMesh{"ply_magic_without_line_break.ply", "is a PLY file without an end_header line"},
         HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
         // coordinates that are not numbers, or whose squares overflow (welding, volumes).
         // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).

@@ -3,6 +3,7 @@
 #include "mesh/import.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -44,8 +45,11 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   }
   constexpr std::uintmax_t kHeadBytes = 64 << 10;  // enough for any PLY or OFF header this loader accepts
   const std::string head = head_of(file, std::min(bytes, kHeadBytes));
-  if (looks_like_ply(head)) check_ply_header(head_of(file, bytes), bytes, limits);  // the whole file: its body too
-  if (looks_like_off(head)) check_off_header(head, bytes, limits);
+  // By content or by name: assimp picks its reader by either (and loops on a .ply that has no PLY header).
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (looks_like_ply(head) || extension == ".ply") check_ply_header(head_of(file, bytes), bytes, limits);  // body too
+  if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)

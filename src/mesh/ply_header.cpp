@@ -189,9 +189,7 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
 
 }  // namespace
 
-bool looks_like_ply(std::string_view head) {
-  return head.size() >= 4 && head.substr(0, 3) == "ply" && (head[3] == '\n' || head[3] == '\r');
-}
+bool looks_like_ply(std::string_view head) { return head.substr(0, 3) == "ply"; }
 
 void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits) {
   const std::size_t end = end_header_line(head);
@@ -285,10 +283,12 @@ bool looks_like_off(std::string_view head) {
 }
 
 void check_off_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits) {
-  // "OFF" then the vertex, face and edge counts, '#' comments skipped.
+  // "OFF" (optional) then the vertex, face and edge counts, '#' comments skipped.
   std::vector<long long> counts;
   std::size_t i = 0;
-  while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  if (looks_like_off(head)) {
+    while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  }
   while (i < head.size() && counts.size() < 2) {
     const char c = head[i];
     if (c == '#') {

@@ -10,7 +10,8 @@
 
 namespace mesh {
 
-// True when `head` (the file's first bytes) starts a PLY file ("ply" then a line break).
+// True when `head` (the file's first bytes) starts with "ply", the magic word assimp recognises PLY files by
+// (whatever follows: a malformed first line is refused by check_ply_header, not passed to assimp).
 bool looks_like_ply(std::string_view head);
 
 // Throws softbody::InputError (message without the file name) unless `head`, which holds the whole header
@@ -25,7 +26,8 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
 // True when `head` starts an OFF file ("OFF", "COFF", "NOFF", ... then whitespace).
 bool looks_like_off(std::string_view head);
 
-// The same for OFF: the vertex and face counts within `limits`, and a body large enough for them.
+// The same for OFF (its "OFF" keyword optional): the vertex and face counts within `limits`, and a body large
+// enough for them.
 void check_off_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits);
 
 }  // namespace mesh
