@@ -59,6 +59,9 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_ply_text: "ply" then other bytes than a line break (so not checked as PLY) and no
         // end_header: assimp (which goes by the magic word) looped for ever.
         HostileMesh{"ply_magic_without_line_break.ply", "is a PLY file without an end_header line"},
+        // found by fuzz_mesh_ply_text: a vertex row split over two lines (assimp reads a row per line and
+        // then aborted in its triangulation).
+        HostileMesh{"ply_text_row_split_over_two_lines.ply", "has vertex 6 with fewer values on its line than its header announces"},
         HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
         // coordinates that are not numbers, or whose squares overflow (welding, volumes).
         // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).

@@ -152,24 +152,25 @@ bool is_number_word(std::string_view word) {
   return end == text.c_str() + text.size();
 }
 
-// Walks an ASCII body value by value: every value a number, every list count a whole number that the rest
-// of the file can hold, and every face of at least 3 vertices (assimp aborts on some malformed faces).
+// Walks an ASCII body line by line, as assimp reads it (one element per line): every line holds exactly the
+// values its element announces, every value a number, every list count a whole number, every face of at
+// least 3 vertices. (A row split over two lines, or a face count that is not a number, made assimp's
+// triangulation abort on an ai_assert.)
 void check_ascii_body(std::string_view body, const std::vector<Element>& elements) {
   std::size_t at = 0;
-  auto next_word = [&]() -> std::string_view {
-    while (at < body.size() && std::isspace(static_cast<unsigned char>(body[at]))) ++at;
-    const std::size_t start = at;
-    while (at < body.size() && !std::isspace(static_cast<unsigned char>(body[at]))) ++at;
-    return body.substr(start, at - start);
-  };
   for (const Element& e : elements) {
     for (long long row = 0; row < e.count; ++row) {
+      auto bad = [&](const std::string& what) {
+        throw InputError("has " + e.name + " " + std::to_string(row) + " with " + what);
+      };
+      if (at >= body.size()) throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+      const std::size_t end = std::min(body.find('\n', at), body.size());
+      const std::vector<std::string_view> words = words_of(body.substr(at, end - at));
+      at = end + 1;
+      std::size_t w = 0;
       for (const Property& p : e.layout) {
-        auto bad = [&](const std::string& what) {
-          throw InputError("has " + e.name + " " + std::to_string(row) + " with " + what);
-        };
-        const std::string_view word = next_word();
-        if (word.empty()) throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+        if (w >= words.size()) bad("fewer values on its line than its header announces");
+        const std::string_view word = words[w++];
         if (p.count_bytes == 0) {
           if (!is_number_word(word)) bad("a value that is not a number: \"" + std::string(word.substr(0, 20)) + "\"");
           continue;
@@ -177,12 +178,12 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
         const long long n = count_of(word);
         if (n < 0) bad("a list count that is not a whole number: \"" + std::string(word.substr(0, 20)) + "\"");
         if (p.vertex_indices && n < 3) bad("a face of " + std::to_string(n) + " vertices (expected 3 or more)");
-        if (static_cast<unsigned long long>(n) > (body.size() - at) / 2 + 1) bad("a list of " + std::to_string(n) + " items, more than the rest of the file holds");
+        if (n > static_cast<long long>(words.size() - w)) bad("a list of " + std::to_string(n) + " items, more than its line holds");
         for (long long i = 0; i < n; ++i) {
-          const std::string_view item = next_word();
-          if (!is_number_word(item)) bad("a list item that is not a number");
+          if (!is_number_word(words[w++])) bad("a list item that is not a number");
         }
       }
+      if (w != words.size()) bad("more values on its line than its header announces");
     }
   }
 }
