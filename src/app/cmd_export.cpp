@@ -10,6 +10,8 @@
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "frames/stop_request.hpp"
+#include "output/atomic_file.hpp"
 #include "output/mesh_exporter.hpp"
 #include "output/point_cache.hpp"
 
@@ -53,10 +55,16 @@ int run_export(const ExportOptions& options) {
   if (options.format == ExportFormat::Mdd) return run_point_cache_export(options, output::PointCacheFormat::Mdd);
   const output::MeshFormat mesh_format = options.format == ExportFormat::Obj ? output::MeshFormat::Obj : output::MeshFormat::Ply;
   PreparedRun run = prepare_run(options.scene);
+  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::MeshExporter exporter(dir, mesh_format);
+  output::remove_stale_temporaries(dir);
+  if (!options.resume && planned.plan().frames.everything()) {
+    // A whole new run: an earlier run's meshes go first, so that a run that fails leaves no mix of the two.
+    output::remove_numbered_files(dir, run.clock.frame_count, [&](int i) { return exporter.frame_path(i).filename(); });
+  }
   std::unique_ptr<ResumableRun> resumable;
   std::vector<frames::FrameSink*> sinks = {&exporter};
   if (options.resume) {

@@ -69,7 +69,7 @@ int run_info(const InfoOptions& options) {
   if (options.plan) {  // for scripts (scripts/slurm-render): no world is built
     const scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
     std::printf("last_frame %d\nfps %d\nname %s\n",
-                frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s).frame_count, scene.fps,
+                frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string()).frame_count, scene.fps,
                 scene.name.c_str());
     return 0;
   }

@@ -15,6 +15,7 @@
 #include "app/run_plan.hpp"
 #include "frames/frame_loop.hpp"
 #include "frames/overlapped_frame_loop.hpp"
+#include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/render_sink.hpp"
@@ -51,6 +52,8 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
   } catch (const softbody::DivergedError&) {
     // The run proper diverges at the same step and reports it, after writing the frames before it: the
     // camera frames those.
+  } catch (const frames::Interrupted& stop) {
+    throw frames::Interrupted(stop.signal(), 0);  // SIGINT / SIGTERM before frame 0 was drawn: none complete
   }
   run.world.state = start;
   std::fprintf(stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
@@ -112,6 +115,7 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 
 int run_render(const RenderOptions& options) {
   PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
+  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   if (options.resume && options.no_png) {
     throw softbody::InputError("--resume continues from the PNG frames on disk: use it without --no-png");
@@ -151,6 +155,15 @@ int run_render(const RenderOptions& options) {
   outputs.last_frame = run.clock.frame_count;
   outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
+  output::remove_stale_temporaries(outputs.dir);
+  if (!options.resume && chosen.everything() && outputs.write_frames) {
+    // A whole new run: an earlier run's frames and figure go first, so that a run that fails (diverges, is
+    // interrupted) leaves only its own frames, never a mix of two runs.
+    output::remove_numbered_files(outputs.dir, run.clock.frame_count,
+                                  [&](int i) { return std::filesystem::path(output::frame_file_name(outputs.pattern, i)); });
+    std::error_code ec;
+    std::filesystem::remove(outputs.dir / "figure.png", ec);
+  }
   std::unique_ptr<ResumableRun> resumable;
   if (options.resume) {
     const auto frame_done = [&outputs](int frame) {

@@ -9,6 +9,9 @@
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "frames/stop_request.hpp"
+#include "core/errors.hpp"
+#include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
 #include "output/state_cache.hpp"
 #include "setup/scene_hash.hpp"
@@ -27,10 +30,14 @@ struct SimulateOptions {
 
 int run_simulate(const SimulateOptions& options) {
   PreparedRun run = prepare_run(options.scene);
+  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"
                                                              : std::filesystem::path(options.csv_file);
+  const bool to_stdout = csv == "-";
+  if (to_stdout && options.resume) throw softbody::InputError("--resume keeps a journal beside the CSV: use it with a --csv FILE, not -");
+  if (!to_stdout) output::remove_stale_temporaries(csv.parent_path().empty() ? "." : csv.parent_path());
   // --resume: the rows go to a journal as they are made, and every frame's state beside it.
   std::unique_ptr<ResumableRun> resumable;
   std::unique_ptr<output::CsvSink> csv_sink;
@@ -54,14 +61,14 @@ int run_simulate(const SimulateOptions& options) {
   const frames::RunStats stats =
       frames::run_frames(run.world, run.clock, sinks, {}, resumable ? resumable->plan() : planned.plan());
   if (resumable) resumable->remove_store();
-  std::string written = "wrote " + csv.string();
+  std::string written = "wrote " + (to_stdout ? std::string("the CSV to standard output") : csv.string());
   if (cache) {
     char text[256];
     std::snprintf(text, sizeof text, "; cached %d states of %.1f kB each in %s", cache->states_written(),
                   static_cast<double>(cache->bytes_per_state()) / 1e3, options.cache_dir.c_str());
     written += text;
   }
-  print_run_summary(run, stats, written);
+  print_run_summary(run, stats, written, to_stdout ? stderr : stdout);
   return 0;
 }
 
@@ -72,7 +79,9 @@ Action register_simulate(CLI::App& parent) {
   CLI::App* command = parent.add_subcommand(
       "simulate", "Run a scene without rendering and write one CSV row per body per frame");
   add_scene_options(*command, options->scene);
-  command->add_option("--csv", options->csv_file, "CSV output file (default: <output.dir>/simulation.csv)")
+  command->add_option("--csv", options->csv_file,
+                      "CSV output file (default: <output.dir>/simulation.csv; - for standard output; a device or "
+                      "FIFO is written through)")
       ->type_name("FILE");
   command->add_option("--cache", options->cache_dir,
                       "Also write the state of every frame to DIR (state_NNNNNN.bin and cache.json), for "

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "core/errors.hpp"
+#include "frames/stop_request.hpp"
 
 namespace app {
 
@@ -13,6 +14,9 @@ int run_reporting_errors(const Action& action) {
   } catch (const softbody::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return softbody::kExitBadInput;
+  } catch (const frames::Interrupted& e) {
+    std::cerr << "interrupted: " << e.what() << " (the outputs hold those frames only)\n";
+    return 128 + e.signal();
   } catch (const softbody::DivergedError& e) {
     std::cerr << "diverged: " << e.what() << "\n";
     return softbody::kExitDiverged;

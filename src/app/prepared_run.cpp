@@ -15,7 +15,12 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
   if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
+  std::vector<int> bodies_per_scene_body;
+  sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body);
+  // A split body is several bodies from here on: one scene body each, so that colours and patterns follow.
+  std::vector<scene::Body> bodies;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) bodies.insert(bodies.end(), static_cast<std::size_t>(bodies_per_scene_body[b]), scene.bodies[b]);
+  scene.bodies = std::move(bodies);
   const bool xpbd = scene.solver.integrator == sim::IntegratorKind::Xpbd;
   if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
     const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
@@ -41,7 +46,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
                   estimate.stable_dt(scene.solver.integrator));
     notes.insert(notes.begin(), note);
   }
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s);
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string());
   const bool adaptive = scene.solver.integrator == sim::IntegratorKind::Rk45;  // chooses its own steps
   if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto && !(xpbd && scene.solver.substeps > 0)) {
     notes.push_back(clock.dt_note);
@@ -50,7 +55,8 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }
 
-void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written) {
+void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written,
+                       std::FILE* out) {
   const sim::Solver& solver = run.scene.solver;
   char steps[160];
   if (solver.integrator == sim::IntegratorKind::Rk45) {
@@ -60,7 +66,7 @@ void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, co
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (%s)", stats.steps, run.clock.dt_s,
                   sim::to_string(solver.integrator).c_str());
   }
-  std::printf("%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(), stats.frames,
+  std::fprintf(out, "%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(), stats.frames,
               steps, run.world.state.x.size(), stats.wall_s,
               static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), what_was_written.c_str());
 }

@@ -1,6 +1,7 @@
 // What every scene command does first: read the scene, plan the frames, build the world, print notes.
 #pragma once
 
+#include <cstdio>
 #include <string>
 
 #include "app/commands.hpp"
@@ -25,6 +26,8 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto = 0);
 
 // One summary line on stdout: frames, steps, dt, integrator, vertices, wall time, steps per second,
 // then `what_was_written`.
-void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written);
+// To standard output, or `out` (standard error when the CSV goes to standard output).
+void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written,
+                       std::FILE* out = stdout);
 
 }  // namespace app

@@ -13,9 +13,16 @@ struct FrameClock {
   std::string dt_note;         // non-empty when the requested dt was rounded down, saying so
 };
 
+// Runs beyond these are refused before they start (InputError naming the key and the limit): a frame
+// index is an int, and 1e6 steps per frame is already 3e7 steps per simulated second at 30 fps.
+inline constexpr int kMaxFrames = 100'000'000;       // frames after frame 0: 38 days at 30 fps
+inline constexpr int kMaxStepsPerFrame = 1'000'000;  // steps per frame interval (fixed-step integrators)
+
 // 1/fps must hold a whole number of steps: a requested dt that does not divide it is rounded down to
 // the next dt that does (never drifting), and `dt_note` reports it.
-FrameClock plan_frames(double duration_s, int fps, double requested_dt_s);
+// A run beyond kMaxFrames or kMaxStepsPerFrame throws softbody::InputError starting with `context` (the
+// scene file) and naming the key and the limit.
+FrameClock plan_frames(double duration_s, int fps, double requested_dt_s, const std::string& context = "");
 
 // xpbd: each frame interval split into `substeps` substeps, dt = (1/fps) / substeps [s] (plan_frames of this dt
 // gives steps_per_frame = substeps).

@@ -1,6 +1,7 @@
 // The frame loop.
 #include "frames/frame_loop.hpp"
 
+#include "frames/stop_request.hpp"
 #include "frames/wall_clock.hpp"
 
 namespace frames {
@@ -41,6 +42,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
     for (FrameSink* sink : sinks) sink->on_frame(index, time_s, world);
     ++stats.frames;
     if (progress) progress(stats.frames, selection.count());
+    throw_if_stop_requested(stats.frames);  // SIGINT / SIGTERM: the frames handed out are complete
   };
   try {
     int current = 0;

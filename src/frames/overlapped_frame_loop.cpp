@@ -4,6 +4,7 @@
 #include <future>
 #include <utility>
 
+#include "frames/stop_request.hpp"
 #include "frames/wall_clock.hpp"
 
 namespace frames {
@@ -40,6 +41,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
           });
       try {
         if (captured) deliver();
+        throw_if_stop_requested(stats.frames);  // SIGINT / SIGTERM: the frames delivered are complete
       } catch (...) {
         stepping.wait();  // the worker must be done with the world before anyone else sees it
         throw;

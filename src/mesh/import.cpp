@@ -1,39 +1,119 @@
-// assimp import: read, triangulate, flatten the node hierarchy, collect triangles.
+// assimp import: refuse what assimp cannot be trusted with, read, triangulate, flatten the node hierarchy,
+// collect triangles with every index and coordinate checked.
 #include "mesh/import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include "core/errors.hpp"
+#include "core/file_kind.hpp"
+#include "mesh/ply_header.hpp"
 
 namespace mesh {
+namespace {
 
-TriMesh import_mesh_file(const std::filesystem::path& file) {
+using softbody::InputError;
+
+// The first `bytes` bytes of a file (fewer when it is shorter).
+std::string head_of(const std::filesystem::path& file, std::uintmax_t bytes) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(static_cast<std::size_t>(bytes), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head;
+}
+
+// What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
+void check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
+  if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
+    throw InputError(words + " (expected a regular mesh file)");
+  }
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError("cannot be read (" + ec.message() + ")");
+  if (bytes > limits.max_file_bytes) {
+    throw InputError("has " + std::to_string(bytes) + " bytes, more than the limit of " +
+                     std::to_string(limits.max_file_bytes) + " (raise it with the scene key limits.max_file_mb)");
+  }
+  constexpr std::uintmax_t kHeadBytes = 64 << 10;  // enough for any PLY or OFF header this loader accepts
+  const std::string head = head_of(file, std::min(bytes, kHeadBytes));
+  // By content or by name: assimp picks its reader by either (and loops on a .ply that has no PLY header).
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (looks_like_ply(head) || extension == ".ply") check_ply_header(head_of(file, bytes), bytes, limits);  // body too
+  if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
+}
+
+// (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)
+void check_vertex(const aiVector3D& p) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const double c = p[static_cast<unsigned>(axis)];
+    if (!std::isfinite(c) || std::abs(c) > kMaxMeshCoordinate) {
+      char text[160];
+      std::snprintf(text, sizeof text, "has a vertex with coordinate %.6g (expected finite coordinates within +-%g)", c,
+                    kMaxMeshCoordinate);
+      throw InputError(text);
+    }
+  }
+}
+
+}  // namespace
+
+TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& limits) {
+  check_before_reading(file, limits);
   Assimp::Importer importer;
   // Points and lines carry no surface: drop them. Normals, UVs and materials are not needed.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
+  // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
+  // (triangulation reads the vertices a polygon's indices name).
+  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
   const aiScene* scene = importer.ReadFile(file.string(), flags);
-  if (scene == nullptr) {
-    throw softbody::InputError("cannot be read as a mesh: " + std::string(importer.GetErrorString()));
-  }
+  if (scene == nullptr) throw InputError("cannot be read as a mesh: " + std::string(importer.GetErrorString()));
   TriMesh mesh;
+  long long vertices = 0, triangles = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    vertices += scene->mMeshes[m]->mNumVertices;
+    triangles += scene->mMeshes[m]->mNumFaces;
+  }
+  if (vertices > limits.max_vertices) {
+    throw InputError("has " + std::to_string(vertices) + " vertices, more than the limit of " +
+                     std::to_string(limits.max_vertices) + " (raise it with the scene key limits.max_vertices)");
+  }
+  if (triangles > limits.max_triangles) {
+    throw InputError("has " + std::to_string(triangles) + " triangles, more than the limit of " +
+                     std::to_string(limits.max_triangles) + " (raise it with the scene key limits.max_triangles)");
+  }
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* part = scene->mMeshes[m];
     const int base = static_cast<int>(mesh.vertices.size());
     for (unsigned v = 0; v < part->mNumVertices; ++v) {
+      check_vertex(part->mVertices[v]);
       const aiVector3D& p = part->mVertices[v];
       mesh.vertices.emplace_back(p.x, p.y, p.z);
     }
     for (unsigned f = 0; f < part->mNumFaces; ++f) {
       const aiFace& face = part->mFaces[f];
       if (face.mNumIndices != 3) continue;
+      for (unsigned k = 0; k < 3; ++k) {
+        // assimp's readers pass indices through unchecked (a negative text index arrives as a huge one).
+        if (face.mIndices[k] >= part->mNumVertices) {
+          throw InputError("has a face whose vertex index " + std::to_string(static_cast<int>(face.mIndices[k])) +
+                           " is outside the " + std::to_string(part->mNumVertices) + " vertices of its mesh");
+        }
+      }
       mesh.triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
                                 base + static_cast<int>(face.mIndices[2])});
     }
   }
-  if (mesh.triangles.empty()) throw softbody::InputError("holds no triangles (only points or lines?)");
+  if (mesh.triangles.empty()) throw InputError("holds no triangles (only points or lines?)");
   return mesh;
 }
 

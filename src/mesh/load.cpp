@@ -1,20 +1,59 @@
 // Generator or file → weld → validate: the closed surface a body is built from.
 #include "mesh/load.hpp"
 
+#include <cstdio>
+
 #include "core/errors.hpp"
 #include "mesh/check.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/import.hpp"
+#include "mesh/parts.hpp"
+#include "mesh/self_intersection.hpp"
 #include "mesh/weld.hpp"
 
 namespace mesh {
+namespace {
 
-LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context) {
+// Notes on a closed mesh that is still suspect: several closed parts (one gas volume for all of them),
+// surfaces that touch at a vertex only, and surfaces that pass through each other.
+void note_suspicious_shapes(const TriMesh& mesh, std::vector<std::string>& notes) {
+  const MeshParts parts = edge_connected_parts(mesh);
+  if (parts.count > 1) {
+    std::vector<int> triangles(static_cast<std::size_t>(parts.count), 0);
+    for (int p : parts.part_of_triangle) ++triangles[static_cast<std::size_t>(p)];
+    std::string sizes;
+    for (std::size_t p = 0; p < triangles.size() && p < 8; ++p) sizes += (p ? ", " : "") + std::to_string(triangles[p]);
+    if (triangles.size() > 8) sizes += ", ...";
+    notes.push_back("holds " + std::to_string(parts.count) + " separate closed parts (" + sizes +
+                    " triangles), simulated as one body whose gas fills all of them as one volume (\"split\": true on the "
+                    "body makes each its own body)");
+  }
+  const std::vector<int> pinched = pinched_vertices(mesh);
+  if (!pinched.empty()) {
+    const Vec3& p = mesh.vertices[static_cast<std::size_t>(pinched.front())];
+    char where[160];
+    std::snprintf(where, sizeof where, " (the first at (%.4g, %.4g, %.4g))", p.x(), p.y(), p.z());
+    notes.push_back("has " + std::to_string(pinched.size()) + " vertices where surfaces touch at that vertex only" +
+                    where + ": the parts there share one vertex and one gas volume");
+  }
+  const SelfIntersections crossing = find_self_intersections(mesh);
+  if (crossing.pairs > 0) {
+    notes.push_back("intersects itself: " + std::to_string(crossing.pairs) + " pairs of triangles cross (the first: " +
+                    std::to_string(crossing.first.first) + " and " + std::to_string(crossing.first.second) +
+                    "), so the gas volume counts the overlap twice or not at all");
+  }
+}
+
+}  // namespace
+
+LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
+                            const MeshLimits& limits) {
   const std::string what = file.empty() ? spec : file.string();
   try {
     LoadedMesh loaded;
-    loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file));
+    loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits));
     validate_closed(loaded.mesh, loaded.notes);
+    if (!file.empty()) note_suspicious_shapes(loaded.mesh, loaded.notes);
     for (std::string& note : loaded.notes) note = context + ": " + what + ": " + note;
     return loaded;
   } catch (const softbody::InputError& e) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_limits.hpp"
 #include "mesh/trimesh.hpp"
 
 namespace mesh {
@@ -16,6 +17,8 @@ struct LoadedMesh {
 
 // `spec` is a generator ("icosphere:3") or, with `file` set, the spec as written in the scene.
 // Throws softbody::InputError whose message starts with `context` (e.g. "scene.json: bodies.0.mesh").
-LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context);
+// A file is read within `limits` (mesh/import.hpp).
+LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
+                            const MeshLimits& limits = {});
 
 }  // namespace mesh

@@ -2,16 +2,31 @@
 #include "mesh/weld.hpp"
 
 #include <cmath>
+#include <string>
 #include <unordered_map>
+
+#include "core/errors.hpp"
 
 namespace mesh {
 namespace {
 
 struct CellHash {
   std::size_t operator()(const std::array<long long, 3>& c) const {
-    return std::hash<long long>()(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+    // Unsigned: the same bits as before for small cells, and no signed overflow for far ones.
+    using U = unsigned long long;
+    return std::hash<U>()(static_cast<U>(c[0]) * 73856093ULL ^ static_cast<U>(c[1]) * 19349663ULL ^
+                          static_cast<U>(c[2]) * 83492791ULL);
   }
 };
+
+// A grid coordinate that llround can take: NaN, infinite and huge quotients are clamped to a far cell
+// (only the hash bucket changes; candidates are still compared by distance, and NaN matches nothing).
+long long cell_coordinate(double quotient) {
+  constexpr double kFarCell = 4.0e18;  // below 2^63 - 1, and +-1 from it stays in range
+  const double q = std::floor(quotient);
+  if (!(q > -kFarCell && q < kFarCell)) return q < 0.0 ? -static_cast<long long>(kFarCell) : static_cast<long long>(kFarCell);
+  return std::llround(q);
+}
 
 }  // namespace
 
@@ -26,14 +41,20 @@ TriMesh weld(const TriMesh& mesh, double relative_tolerance) {
 
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const Triangle& t : mesh.triangles) {
-    for (int i : t) used[i] = true;
+    for (int i : t) {
+      if (i < 0 || static_cast<std::size_t>(i) >= mesh.vertices.size()) {
+        throw softbody::InputError("has a face whose vertex index " + std::to_string(i) + " is outside its " +
+                                   std::to_string(mesh.vertices.size()) + " vertices");
+      }
+      used[static_cast<std::size_t>(i)] = true;
+    }
   }
 
   std::unordered_map<std::array<long long, 3>, std::vector<int>, CellHash> grid;
   auto cell_of = [&](const Vec3& p) {
-    return std::array<long long, 3>{std::llround(std::floor((p.x() - lo.x()) / tolerance)),
-                                    std::llround(std::floor((p.y() - lo.y()) / tolerance)),
-                                    std::llround(std::floor((p.z() - lo.z()) / tolerance))};
+    return std::array<long long, 3>{cell_coordinate((p.x() - lo.x()) / tolerance),
+                                    cell_coordinate((p.y() - lo.y()) / tolerance),
+                                    cell_coordinate((p.z() - lo.z()) / tolerance)};
   };
 
   TriMesh out;

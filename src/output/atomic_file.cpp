@@ -2,6 +2,7 @@
 #include "output/atomic_file.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -51,7 +52,42 @@ int remove_stale_temporaries(const std::filesystem::path& dir) {
   return removed;
 }
 
+int remove_numbered_files(const std::filesystem::path& dir, int last,
+                          const std::function<std::filesystem::path(int)>& name_of) {
+  constexpr int kGap = 1000;  // an earlier run's frames stop at its end: past 1000 missing in a row, none are left
+  int removed = 0;
+  for (int index = 0, missing = 0; index <= last && missing < kGap; ++index) {
+    std::error_code ec;
+    const bool was_there = std::filesystem::remove(dir / name_of(index), ec);
+    removed += was_there ? 1 : 0;
+    missing = was_there ? 0 : missing + 1;
+  }
+  return removed;
+}
+
+namespace {
+
+// Standard output or an existing non-regular file (a device, a FIFO): written in place, never renamed onto.
+void write_through(const std::filesystem::path& path, std::string_view bytes) {
+  const bool to_stdout = path == "-";
+  std::FILE* out = to_stdout ? stdout : std::fopen(path.c_str(), "wb");
+  if (out == nullptr) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+  const bool flushed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
+  if (!written || !flushed) throw std::runtime_error((to_stdout ? std::string("standard output") : path.string()) +
+                                                     ": write failed (" + std::strerror(errno) + ")");
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  std::error_code status_ec;
+  const auto type = std::filesystem::status(path, status_ec).type();
+  if (path == "-" || (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::regular &&
+                      type != std::filesystem::file_type::directory && type != std::filesystem::file_type::none)) {
+    write_through(path, bytes);
+    return;
+  }
   if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path());
   const std::filesystem::path temporary = temporary_path_for(path);
   {

@@ -2,13 +2,21 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string_view>
 
 namespace output {
 
 // Writes `bytes` to `path` atomically (temporary file in the same folder, then rename). Creates the
-// folder if needed. Throws std::runtime_error naming the path on failure.
+// folder if needed. Throws std::runtime_error naming the path on failure. A path that exists and is not a
+// regular file (/dev/null, a FIFO, a terminal) is written through, never replaced; "-" is standard output.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Removes the files `name_of(0)` .. `name_of(last)` in `dir` that exist (the frames of an earlier run, before
+// a new run writes its own: a run that then fails leaves no mix of two runs), stopping early after 1000
+// indices in a row with no file. Returns how many it removed.
+int remove_numbered_files(const std::filesystem::path& dir, int last,
+                          const std::function<std::filesystem::path(int)>& name_of);
 
 // The temporary name used for `path` (same folder, so that the rename is atomic): ".NAME.tmpPID".
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);

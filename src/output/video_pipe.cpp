@@ -71,7 +71,14 @@ VideoPipe::VideoPipe(std::filesystem::path path, int width_px, int height_px, in
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
-  const int status = posix_spawnp(&ffmpeg_, "ffmpeg", &actions, nullptr, argv.data(), environ);
+  // ffmpeg in a process group of its own: a Ctrl-C (SIGINT to the terminal's foreground group) reaches softbody
+  // only, which ends the run after the frame in progress and then drops or finishes the video itself.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  const int status = posix_spawnp(&ffmpeg_, "ffmpeg", &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   ::close(ends[0]);
   if (status != 0) {

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
+#include "scene/json_text.hpp"
 
 namespace scene {
 namespace {
@@ -29,10 +30,9 @@ bool is_index(const std::string& part) {
   return !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
 }
 
-json parse_value(const std::string& text) {
-  json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (value.is_discarded()) return json(text);  // a bare word such as euler
-  return value;
+json parse_value(const std::string& assignment, const std::string& text) {
+  if (!json::accept(text)) return json(text);  // a bare word such as euler (or 1e400: refused as not a number)
+  return parse_json_limited(text, "--set " + assignment, /*comments=*/false);  // nesting limited
 }
 
 }  // namespace
@@ -50,7 +50,8 @@ void apply_override(json& document, const std::string& assignment) {
     walked += (walked.empty() ? "" : ".") + part;
     if (node->is_array()) {
       if (!is_index(part)) fail(assignment, walked + ": expected an array index, got '" + part + "'");
-      const std::size_t index = std::stoul(part);
+      // At most 9 digits before converting: no index that large can exist (and stoul could overflow).
+      const std::size_t index = part.size() > 9 ? node->size() : std::stoul(part);
       if (index >= node->size()) {
         fail(assignment, walked + ": index out of range (the array has " +
                              std::to_string(node->size()) + " elements)");
@@ -62,7 +63,7 @@ void apply_override(json& document, const std::string& assignment) {
       node = &(*node)[part];
     }
   }
-  *node = parse_value(assignment.substr(eq + 1));
+  *node = parse_value(assignment, assignment.substr(eq + 1));
 }
 
 }  // namespace scene

@@ -9,6 +9,7 @@
 
 #include "core/gl_backend.hpp"
 #include "core/vec.hpp"
+#include "mesh/mesh_limits.hpp"
 #include "sim/intent.hpp"
 #include "sim/settings.hpp"
 
@@ -30,6 +31,7 @@ struct Body {
   double stiffness_N_per_m = 1000.0; // each edge spring (Hooke)
   double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
+  bool split = false;                // "split": each separate closed part of the mesh becomes its own body
   Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...}
                            // instead of numbers, resolved against the mesh by sim/intent.hpp
@@ -78,6 +80,7 @@ struct Scene {
   sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
   std::optional<sim::Floor> floor;     // no floor when absent
+  mesh::MeshLimits limits;             // "limits": the most a mesh file may hold (raisable)
   std::vector<Body> bodies;
   sim::BodyContact collisions;         // between bodies, when there are several
   RenderSettings render;

@@ -11,7 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
+#include "core/file_kind.hpp"
 #include "mesh/generators.hpp"
+#include "output/frame_pattern.hpp"
+#include "scene/json_text.hpp"
 #include "scene/overrides.hpp"
 
 namespace scene {
@@ -20,11 +23,10 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::string describe(const json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return value.type_name() + std::string(" ") + text;
-}
+std::string describe(const json& value) { return describe_json(value); }
+
+// Scene files larger than this are refused before they are read (the largest scene here is 2 kB).
+constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;
 
 // A requirement on a number: a predicate and the words that say it ("> 0").
 struct Range {
@@ -35,6 +37,12 @@ const Range kAny{[](double) { return true; }, ""};
 const Range kPositive{[](double x) { return x > 0.0; }, " > 0"};
 const Range kNonNegative{[](double x) { return x >= 0.0; }, " >= 0"};
 const Range kUnitInterval{[](double x) { return x >= 0.0 && x <= 1.0; }, " in [0, 1]"};
+// Positions, velocities and accelerations far beyond any scene and far below where their products (x·x in
+// volumes, v·dt, k·x) overflow a double: |value| <= 1e6 (m, m/s, m/s²).
+const Range kWorldMagnitude{[](double x) { return std::abs(x) <= 1e6; }, " within +-1e6"};
+// A body's uniform scale: 1e-6 to 1e6 (a mesh in millimetres takes 1e-3; smaller or larger overflow the
+// stability estimate's products or need steps no run can take).
+const Range kScaleRange{[](double x) { return x >= 1e-6 && x <= 1e6; }, " in [1e-6, 1e6]"};
 
 // One JSON object being read: knows its key path, marks the keys it reads, rejects the others.
 class ObjectReader {
@@ -104,12 +112,12 @@ class ObjectReader {
     fail(child(key), words, &at(key));
   }
 
-  Vec3 vec3(const std::string& key, const Vec3& fallback) {
+  Vec3 vec3(const std::string& key, const Vec3& fallback, const Range& range = kWorldMagnitude) {
     if (!has(key)) return fallback;
     const json& value = at(key);
     if (!value.is_array() || value.size() != 3) fail(child(key), "expected an array of 3 numbers", &value);
     Vec3 v;
-    for (int i = 0; i < 3; ++i) v[i] = checked_number(value[i], child(key) + "." + std::to_string(i), kAny);
+    for (int i = 0; i < 3; ++i) v[i] = checked_number(value[i], child(key) + "." + std::to_string(i), range);
     return v;
   }
 
@@ -201,7 +209,7 @@ std::optional<sim::Floor> read_floor(ObjectReader& top) {
   if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
   ObjectReader r(top.at("floor"), "floor", top.file());
   sim::Floor floor;
-  floor.height_m = r.number("height", floor.height_m);
+  floor.height_m = r.number("height", floor.height_m, kWorldMagnitude);
   floor.contact = r.choice<sim::FloorContact>(
       "contact", floor.contact,
       {{"paper", sim::FloorContact::Paper}, {"friction", sim::FloorContact::Friction}, {"smooth", sim::FloorContact::Smooth}});
@@ -221,10 +229,9 @@ std::string read_mesh_spec(ObjectReader& r, Body& body) {
     return spec;
   }
   const fs::path file = r.file().parent_path() / spec;
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) {
-    r.fail(r.child("mesh"), "mesh file " + file.string() +
-                                " does not exist (expected a mesh file path relative to the scene, "
+  if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
+    r.fail(r.child("mesh"), "mesh file " + file.string() + " " + words +
+                                " (expected a mesh file path relative to the scene, "
                                 "or a generator: icosphere:L, cube:N)",
            nullptr);
   }
@@ -281,12 +288,13 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   Body body;
   body.mesh = read_mesh_spec(r, body);
   body.position_m = r.vec3("position", body.position_m);
-  body.scale = r.number("scale", body.scale, kPositive);
+  body.scale = r.number("scale", body.scale, kScaleRange);
   body.velocity_m_per_s = r.vec3("velocity", body.velocity_m_per_s);
   body.mass_kg = r.number("mass", body.mass_kg, kPositive);
   read_stiffness(r, body);
   read_damping(r, body);
   read_pressure(r, body);
+  body.split = r.boolean("split", body.split);
   body.color = r.color("color", body.color);
   body.pattern = r.choice<Pattern>("pattern", body.pattern,
                                    {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
@@ -393,6 +401,20 @@ Light read_light(ObjectReader& top) {
   return light;
 }
 
+// "limits": what a mesh file may hold, raised for large meshes (mesh/mesh_limits.hpp).
+mesh::MeshLimits read_limits(ObjectReader& top) {
+  mesh::MeshLimits limits;
+  if (!top.has("limits")) return limits;
+  ObjectReader r(top.at("limits"), "limits", top.file());
+  constexpr int kMost = 2'000'000'000;
+  limits.max_triangles = r.integer("max_triangles", static_cast<int>(limits.max_triangles), 1, kMost);
+  limits.max_vertices = r.integer("max_vertices", static_cast<int>(limits.max_vertices), 1, kMost);
+  const int megabytes = r.integer("max_file_mb", static_cast<int>(limits.max_file_bytes >> 20), 1, 1 << 20);
+  limits.max_file_bytes = static_cast<std::uintmax_t>(megabytes) << 20;
+  r.reject_unknown();
+  return limits;
+}
+
 Output read_output(ObjectReader& top, const std::string& name) {
   Output output;
   output.dir = fs::path("out") / name;
@@ -400,6 +422,8 @@ Output read_output(ObjectReader& top, const std::string& name) {
   ObjectReader r(top.at("output"), "output", top.file());
   output.dir = r.string("dir", output.dir.string());
   output.pattern = r.string("pattern", output.pattern);
+  // Checked for every command, not only render: a scene is valid or not whatever is done with it.
+  output::check_frame_pattern(output.pattern, top.file().string());
   r.reject_unknown();
   return output;
 }
@@ -407,11 +431,7 @@ Output read_output(ObjectReader& top, const std::string& name) {
 }  // namespace
 
 json parse_scene_text(const std::string& text, const fs::path& file) {
-  try {
-    return json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    throw softbody::InputError(file.string() + ": not valid JSON: " + e.what());
-  }
+  return parse_json_limited(text, file.string(), /*comments=*/true);
 }
 
 Scene scene_from_json(const json& document, const fs::path& file) {
@@ -419,12 +439,16 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   Scene s;
   s.source = file;
   s.name = top.string("name", fs::path(file).stem().string());
-  if (s.name.find_first_of("/\\") != std::string::npos) top.fail("name", "expected a name without slashes", &top.at("name"));
+  if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..") {
+    top.fail("name", "expected a name without slashes, other than \".\" and \"..\" (it names the folder out/NAME)",
+             &top.at("name"));
+  }
   s.duration_s = top.number("duration", s.duration_s, kPositive);
   s.fps = top.integer("fps", s.fps, 1, 1000);
   s.solver = read_solver(top);
   s.gravity_m_per_s2 = top.vec3("gravity", s.gravity_m_per_s2);
   s.floor = read_floor(top);
+  s.limits = read_limits(top);
   s.bodies = read_bodies(top);
   s.collisions = read_collisions(top);
   refuse_unsupported_combinations(top, s);
@@ -433,13 +457,16 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.light = read_light(top);
   s.output = read_output(top, s.name);
   json simulation = document;
-  for (const char* key : {"name", "render", "camera", "light", "output"}) simulation.erase(key);
-  s.simulation_json = simulation.dump();
+  for (const char* key : {"name", "render", "camera", "light", "output", "limits"}) simulation.erase(key);
+  // Invalid UTF-8 (possible in --set values, which are taken as bytes) is replaced (U+FFFD), not thrown about;
+  // valid text dumps exactly as before.
+  s.simulation_json = simulation.dump(-1, ' ', false, json::error_handler_t::replace);
   top.reject_unknown();
   return s;
 }
 
 Scene load_scene(const fs::path& file, const std::vector<std::string>& overrides) {
+  softbody::require_regular_file(file, kMaxSceneBytes, "scene file", "");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw softbody::InputError(file.string() + ": cannot open the scene file");
   std::stringstream text;

@@ -1,10 +1,88 @@
 // Building the world of a scene.
 #include "setup/build_world.hpp"
 
+#include <cstdio>
+
+#include "core/errors.hpp"
+#include "mesh/check.hpp"
 #include "mesh/load.hpp"
+#include "mesh/parts.hpp"
 #include "sim/intent.hpp"
 
 namespace setup {
+namespace {
+
+// A placed body lies within this distance of the origin [m] and is at least this large [m] (its bounding
+// box's diagonal): beyond, squares and products of positions lose all precision or overflow, and the
+// stable step of a micrometre body needs more steps per frame than any run takes.
+constexpr double kMaxReach_m = 1e7;
+constexpr double kMinSize_m = 1e-6;
+
+void check_placed(const std::vector<softbody::Vec3>& x, const std::string& key_path) {
+  softbody::Vec3 lo = x.front(), hi = x.front();
+  double reach = 0.0;
+  for (const softbody::Vec3& p : x) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+    reach = std::max(reach, p.cwiseAbs().maxCoeff());
+  }
+  const double size = (hi - lo).norm();
+  char text[320];
+  if (!(reach <= kMaxReach_m)) {
+    std::snprintf(text, sizeof text, "%s: the placed mesh reaches %.3g m from the origin (position + scale x mesh "
+                  "coordinates), beyond the limit of %.0e m: expected a smaller scale or position", key_path.c_str(), reach, kMaxReach_m);
+    throw softbody::InputError(text);
+  }
+  if (!(size >= kMinSize_m)) {
+    std::snprintf(text, sizeof text, "%s: the placed mesh is %.3g m across (scale x the mesh's size), below the limit "
+                  "of %.0e m: expected a larger scale", key_path.c_str(), size, kMinSize_m);
+    throw softbody::InputError(text);
+  }
+}
+
+double surface_area(const mesh::TriMesh& m) {
+  double area = 0.0;  // Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²]
+  for (const softbody::Triangle& t : m.triangles) {
+    const auto& a = m.vertices[static_cast<std::size_t>(t[0])];
+    area += 0.5 * (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
+  }
+  return area;
+}
+
+// The meshes a body's mesh becomes: itself, or with "split" one per separate closed part (each validated:
+// a part may be wound inside out on its own), with their shares of the body's mass and nRT.
+struct BodyPart {
+  mesh::TriMesh mesh;
+  double mass_share = 1.0;      // by surface area, as the mass is lumped to the vertices by area
+  double pressure_share = 1.0;  // by enclosed volume: nRT_i / V_i = nRT / V, the same pressure in every part
+};
+
+std::vector<BodyPart> parts_of(mesh::LoadedMesh& loaded, const scene::Body& spec, const std::string& key_path,
+                               std::vector<std::string>& notes) {
+  if (!spec.split) return {BodyPart{std::move(loaded.mesh)}};
+  const mesh::MeshParts parts = mesh::edge_connected_parts(loaded.mesh);
+  if (parts.count < 2) {
+    notes.push_back(key_path + ".split: the mesh is one connected part: nothing to split");
+    return {BodyPart{std::move(loaded.mesh)}};
+  }
+  std::vector<BodyPart> bodies;
+  double area = 0.0, volume = 0.0;
+  for (mesh::TriMesh& part : mesh::split_parts(loaded.mesh, parts)) {
+    mesh::validate_closed(part, notes);
+    bodies.push_back({std::move(part)});
+    area += surface_area(bodies.back().mesh);
+    volume += mesh::signed_volume(bodies.back().mesh);
+  }
+  for (BodyPart& part : bodies) {
+    part.mass_share = surface_area(part.mesh) / area;
+    part.pressure_share = mesh::signed_volume(part.mesh) / volume;
+  }
+  notes.push_back(key_path + ".split: the mesh's " + std::to_string(parts.count) + " separate closed parts are " +
+                  std::to_string(parts.count) + " bodies");
+  return bodies;
+}
+
+}  // namespace
 
 std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::Body& spec) {
   std::vector<softbody::Vec3> x;
@@ -13,20 +91,29 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
   return x;
 }
 
-sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes) {
+sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
+                       std::vector<int>* bodies_per_scene_body) {
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, scene.solver);
   model.body_contact = scene.collisions;
   sim::State state = sim::initial_state(model);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
-    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh");
-    notes.insert(notes.end(), loaded.notes.begin(), loaded.notes.end());
-    const std::vector<softbody::Vec3> x0 = place_mesh(loaded.mesh, spec);
-    sim::Body body = sim::build_body(x0, loaded.mesh.triangles, spec.mass_kg);
-    const sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J};
-    body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path);
-    sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
+    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits);
+    for (std::string& note : loaded.notes) {
+      if (spec.split && note.find("separate closed parts") != std::string::npos) continue;  // split below
+      notes.push_back(std::move(note));
+    }
+    const std::vector<BodyPart> parts = parts_of(loaded, spec, key_path, notes);
+    for (const BodyPart& part : parts) {
+      const std::vector<softbody::Vec3> x0 = place_mesh(part.mesh, spec);
+      check_placed(x0, key_path);
+      sim::Body body = sim::build_body(x0, part.mesh.triangles, spec.mass_kg * part.mass_share);
+      const sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
+      body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path);
+      sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
+    }
+    if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));
   }
   return sim::World(std::move(model), std::move(state));
 }

@@ -16,6 +16,10 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
 
 // The world a scene describes. Notes on what was fixed while loading (e.g. a flipped winding) are appended
 // to `notes`. Throws softbody::InputError naming the file and key when a mesh or an intent cannot be used.
-sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes);
+// A body with "split": true whose mesh holds several separate closed parts becomes one body per part (in
+// the order of their first triangle), its mass shared by area and its nRT by volume (the same gas pressure
+// in every part); `bodies_per_scene_body`, when given, receives how many bodies each scene body became.
+sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
+                       std::vector<int>* bodies_per_scene_body = nullptr);
 
 }  // namespace setup

@@ -159,6 +159,34 @@ TEST(RenderCommand, DivergedRunKeepsItsValidFramesAndWritesNoVideo) {
   }
 }
 
+// SIGINT (as Ctrl-C sends it) during a long render: exit 130, the message gives the number of complete
+// frames, exactly those frames are there and each decodes; no video, figure or temporary is left. Without a
+// figure the frames are drawn from the start; with one, the signal comes during the silent pass that finds
+// the figure's moments (a 10,000 s run), before any frame is drawn: 0 complete.
+TEST(RenderCommand, SigintKeepsOnlyCompleteFramesAndSaysHowMany) {
+  for (const bool with_figure : {false, true}) {
+  const std::filesystem::path out = render_test::fresh_output_dir(with_figure ? "cli_sigint_pass" : "cli_sigint");
+  const std::string figure = with_figure ? "" : "--set render.figure_frames=0 ";
+  const CommandResult result = run_shell("timeout --preserve-status -s INT 4 " +
+                                         render_command(out, figure + "--set duration=10000 --video " + quoted(out / "v.mp4")));
+  EXPECT_EQ(result.exit_status, 130) << result.output;
+  const std::size_t at = result.output.find("interrupted: SIGINT: stopped after ");
+  ASSERT_NE(at, std::string::npos) << result.output;
+  const int frames = std::stoi(result.output.substr(at + 35));
+  if (with_figure) EXPECT_EQ(frames, 0) << result.output; else EXPECT_GT(frames, 0) << result.output;
+  EXPECT_EQ(count_frame_files(out), frames);
+  for (const auto& entry : std::filesystem::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.rfind("frame_", 0), 0u) << "left behind: " << name;
+  }
+  for (int i = 0; i < frames; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    EXPECT_NO_THROW(output::read_png(out / name)) << name;
+  }
+  }
+}
+
 TEST(RenderCommand, RerunRemovesFramesLeftByALongerRun) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_stale");
   ASSERT_TRUE(std::filesystem::copy_file(std::filesystem::path(SOFTBODY_GOLDEN_DIR) / "ball_in_the_air.png",

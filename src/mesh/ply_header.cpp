@@ -1,0 +1,320 @@
+// PLY and OFF header checks, done on the file's first bytes before assimp sees the file.
+#include "mesh/ply_header.hpp"
+
+#include <array>
+#include <cctype>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+
+namespace mesh {
+namespace {
+
+using softbody::InputError;
+
+// The header's lines: `head` split at '\n' (a '\r' before it dropped), into whitespace-separated words.
+std::vector<std::string_view> words_of(std::string_view line) {
+  std::vector<std::string_view> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i > start) words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+// A decimal count of at most 18 digits, or -1.
+long long count_of(std::string_view word) {
+  if (word.empty() || word.size() > 18) return -1;
+  long long n = 0;
+  for (char c : word) {
+    if (c < '0' || c > '9') return -1;
+    n = 10 * n + (c - '0');
+  }
+  return n;
+}
+
+// Bytes of a PLY scalar type, 0 for an unknown name; `integer` says whether it may count a list.
+int type_bytes(std::string_view type, bool* integer) {
+  struct Type {
+    std::string_view name;
+    int bytes;
+    bool integer;
+  };
+  static constexpr std::array<Type, 16> kTypes{{{"char", 1, true},    {"uchar", 1, true},   {"short", 2, true},
+                                                {"ushort", 2, true},  {"int", 4, true},     {"uint", 4, true},
+                                                {"float", 4, false},  {"double", 8, false}, {"int8", 1, true},
+                                                {"uint8", 1, true},   {"int16", 2, true},   {"uint16", 2, true},
+                                                {"int32", 4, true},   {"uint32", 4, true},  {"float32", 4, false},
+                                                {"float64", 8, false}}};
+  for (const Type& t : kTypes) {
+    if (t.name == type) {
+      if (integer) *integer = t.integer;
+      return t.bytes;
+    }
+  }
+  return 0;
+}
+
+struct Property {
+  int bytes = 0;        // a scalar's bytes, or a list item's
+  int count_bytes = 0;  // a list's count: 1, 2 or 4 bytes; 0 for a scalar
+  bool vertex_indices = false;  // a face's vertex_index (or vertex_indices) list
+};
+
+struct Element {
+  std::string name;
+  long long count = 0;
+  long long row_min_bytes = 0;  // binary: scalars plus list counts (a list may be empty)
+  long long properties = 0;
+  std::vector<Property> layout;
+};
+
+// An unsigned list count of `bytes` bytes at `p` (a negative signed count reads as huge: refused as such).
+unsigned long long list_count(const unsigned char* p, int bytes, bool big_endian) {
+  unsigned long long n = 0;
+  for (int i = 0; i < bytes; ++i) n = (n << 8) | p[big_endian ? i : bytes - 1 - i];
+  return n;
+}
+
+// Walks a binary body row by row: every list's count must fit in the bytes that remain (assimp reads past
+// the end of the file otherwise).
+void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian) {
+  std::size_t at = 0;
+  for (const Element& e : elements) {
+    for (long long row = 0; row < e.count; ++row) {
+      for (const Property& p : e.layout) {
+        const std::size_t left = body.size() - at;
+        if (p.count_bytes == 0) {
+          if (left < static_cast<std::size_t>(p.bytes)) {
+            throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+          }
+          at += static_cast<std::size_t>(p.bytes);
+          continue;
+        }
+        if (left < static_cast<std::size_t>(p.count_bytes)) {
+          throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+        }
+        const unsigned long long n =
+            list_count(reinterpret_cast<const unsigned char*>(body.data() + at), p.count_bytes, big_endian);
+        at += static_cast<std::size_t>(p.count_bytes);
+        if (p.vertex_indices && n < 3) {
+          throw InputError("has face " + std::to_string(row) + " of " + std::to_string(n) + " vertices (expected 3 or more)");
+        }
+        if (n > (body.size() - at) / static_cast<std::size_t>(p.bytes)) {
+          throw InputError("has " + e.name + " " + std::to_string(row) + " with a list of " + std::to_string(n) +
+                           " items, more than the rest of the file holds");
+        }
+        at += static_cast<std::size_t>(n) * static_cast<std::size_t>(p.bytes);
+      }
+    }
+  }
+}
+
+void check_counts(const std::string& what, long long count, long long limit, const char* limit_key) {
+  if (count > limit) {
+    throw InputError("announces " + std::to_string(count) + " " + what + ", more than the limit of " +
+                     std::to_string(limit) + " (raise it with the scene key limits." + limit_key + ")");
+  }
+}
+
+void check_body_size(std::uintmax_t body_bytes, long double needed_bytes, const std::string& announced) {
+  if (static_cast<long double>(body_bytes) < needed_bytes) {
+    throw InputError("is too short for its header: the elements it announces (" + announced + ") need at least " +
+                     std::to_string(static_cast<unsigned long long>(needed_bytes)) + " bytes, the file has " +
+                     std::to_string(body_bytes) + " after its header");
+  }
+}
+
+// Where the line that is exactly "end_header" starts (a comment may contain the word), or npos.
+std::size_t end_header_line(std::string_view head) {
+  for (std::size_t start = 0; start < head.size();) {
+    const std::size_t end = head.find('\n', start);
+    const std::vector<std::string_view> words = words_of(head.substr(start, end - start));
+    if (words.size() == 1 && words[0] == "end_header") return start;
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return std::string_view::npos;
+}
+
+// A number as PLY text holds it: an optional sign, digits, '.', an exponent (and inf/nan, which are refused
+// later as coordinates).
+bool is_number_word(std::string_view word) {
+  if (word.empty() || word.size() > 64) return false;
+  const std::string text(word);
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
+// Walks an ASCII body line by line, as assimp reads it (one element per line): every line holds exactly the
+// values its element announces, every value a number, every list count a whole number, every face of at
+// least 3 vertices. (A row split over two lines, or a face count that is not a number, made assimp's
+// triangulation abort on an ai_assert.)
+void check_ascii_body(std::string_view body, const std::vector<Element>& elements) {
+  std::size_t at = 0;
+  for (const Element& e : elements) {
+    for (long long row = 0; row < e.count; ++row) {
+      auto bad = [&](const std::string& what) {
+        throw InputError("has " + e.name + " " + std::to_string(row) + " with " + what);
+      };
+      if (at >= body.size()) throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+      const std::size_t end = std::min(body.find('\n', at), body.size());
+      const std::vector<std::string_view> words = words_of(body.substr(at, end - at));
+      at = end + 1;
+      std::size_t w = 0;
+      for (const Property& p : e.layout) {
+        if (w >= words.size()) bad("fewer values on its line than its header announces");
+        const std::string_view word = words[w++];
+        if (p.count_bytes == 0) {
+          if (!is_number_word(word)) bad("a value that is not a number: \"" + std::string(word.substr(0, 20)) + "\"");
+          continue;
+        }
+        const long long n = count_of(word);
+        if (n < 0) bad("a list count that is not a whole number: \"" + std::string(word.substr(0, 20)) + "\"");
+        if (p.vertex_indices && n < 3) bad("a face of " + std::to_string(n) + " vertices (expected 3 or more)");
+        if (n > static_cast<long long>(words.size() - w)) bad("a list of " + std::to_string(n) + " items, more than its line holds");
+        for (long long i = 0; i < n; ++i) {
+          if (!is_number_word(words[w++])) bad("a list item that is not a number");
+        }
+      }
+      if (w != words.size()) bad("more values on its line than its header announces");
+    }
+  }
+}
+
+}  // namespace
+
+bool looks_like_ply(std::string_view head) { return head.substr(0, 3) == "ply"; }
+
+void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits) {
+  const std::size_t end = end_header_line(head);
+  if (end == std::string_view::npos) throw InputError("is a PLY file without an end_header line in its first " +
+                                                      std::to_string(head.size()) + " bytes");
+  std::size_t header_bytes = head.find('\n', end);
+  header_bytes = header_bytes == std::string_view::npos ? head.size() : header_bytes + 1;
+  std::string format;
+  std::vector<Element> elements;
+  std::size_t line_start = 0;
+  int line_number = 0;
+  while (line_start < end) {
+    std::size_t line_end = head.find('\n', line_start);
+    const std::vector<std::string_view> words = words_of(head.substr(line_start, line_end - line_start));
+    line_start = line_end + 1;
+    ++line_number;
+    auto bad = [&](const std::string& what) {
+      throw InputError("has a malformed PLY header (line " + std::to_string(line_number) + ": " + what + ")");
+    };
+    if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
+    if (line_number == 1) {
+      if (words.size() != 1 || words[0] != "ply") bad("expected \"ply\"");
+    } else if (words[0] == "format") {
+      if (words.size() != 3 || words[2] != "1.0" ||
+          (words[1] != "ascii" && words[1] != "binary_little_endian" && words[1] != "binary_big_endian")) {
+        bad("expected format ascii|binary_little_endian|binary_big_endian 1.0");
+      }
+      format = std::string(words[1]);
+    } else if (words[0] == "element") {
+      if (words.size() != 3 || count_of(words[2]) < 0) bad("expected element NAME COUNT with a decimal COUNT");
+      elements.push_back({std::string(words[1]), count_of(words[2]), 0, 0, {}});
+    } else if (words[0] == "property") {
+      if (elements.empty()) bad("a property before any element");
+      Element& element = elements.back();
+      bool integer = false;
+      if (words.size() == 5 && words[1] == "list") {
+        const int count_bytes = type_bytes(words[2], &integer);
+        if (count_bytes == 0 || !integer) bad("expected property list COUNT_TYPE ITEM_TYPE NAME with an integer COUNT_TYPE");
+        const int item_bytes = type_bytes(words[3], nullptr);
+        if (item_bytes == 0) bad("unknown item type \"" + std::string(words[3]) + "\"");
+        element.row_min_bytes += count_bytes;
+        element.layout.push_back({item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices"});
+      } else if (words.size() == 3) {
+        const int bytes = type_bytes(words[1], &integer);
+        if (bytes == 0) bad("unknown property type \"" + std::string(words[1]) + "\"");
+        element.row_min_bytes += bytes;
+        element.layout.push_back({bytes, 0, false});
+      } else {
+        bad("expected property TYPE NAME or property list COUNT_TYPE ITEM_TYPE NAME");
+      }
+      ++element.properties;
+    } else {
+      bad("unknown keyword \"" + std::string(words[0]) + "\"");
+    }
+    if (line_end == std::string_view::npos) break;
+  }
+  if (format.empty()) throw InputError("has a malformed PLY header (no format line)");
+  long double needed = 0.0L;
+  std::string announced;
+  for (const Element& e : elements) {
+    if (e.properties == 0 && e.count > 0) throw InputError("has a malformed PLY header (element " + e.name + " has no properties)");
+    if (e.name == "vertex") {
+      check_counts("vertices", e.count, limits.max_vertices, "max_vertices");
+    } else if (e.name == "face") {
+      check_counts("faces", e.count, limits.max_triangles, "max_triangles");
+    } else {
+      check_counts("\"" + e.name + "\" elements", e.count, limits.max_vertices, "max_vertices");
+    }
+    // ASCII: every value is at least one character and a separator; binary: the scalars' bytes.
+    const long double row = format == "ascii" ? 2.0L * static_cast<long double>(e.properties)
+                                              : static_cast<long double>(e.row_min_bytes);
+    needed += row * static_cast<long double>(e.count);
+    if (e.count > 0) announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " \"" + e.name + "\"";
+  }
+  if (format == "ascii") needed -= 1.0L;  // the last value needs no separator after it
+  const std::uintmax_t body = file_bytes > header_bytes ? file_bytes - header_bytes : 0;
+  if (needed > 0.0L) check_body_size(body, needed, announced);
+  if (head.size() < file_bytes) throw InputError("is a PLY file that could not be read whole");
+  if (format == "ascii") {
+    check_ascii_body(head.substr(header_bytes), elements);
+  } else {
+    check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian");
+  }
+}
+
+bool looks_like_off(std::string_view head) {
+  std::size_t i = 0;
+  while (i < head.size() && std::isupper(static_cast<unsigned char>(head[i]))) ++i;
+  if (i < 3 || head.substr(i - 3, 3) != "OFF") return false;
+  return i < head.size() && std::isspace(static_cast<unsigned char>(head[i]));
+}
+
+void check_off_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits) {
+  // "OFF" (optional) then the vertex, face and edge counts, '#' comments skipped.
+  std::vector<long long> counts;
+  std::size_t i = 0;
+  if (looks_like_off(head)) {
+    while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  }
+  while (i < head.size() && counts.size() < 2) {
+    const char c = head[i];
+    if (c == '#') {
+      while (i < head.size() && head[i] != '\n') ++i;
+      continue;
+    }
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+    const long long n = count_of(head.substr(start, i - start));
+    if (n < 0) throw InputError("has a malformed OFF header (expected decimal vertex and face counts)");
+    counts.push_back(n);
+  }
+  if (counts.size() < 2) return;  // too short to say: assimp reports it
+  check_counts("vertices", counts[0], limits.max_vertices, "max_vertices");
+  check_counts("faces", counts[1], limits.max_triangles, "max_triangles");
+  // Each vertex is at least "0 0 0\n" (6 bytes), each face at least its count and a separator (2 bytes).
+  const long double needed = 6.0L * static_cast<long double>(counts[0]) + 2.0L * static_cast<long double>(counts[1]) - 1.0L;
+  const std::uintmax_t body = file_bytes > i ? file_bytes - i : 0;
+  if (needed > 0.0L) {
+    check_body_size(body, needed, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces");
+  }
+}
+
+}  // namespace mesh

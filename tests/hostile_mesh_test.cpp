@@ -1,0 +1,212 @@
+// Hostile and broken mesh files (tests/data/hostile/): every one refused with a message that says what is
+// wrong, before any out-of-bounds read, endless loop or huge allocation (the files crash or hang assimp or
+// the welder when passed through unchecked).
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "mesh/load.hpp"
+#include "mesh/ply_header.hpp"
+#include "mesh/self_intersection.hpp"
+#include "mesh/weld.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using testing_support::data_path;
+
+std::string load_error(const std::filesystem::path& file, const mesh::MeshLimits& limits = {}) {
+  try {
+    mesh::load_closed_mesh(file.filename().string(), file, "ctx", limits);
+  } catch (const softbody::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct HostileMesh {
+  const char* file;
+  const char* message;  // part of the one-line message
+};
+
+class HostileMeshFile : public ::testing::TestWithParam<HostileMesh> {};
+
+TEST_P(HostileMeshFile, IsRefusedWithAMessageThatSaysWhy) {
+  const std::string error = load_error(data_path(std::string("hostile/") + GetParam().file));
+  EXPECT_EQ(error.rfind("ctx: mesh ", 0), 0u) << error;
+  EXPECT_NE(error.find(GetParam().message), std::string::npos) << error;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, HostileMeshFile,
+    ::testing::Values(
+        // assimp's PLY reader passes face indices through: past the vertices (binary) and negative (text).
+        HostileMesh{"ply_binary_index_past_end.ply", "index"},
+        HostileMesh{"ply_text_negative_index.ply", "index"},
+        HostileMesh{"obj_index_past_end.obj", "index out of range"},
+        // a header that announces two billion vertices (assimp reserves them), and one without end_header
+        // (assimp's reader never returns), a list count that runs past the end of a binary file.
+        HostileMesh{"ply_two_billion_vertices.ply", "announces 2000000000 vertices, more than the limit of 2000000"},
+        HostileMesh{"ply_without_end_header.ply", "without an end_header line"},
+        HostileMesh{"ply_binary_list_past_end.ply", "with a list of 255 items, more than the rest of the file holds"},
+        HostileMesh{"off_two_billion_vertices.off", "announces 2000000000 vertices"},
+        // found by fuzz_mesh_ply_text: a face count "&" made assimp's triangulation abort (ai_assert).
+        // found by fuzz_mesh_ply_text: "ply" then other bytes than a line break (so not checked as PLY) and no
+        // end_header: assimp (which goes by the magic word) looped for ever.
+        HostileMesh{"ply_magic_without_line_break.ply", "is a PLY file without an end_header line"},
+        // found by fuzz_mesh_ply_text: a vertex row split over two lines (assimp reads a row per line and
+        // then aborted in its triangulation).
+        HostileMesh{"ply_text_row_split_over_two_lines.ply", "has vertex 6 with fewer values on its line than its header announces"},
+        HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
+        // coordinates that are not numbers, or whose squares overflow (welding, volumes).
+        // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).
+        HostileMesh{"obj_nan_vertex.obj", "with coordinate nan (expected finite coordinates within +-1e+12)"},
+        HostileMesh{"obj_huge_vertex.obj", "with coordinate inf (expected finite coordinates"}),
+    [](const auto& test) {
+      std::string name = test.param.file;
+      for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(HostileMesh, PathsThatAreNotRegularFilesSayWhatTheyAre) {
+  EXPECT_NE(load_error(data_path("hostile")).find("is a directory"), std::string::npos);
+  EXPECT_NE(load_error("/dev/zero").find("is a character device"), std::string::npos);
+  const std::filesystem::path fifo = testing_support::scratch_dir("mesh_fifo") / "mesh.obj";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_NE(load_error(fifo).find("is a FIFO"), std::string::npos);  // and does not block opening it
+  EXPECT_NE(load_error("/no/such/mesh.obj").find("does not exist"), std::string::npos);
+}
+
+TEST(HostileMesh, LimitsAreStatedAndRaisable) {
+  mesh::MeshLimits small;
+  small.max_triangles = 11;  // the cube has 12
+  EXPECT_NE(load_error(data_path("cube.stl"), small).find("12 triangles, more than the limit of 11 (raise it with the scene key limits.max_triangles)"),
+            std::string::npos);
+  small.max_triangles = 12;
+  EXPECT_EQ(load_error(data_path("cube.stl"), small), "");
+  small.max_file_bytes = 100;
+  EXPECT_NE(load_error(data_path("cube.stl"), small).find("more than the limit of 100 (raise it with the scene key limits.max_file_mb)"),
+            std::string::npos);
+}
+
+TEST(HostileMesh, PlyHeaderCountsMustFitTheFile) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  // Three vertices of three values need at least 3 x 3 x 2 - 1 = 17 bytes.
+  EXPECT_NO_THROW(mesh::check_ply_header(header + "0 0 0\n1 0 0\n0 1 0", header.size() + 17, {}));
+  EXPECT_THROW(mesh::check_ply_header(header + "0 0 0\n1 0 0\n0 1", header.size() + 15, {}), softbody::InputError);
+  const std::string no_properties = "ply\nformat ascii 1.0\nelement vertex 3\nend_header\n0\n0\n0\n";
+  EXPECT_THROW(mesh::check_ply_header(no_properties, no_properties.size(), {}), softbody::InputError)
+      << "an element without properties";
+  const std::string negative = "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n";
+  EXPECT_THROW(mesh::check_ply_header(negative, negative.size(), {}), softbody::InputError)
+      << "a negative count";
+}
+
+// Welding must stay defined (the sanitizer build checks it) for coordinates whose grid cell does not fit a
+// long long: a NaN vertex is kept apart, never merged, while finite ones still weld; coordinates whose
+// spread overflows (an infinite tolerance) weld without undefined behaviour.
+TEST(HostileMesh, WeldKeepsNanVerticesApartAndStaysDefined) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  mesh::TriMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {nan, 0, 0}, {1, 0, 0}};
+  m.triangles = {{0, 1, 2}, {3, 1, 2}, {4, 2, 0}};
+  const mesh::TriMesh welded = mesh::weld(m);
+  EXPECT_EQ(welded.vertices.size(), 4u) << "vertex 4 welds onto vertex 1, the NaN one stays";
+  EXPECT_EQ(welded.triangles[2][0], welded.triangles[0][1]);
+  EXPECT_TRUE(std::isnan(welded.vertices[static_cast<std::size_t>(welded.triangles[1][0])].x()));
+
+  mesh::TriMesh spread;
+  spread.vertices = {{-1e308, 0, 0}, {1e308, 0, 0}, {0, 1e308, 0}};
+  spread.triangles = {{0, 1, 2}};
+  EXPECT_EQ(mesh::weld(spread).triangles.size(), 1u);
+
+  m.triangles.push_back({0, 1, 7});
+  EXPECT_THROW(mesh::weld(m), softbody::InputError) << "an index past the vertices";
+}
+
+}  // namespace
+
+namespace {
+
+std::vector<std::string> notes_of(const std::string& file) {
+  return mesh::load_closed_mesh(file, data_path("hostile/" + file), "ctx").notes;
+}
+
+bool any_note_has(const std::vector<std::string>& notes, const std::string& words) {
+  for (const std::string& note : notes) {
+    if (note.find(words) != std::string::npos) return true;
+  }
+  return false;
+}
+
+// Closed but suspect: loaded, with a note naming the count (and where, for vertices).
+TEST(SuspiciousMesh, SeparatePartsAreNamedWithTheirTriangleCounts) {
+  const auto notes = notes_of("two_separate_cubes.obj");
+  EXPECT_TRUE(any_note_has(notes, "holds 2 separate closed parts (12, 12 triangles)")) << ::testing::PrintToString(notes);
+  EXPECT_FALSE(any_note_has(notes, "touch at that vertex only"));
+}
+
+TEST(SuspiciousMesh, SurfacesTouchingAtAVertexAreNamed) {
+  const auto notes = notes_of("cubes_touching_at_a_vertex.obj");
+  EXPECT_TRUE(any_note_has(notes, "has 1 vertices where surfaces touch at that vertex only (the first at (1, 1, 1))"))
+      << ::testing::PrintToString(notes);
+  EXPECT_TRUE(any_note_has(notes, "holds 2 separate closed parts"));
+}
+
+TEST(SuspiciousMesh, AnOrdinaryClosedMeshGetsNoNote) {
+  EXPECT_TRUE(mesh::load_closed_mesh("cube.stl", data_path("cube.stl"), "ctx").notes.empty());
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SuspiciousMesh, OverlappingPartsAreNamedAsSelfIntersecting) {
+  const auto notes = notes_of("overlapping_cubes.obj");
+  EXPECT_TRUE(any_note_has(notes, "intersects itself: ")) << ::testing::PrintToString(notes);
+  EXPECT_FALSE(any_note_has(notes_of("two_separate_cubes.obj"), "intersects itself"));
+}
+
+// Two triangles: a vertical one whose lower edge pierces a horizontal one is one crossing pair; lifted by
+// 0.6 (its lowest point 0.1 above the plane) it crosses nothing; triangles sharing a vertex are never counted.
+TEST(SuspiciousMesh, SelfIntersectionOfTwoTriangles) {
+  mesh::TriMesh m;
+  m.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}, {-0.5, 0, -0.5}, {0.5, 0, -0.5}, {0, 0, 1}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}};
+  EXPECT_EQ(mesh::find_self_intersections(m).pairs, 1);
+  for (int v = 3; v < 6; ++v) m.vertices[static_cast<std::size_t>(v)].z() += 0.6;
+  EXPECT_EQ(mesh::find_self_intersections(m).pairs, 0);
+  m.vertices[3] = {0, 0, -0.5};
+  m.triangles[1] = {3, 4, 0};  // shares vertex 0
+  EXPECT_EQ(mesh::find_self_intersections(m).pairs, 0);
+}
+
+}  // namespace
+
+namespace {
+
+// "split": two equal closed cubes in one file become two bodies, each with half the mass (equal areas) and
+// half the nRT (equal volumes: the same pressure as before the split), and the vertices of one cube each.
+TEST(SuspiciousMesh, SplitMakesEachSeparatePartItsOwnBody) {
+  const sim::World world = testing_support::world_from_text(
+      R"({ "bodies": [ { "mesh": "data/hostile/two_separate_cubes.obj", "split": true, "mass": 2, "pressure": 40 } ] })");
+  ASSERT_EQ(world.model.bodies.size(), 2u);
+  for (const sim::Body& body : world.model.bodies) {
+    double mass = 0.0;
+    for (double m : body.masses.kg) mass += m;
+    EXPECT_NEAR(mass, 1.0, 1e-12);
+    EXPECT_NEAR(body.params.pressure_J, 20.0, 1e-12);
+    EXPECT_EQ(body.vertex_count, 8);
+  }
+  const sim::World joined = testing_support::world_from_text(
+      R"({ "bodies": [ { "mesh": "data/hostile/two_separate_cubes.obj", "mass": 2, "pressure": 40 } ] })");
+  EXPECT_EQ(joined.model.bodies.size(), 1u);
+}
+
+}  // namespace

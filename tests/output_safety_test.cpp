@@ -1,0 +1,186 @@
+// Outputs under hostile conditions: devices, FIFOs and standard output written through (never replaced),
+// temporaries of killed runs removed, no mix of two runs' frames, SIGINT / SIGTERM keeping every complete
+// frame (the CSV's rows included) with exit 128 + the signal.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "output/atomic_file.hpp"
+#include "output/csv_sink.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::run_shell;
+using testing_support::run_softbody;
+using testing_support::scratch_dir;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A process id that no process has now: a child that has exited and been reaped.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  return child;
+}
+
+TEST(OutputSafety, DevicesAreWrittenThroughNotReplaced) {
+  output::write_file_atomically("/dev/null", "rows\n");
+  struct stat info {};
+  ASSERT_EQ(::stat("/dev/null", &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode)) << "/dev/null must stay a character device";
+}
+
+TEST(OutputSafety, FifosAreWrittenThroughNotReplaced) {
+  const fs::path fifo = scratch_dir("fifo_output") / "rows.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = read_text(fifo); });
+  output::write_file_atomically(fifo, "frame,time\n0,0\n");
+  reader.join();
+  EXPECT_EQ(received, "frame,time\n0,0\n");
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "the FIFO must not be replaced by a regular file";
+}
+
+TEST(OutputSafety, CsvDashGoesToStandardOutput) {
+  const auto result = run_shell("(cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE
+                                " simulate scenes/bounce.json --set duration=0.1 --csv - 2>/dev/null)");
+  EXPECT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_EQ(result.output.rfind(std::string(output::kCsvHeader) + "\n", 0), 0u) << result.output.substr(0, 200);
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1 + 4) << "header and frames 0..3";
+  EXPECT_FALSE(fs::exists(fs::path(SOFTBODY_SOURCE_DIR) / "-"));
+}
+
+TEST(OutputSafety, StaleTemporariesOfKilledRunsAreRemovedByTheNextRun) {
+  const fs::path dir = scratch_dir("stale_temporaries");
+  const pid_t dead = dead_pid();
+  const fs::path stale_csv = dir / (".simulation.csv.tmp" + std::to_string(dead));
+  const fs::path stale_mesh = dir / "meshes" / (".frame_0001.obj.tmp" + std::to_string(dead));
+  const fs::path live = dir / (".simulation.csv.tmp" + std::to_string(::getpid()));  // this process runs
+  fs::create_directories(dir / "meshes");
+  for (const fs::path& p : {stale_csv, stale_mesh, live}) std::ofstream(p) << "half a file";
+  const std::string quick = " --set duration=0.1 ";
+  EXPECT_EQ(run_softbody("simulate scenes/bounce.json" + quick + "--csv " + (dir / "simulation.csv").string()).exit_status, 0);
+  EXPECT_EQ(run_softbody("export scenes/bounce.json" + quick + "-o " + (dir / "meshes").string()).exit_status, 0);
+  EXPECT_FALSE(fs::exists(stale_csv));
+  EXPECT_FALSE(fs::exists(stale_mesh));
+  EXPECT_TRUE(fs::exists(live)) << "a temporary whose writer still runs is kept";
+}
+
+// A new whole run into a folder with a longer earlier run's meshes, which diverges part way: what is left
+// are its own frames only, not its first frames followed by the earlier run's later ones.
+TEST(OutputSafety, ARunThatFailsLeavesNoMixOfTwoRuns) {
+  const fs::path dir = scratch_dir("no_mix");
+  ASSERT_EQ(run_softbody("export scenes/bounce.json --set duration=1 -o " + dir.string()).exit_status, 0);
+  int earlier = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    std::ofstream(entry.path()) << "# the earlier run\n";
+    ++earlier;
+  }
+  ASSERT_EQ(earlier, 31);
+  const auto failed = run_softbody("export scenes/bounce.json --set duration=1 --set bodies.0.stiffness=1e6 "
+                                   "--set solver.dt=1e-3 -o " + dir.string());
+  ASSERT_EQ(failed.exit_status, 3) << failed.output;
+  int left = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(read_text(entry.path()).find("# the earlier run"), std::string::npos) << entry.path();
+    ++left;
+  }
+  EXPECT_LT(left, earlier);
+}
+
+struct Interrupted {
+  int exit_status = -1;
+  std::string errors;
+};
+
+// Starts softbody with `arguments`, sends `signal` once it has run `after_ms`, and waits for it.
+Interrupted interrupt(const std::vector<std::string>& arguments, int signal, int after_ms, const fs::path& dir) {
+  const fs::path errors = dir / "stderr.txt";
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int fd = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 2);
+    if (::chdir(SOFTBODY_SOURCE_DIR) != 0) ::_exit(126);
+    std::vector<char*> argv{const_cast<char*>(SOFTBODY_EXE)};
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(SOFTBODY_EXE, argv.data());
+    ::_exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(after_ms));
+  ::kill(child, signal);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status), read_text(errors)};
+}
+
+// The number N in "after N complete frames".
+int complete_frames(const std::string& errors) {
+  const std::size_t at = errors.find("stopped after ");
+  return at == std::string::npos ? -1 : std::stoi(errors.substr(at + 14));
+}
+
+// A run far too long to end by itself: the signal is what ends it.
+const std::vector<std::string> kLongRun{"scenes/bounce.json", "--set", "duration=10000", "--set", "bodies.0.mesh=icosphere:2"};
+
+TEST(OutputSafety, SigintDuringSimulateKeepsTheRowsOfCompleteFrames) {
+  const fs::path dir = scratch_dir("sigint_simulate");
+  std::vector<std::string> arguments{"simulate"};
+  arguments.insert(arguments.end(), kLongRun.begin(), kLongRun.end());
+  arguments.insert(arguments.end(), {"--csv", (dir / "rows.csv").string()});
+  const Interrupted run = interrupt(arguments, SIGINT, 1500, dir);
+  EXPECT_EQ(run.exit_status, 130) << run.errors;
+  EXPECT_NE(run.errors.find("interrupted: SIGINT: stopped after "), std::string::npos) << run.errors;
+  const int frames = complete_frames(run.errors);
+  ASSERT_GT(frames, 0) << run.errors;
+  // The CSV: the header, then one row per complete frame (one body), frames 0 .. N-1 in order.
+  std::istringstream csv(read_text(dir / "rows.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, output::kCsvHeader);
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(rows));
+    ++rows;
+  }
+  EXPECT_EQ(rows, frames);
+}
+
+TEST(OutputSafety, SigtermDuringExportLeavesOnlyCompleteFrames) {
+  const fs::path dir = scratch_dir("sigterm_export");
+  std::vector<std::string> arguments{"export"};
+  arguments.insert(arguments.end(), kLongRun.begin(), kLongRun.end());
+  arguments.insert(arguments.end(), {"-o", (dir / "meshes").string()});
+  const Interrupted run = interrupt(arguments, SIGTERM, 1500, dir);
+  EXPECT_EQ(run.exit_status, 143) << run.errors;
+  const int frames = complete_frames(run.errors);
+  ASSERT_GT(frames, 0) << run.errors;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "meshes")) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_NE(name[0], '.') << "a temporary left: " << name;
+    const std::string text = read_text(entry.path());
+    EXPECT_EQ(text.back(), '\n') << name << " is cut short";
+    ++files;
+  }
+  EXPECT_EQ(files, frames);
+  char last[32];
+  std::snprintf(last, sizeof last, "frame_%04d.obj", frames - 1);
+  EXPECT_TRUE(fs::exists(dir / "meshes" / last));
+}
+
+}  // namespace
