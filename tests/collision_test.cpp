@@ -11,12 +11,7 @@
 namespace {
 
 using softbody::Vec3;
-
-Vec3 total_momentum(const sim::World& world) {
-  Vec3 p = Vec3::Zero();
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
-  return p;
-}
+using testing_support::total_momentum;
 
 // Two balls meet head-on at 2 m/s each, with no friction and no gravity or floor. The contact impulses
 // act in equal and opposite pairs (the vertex gets +J, the triangle's corners −w_k J with Σ w_k = 1), so

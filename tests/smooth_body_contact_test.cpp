@@ -14,12 +14,7 @@
 namespace {
 
 using softbody::Vec3;
-
-Vec3 total_momentum(const sim::World& world) {
-  Vec3 p = Vec3::Zero();
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
-  return p;
-}
+using testing_support::total_momentum;
 
 // Two balls meet head-on (no gravity, no floor): each contact force acts on the vertex (+F) and on the
 // triangle's corners (−w_k F, Σ w_k = 1), so the momentum of the pair is kept to round-off through the whole

@@ -9,6 +9,7 @@
 
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
+#include "sim/diagnostics.hpp"
 
 namespace testing_support {
 
@@ -20,6 +21,12 @@ scene::Scene scene_from_text(const std::string& json_text) {
 sim::World world_from_text(const std::string& json_text) {
   std::vector<std::string> notes;
   return setup::build_world(scene_from_text(json_text), notes);
+}
+
+softbody::Vec3 total_momentum(const sim::World& world) {
+  softbody::Vec3 p = softbody::Vec3::Zero();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
+  return p;
 }
 
 void run_steps(sim::World& world, long long n, double dt) {

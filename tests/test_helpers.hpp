@@ -18,6 +18,9 @@ scene::Scene scene_from_text(const std::string& json_text);
 // The world of a scene given as JSON text.
 sim::World world_from_text(const std::string& json_text);
 
+// Σ over bodies of Σ m_i v_i [kg·m/s].
+softbody::Vec3 total_momentum(const sim::World& world);
+
 // Runs `n` steps of `dt`.
 void run_steps(sim::World& world, long long n, double dt);
 

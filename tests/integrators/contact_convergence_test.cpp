@@ -12,9 +12,7 @@
 
 namespace {
 
-using integrator_tests::fitted_slope;
 using integrator_tests::make_world;
-using integrator_tests::observed_order;
 using integrator_tests::rms_position_difference;
 using integrator_tests::run_for;
 
@@ -60,12 +58,7 @@ TEST_P(ContactConvergenceOrder, MatchesTheMethodsOrderThroughAnImpact) {
   for (double dt = c.coarsest_dt; dt >= c.coarsest_dt / 8.0 * 0.99; dt /= 2.0) {
     errors.push_back(rms_position_difference(fixed_step_state(c.integrator, dt), reference()));
   }
-  const double order = observed_order(errors);
-  std::printf("%-10s", sim::to_string(c.integrator).c_str());
-  for (std::size_t k = 0; k < errors.size(); ++k) std::printf(" e(dt/%d)=%.3e", 1 << k, errors[k]);
-  std::printf("  pairwise:");
-  for (std::size_t k = 1; k < errors.size(); ++k) std::printf(" %.3f", std::log2(errors[k - 1] / errors[k]));
-  std::printf("  fitted order %.3f (reference uncertainty %.1e)\n", order, reference_uncertainty());
+  const double order = integrator_tests::report_observed_order(c.integrator, errors, reference_uncertainty());
   // No order is lost through the impact. (rk4 measures above its order here, 5.3: over this short span its
   // error is dominated by the local errors of the steps through the impact, not yet by their accumulation.)
   EXPECT_GT(order, c.expected_order - 0.3);
@@ -84,19 +77,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // rk45 chooses its steps: through the impact its error should still follow the tolerance.
 TEST(ContactAdaptiveTolerance, ErrorFollowsTheToleranceThroughAnImpact) {
-  std::vector<double> log_tolerance, log_error;
-  for (double tolerance = 1e-4; tolerance >= 0.99e-8; tolerance /= 10.0) {
-    sim::World world = make_world(kImpactScene, sim::IntegratorKind::Rk45, tolerance);
-    world.advance_to(kSpan);
-    const double error = rms_position_difference(world.state, reference());
-    std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,
-                world.state.steps, world.state.rejected_steps);
-    log_tolerance.push_back(std::log10(tolerance));
-    log_error.push_back(std::log10(error));
-  }
-  const double slope = fitted_slope(log_tolerance, log_error);
-  std::printf("rk45 through the impact: error ∝ tolerance^%.3f\n", slope);
-  EXPECT_NEAR(slope, 1.0, 0.3);
+  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kImpactScene, kSpan, reference(), 4, 8);
+  EXPECT_NEAR(sweep.slope, 1.0, 0.3);
 }
 
 }  // namespace

@@ -9,9 +9,7 @@
 
 namespace {
 
-using integrator_tests::fitted_slope;
 using integrator_tests::make_world;
-using integrator_tests::observed_order;
 using integrator_tests::rms_position_difference;
 using integrator_tests::run_for;
 
@@ -64,12 +62,7 @@ TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
     run_for(world, kSpan, dt);
     errors.push_back(rms_position_difference(world.state, exact));
   }
-  const double order = observed_order(errors);
-  std::printf("%-10s", sim::to_string(c.integrator).c_str());
-  for (std::size_t k = 0; k < errors.size(); ++k) std::printf(" e(dt/%d)=%.3e", 1 << k, errors[k]);
-  std::printf("  pairwise:");
-  for (std::size_t k = 1; k < errors.size(); ++k) std::printf(" %.3f", std::log2(errors[k - 1] / errors[k]));
-  std::printf("  fitted order %.3f (reference uncertainty %.1e)\n", order, reference_uncertainty());
+  const double order = integrator_tests::report_observed_order(c.integrator, errors, reference_uncertainty());
   EXPECT_NEAR(order, c.expected_order, 0.2);
   EXPECT_GT(errors.back(), 1e-11) << "the finest error must stay far above round-off";
   EXPECT_LT(reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
@@ -88,20 +81,11 @@ INSTANTIATE_TEST_SUITE_P(
 // rk45 has no step to halve: its global error should follow the tolerance, roughly proportionally
 // (Dormand–Prince's local error ∝ h⁵ and h ∝ tol^(1/5) make the error per unit time ∝ tol).
 TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
-  std::vector<double> log_tolerance, log_error;
-  for (double tolerance = 1e-4; tolerance >= 0.99e-9; tolerance /= 10.0) {
-    sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45, tolerance);
-    world.advance_to(kSpan);
-    const double error = rms_position_difference(world.state, reference());
-    std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,
-                world.state.steps, world.state.rejected_steps);
-    log_tolerance.push_back(std::log10(tolerance));
-    log_error.push_back(std::log10(error));
-    EXPECT_LT(error, 10.0 * tolerance) << "the error should stay near the requested tolerance";
+  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kSmoothScene, kSpan, reference(), 4, 9);
+  for (std::size_t k = 0; k < sweep.errors.size(); ++k) {
+    EXPECT_LT(sweep.errors[k], 10.0 * sweep.tolerances[k]) << "the error should stay near the requested tolerance";
   }
-  const double slope = fitted_slope(log_tolerance, log_error);
-  std::printf("rk45: d log(error) / d log(tolerance) = %.3f\n", slope);
-  EXPECT_NEAR(slope, 1.0, 0.3);
+  EXPECT_NEAR(sweep.slope, 1.0, 0.3);
 }
 
 }  // namespace

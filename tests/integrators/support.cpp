@@ -2,6 +2,7 @@
 #include "support.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
@@ -62,6 +63,38 @@ double observed_order(const std::vector<double>& errors) {
     log_error.push_back(std::log2(errors[i]));
   }
   return -fitted_slope(k, log_error);
+}
+
+double report_observed_order(sim::IntegratorKind integrator, const std::vector<double>& errors,
+                             double reference_uncertainty) {
+  const double order = observed_order(errors);
+  std::printf("%-10s", sim::to_string(integrator).c_str());
+  for (std::size_t k = 0; k < errors.size(); ++k) std::printf(" e(dt/%d)=%.3e", 1 << k, errors[k]);
+  std::printf("  pairwise:");
+  for (std::size_t k = 1; k < errors.size(); ++k) std::printf(" %.3f", std::log2(errors[k - 1] / errors[k]));
+  std::printf("  fitted order %.3f (reference uncertainty %.1e)\n", order, reference_uncertainty);
+  return order;
+}
+
+ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s, const sim::State& reference,
+                                    int loosest_exponent, int tightest_exponent) {
+  ToleranceSweep sweep;
+  std::vector<double> log_tolerance, log_error;
+  for (int e = loosest_exponent; e <= tightest_exponent; ++e) {
+    const double tolerance = std::pow(10.0, -e);
+    sim::World world = make_world(json_text, sim::IntegratorKind::Rk45, tolerance);
+    world.advance_to(span_s);
+    const double error = rms_position_difference(world.state, reference);
+    std::printf("rk45 tolerance %.0e: error %.3e, %lld accepted + %lld rejected steps\n", tolerance, error,
+                world.state.steps, world.state.rejected_steps);
+    sweep.tolerances.push_back(tolerance);
+    sweep.errors.push_back(error);
+    log_tolerance.push_back(std::log10(tolerance));
+    log_error.push_back(std::log10(error));
+  }
+  sweep.slope = fitted_slope(log_tolerance, log_error);
+  std::printf("rk45: d log(error) / d log(tolerance) = %.3f\n", sweep.slope);
+  return sweep;
 }
 
 }  // namespace integrator_tests

@@ -27,6 +27,20 @@ double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
 // errors[k] measured at dt / 2^k: minus the least-squares slope of log2(error) against k, the observed order.
 double observed_order(const std::vector<double>& errors);
 
+// Prints one line of a convergence measurement (the errors, their pairwise orders, the fitted order and the
+// reference's uncertainty) and returns the fitted order.
+double report_observed_order(sim::IntegratorKind integrator, const std::vector<double>& errors,
+                             double reference_uncertainty);
+
+// rk45 on `json_text` over `span_s` at tolerances 10^-loosest_exponent .. 10^-tightest_exponent: each run's error
+// against `reference` (printed), and the fitted slope of log(error) against log(tolerance).
+struct ToleranceSweep {
+  std::vector<double> tolerances, errors;
+  double slope = 0.0;
+};
+ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s, const sim::State& reference,
+                                    int loosest_exponent, int tightest_exponent);
+
 // Total energy of every body: kinetic + gravitational + spring + gas [J].
 double total_energy(const sim::World& world);
 
