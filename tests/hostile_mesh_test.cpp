@@ -63,6 +63,8 @@ INSTANTIATE_TEST_SUITE_P(
         // then aborted in its triangulation).
         HostileMesh{"ply_text_row_split_over_two_lines.ply", "has vertex 6 with fewer values on its line than its header announces"},
         HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
+        // found by fuzz_mesh_glb: a 2 kB GLB whose header and first chunk announce 4 GB (assimp allocated them).
+        HostileMesh{"glb_announces_4gb.glb", "is a binary glTF (GLB) file whose header announces 4294965229 bytes"},
         // coordinates that are not numbers, or whose squares overflow (welding, volumes).
         // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).
         HostileMesh{"obj_nan_vertex.obj", "with coordinate nan (expected finite coordinates within +-1e+12)"},

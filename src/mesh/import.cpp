@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <fstream>
 #include <string>
 
@@ -31,6 +32,26 @@ std::string head_of(const std::filesystem::path& file, std::uintmax_t bytes) {
   return head;
 }
 
+// A little-endian uint32 at `at` of `bytes` (which holds at least at + 4 bytes).
+std::uint32_t read_u32_le(std::string_view bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  for (int k = 3; k >= 0; --k) value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
+  return value;
+}
+
+// Binary glTF (GLB): a 12-byte header (magic "glTF", version, total length) and chunks of (length, type, data).
+// assimp allocates what the lengths announce, so a length past the file's end (a fuzzed 2 kB file announced
+// 4 GB) is refused here.
+void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
+  if (head.size() < 20) throw InputError("is a binary glTF (GLB) file shorter than its 20-byte header");
+  const std::uint32_t total = read_u32_le(head, 8), chunk = read_u32_le(head, 12);
+  if (total > file_bytes || std::uintmax_t{chunk} + 20 > file_bytes) {
+    throw InputError("is a binary glTF (GLB) file whose header announces " + std::to_string(total) +
+                     " bytes and a first chunk of " + std::to_string(chunk) + " bytes, but the file has " +
+                     std::to_string(file_bytes));
+  }
+}
+
 // What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
 void check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
@@ -50,6 +71,7 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (looks_like_ply(head) || extension == ".ply") check_ply_header(head_of(file, bytes), bytes, limits);  // body too
   if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
+  if (head.rfind("glTF", 0) == 0 || extension == ".glb") check_glb_header(head, bytes);
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)
