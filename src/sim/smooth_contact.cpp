@@ -59,13 +59,12 @@ double smooth_dashpot_weight(const SmoothResponse& contact, double depth_m) {
 
 void add_smooth_floor_forces(const SmoothFloor& floor, std::span<const double> mass_kg, std::span<const Vec3> x,
                              std::span<const Vec3> v, std::span<Vec3> force) {
-  const double delta = floor.smoothing_m, eps2 = floor.slip_speed_m_per_s * floor.slip_speed_m_per_s;
+  const double eps2 = floor.slip_speed_m_per_s * floor.slip_speed_m_per_s;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double depth = floor.height_m - x[i].y();
     if (depth <= 0.0) continue;
-    const double t = depth / delta;
-    const double elastic = mass_kg[i] * floor.omega2 * delta * smootherstep_integral(t);  // m ω² δ P [N]
-    const double dashpot = -mass_kg[i] * floor.damping_rate * v[i].y() * smootherstep(t);  // −m 2ζω v_n s [N]
+    const double elastic = mass_kg[i] * smooth_elastic_per_mass(floor, depth);  // m ω² δ P [N]
+    const double dashpot = -mass_kg[i] * floor.damping_rate * v[i].y() * smooth_dashpot_weight(floor, depth);  // −m 2ζω v_n s [N]
     force[i].y() += elastic + dashpot;
     if (floor.friction == 0.0) continue;
     const double vx = v[i].x(), vz = v[i].z();

@@ -55,9 +55,8 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace, double
       }
       break;
     case FloorContact::Smooth:  // a force inside the dynamics: nothing to project, only the depth to report
-      workspace.deepest_floor_penetration_m =
-          std::max(workspace.deepest_floor_penetration_m, deepest_below_floor(model.floor->height_m, state.x));
-      return 0;
+      found.deepest_m = deepest_below_floor(model.floor->height_m, state.x);
+      break;
   }
   workspace.deepest_floor_penetration_m = std::max(workspace.deepest_floor_penetration_m, found.deepest_m);
   return found.below;
