@@ -16,6 +16,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
+#include "mesh/gltf_check.hpp"
 #include "mesh/ply_header.hpp"
 
 namespace mesh {
@@ -71,7 +72,15 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (looks_like_ply(head) || extension == ".ply") check_ply_header(head_of(file, bytes), bytes, limits);  // body too
   if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
-  if (head.rfind("glTF", 0) == 0 || extension == ".glb") check_glb_header(head, bytes);
+  if (head.rfind("glTF", 0) == 0 || extension == ".glb") {
+    check_glb_header(head, bytes);
+    constexpr std::uint32_t kJsonChunk = 0x4E4F534A;  // "JSON" read as a little-endian uint32 (glTF 2.0 §4.4.3)
+    if (read_u32_le(head, 4) == 2 && read_u32_le(head, 16) != kJsonChunk) {
+      throw InputError("is a binary glTF 2 (GLB) file whose first chunk is not its JSON chunk");
+    }
+    if (read_u32_le(head, 4) == 2) check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20));  // the JSON chunk
+  }
+  if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)

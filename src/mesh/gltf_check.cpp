@@ -1,0 +1,103 @@
+// The glTF 2 document check: references resolve and every primitive has positions.
+#include "mesh/gltf_check.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace mesh {
+namespace {
+
+using nlohmann::json;
+using softbody::InputError;
+
+// The number of entries of the top-level array `key` (0 when absent); refuses a value that is not an array.
+std::size_t count_of(const json& document, const char* key) {
+  const auto found = document.find(key);
+  if (found == document.end()) return 0;
+  if (!found->is_array()) throw InputError(std::string("is a glTF document whose \"") + key + "\" is not an array");
+  return found->size();
+}
+
+// `reference` (at `where` in the document) is an index into an array of `count` entries.
+void check_index(const json& reference, std::size_t count, const std::string& where, const char* array) {
+  if (!reference.is_number_unsigned() || reference.get<std::size_t>() >= count) {
+    throw InputError("is a glTF document whose " + where + " (" + reference.dump() + ") names none of its " +
+                     std::to_string(count) + " " + array);
+  }
+}
+
+void check_accessors(const json& document) {
+  const std::size_t views = count_of(document, "bufferViews"), buffers = count_of(document, "buffers");
+  for (std::size_t a = 0; a < count_of(document, "accessors"); ++a) {
+    const json& accessor = document["accessors"][a];
+    const std::string where = "accessors." + std::to_string(a);
+    if (!accessor.is_object()) throw InputError("is a glTF document whose " + where + " is not an object");
+    if (const auto view = accessor.find("bufferView"); view != accessor.end()) {
+      check_index(*view, views, where + ".bufferView", "bufferViews");
+    }
+  }
+  for (std::size_t v = 0; v < views; ++v) {
+    const json& view = document["bufferViews"][v];
+    const std::string where = "bufferViews." + std::to_string(v);
+    if (!view.is_object() || !view.contains("buffer")) {
+      throw InputError("is a glTF document whose " + where + " has no \"buffer\"");
+    }
+    check_index(view["buffer"], buffers, where + ".buffer", "buffers");
+  }
+}
+
+void check_primitive(const json& primitive, const std::string& where, std::size_t accessors) {
+  if (!primitive.is_object()) throw InputError("is a glTF document whose " + where + " is not an object");
+  const auto attributes = primitive.find("attributes");
+  if (attributes == primitive.end() || !attributes->is_object() || !attributes->contains("POSITION")) {
+    throw InputError("is a glTF document whose " + where + " has no POSITION attribute (expected vertex positions)");
+  }
+  for (const auto& [name, accessor] : attributes->items()) {
+    check_index(accessor, accessors, where + ".attributes." + name, "accessors");
+  }
+  if (const auto indices = primitive.find("indices"); indices != primitive.end()) {
+    check_index(*indices, accessors, where + ".indices", "accessors");
+  }
+  if (const auto mode = primitive.find("mode"); mode != primitive.end()) {
+    // glTF 2.0 §3.7.2.1: 0 points, 1 lines, 2 line loop, 3 line strip, 4 triangles, 5 strip, 6 fan.
+    if (!mode->is_number_unsigned() || mode->get<unsigned long long>() > 6) {
+      throw InputError("is a glTF document whose " + where + ".mode is " + mode->dump() + " (expected 0 to 6)");
+    }
+  }
+}
+
+}  // namespace
+
+void check_gltf_document(std::string_view json_text) {
+  json document;
+  try {
+    document = json::parse(json_text.begin(), json_text.end());
+  } catch (const json::parse_error& e) {
+    // e.what() names the byte; glTF JSON must be UTF-8 (glTF 2.0 §3.2), which the parser checks too.
+    throw InputError("is a glTF file whose JSON does not parse (" + std::string(e.what()) + ")");
+  }
+  if (!document.is_object()) throw InputError("is a glTF file whose JSON is not an object");
+  // glTF 1.0 (keyed objects instead of arrays) is left to assimp's glTF 1 reader as before.
+  if (const auto asset = document.find("asset"); asset != document.end() && asset->is_object() &&
+                                                 asset->contains("version") && (*asset)["version"].is_string() &&
+                                                 (*asset)["version"].get<std::string>().rfind("1.", 0) == 0) {
+    return;
+  }
+  check_accessors(document);
+  const std::size_t accessors = count_of(document, "accessors");
+  for (std::size_t m = 0; m < count_of(document, "meshes"); ++m) {
+    const json& mesh = document["meshes"][m];
+    const std::string where = "meshes." + std::to_string(m);
+    if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) {
+      throw InputError("is a glTF document whose " + where + " has no \"primitives\" array");
+    }
+    for (std::size_t p = 0; p < mesh["primitives"].size(); ++p) {
+      check_primitive(mesh["primitives"][p], where + ".primitives." + std::to_string(p), accessors);
+    }
+  }
+}
+
+}  // namespace mesh
