@@ -56,6 +56,19 @@ int turn_back(const Motion& motion, int from) {
   return -1;
 }
 
+// The frame at or after `from` whose box centre lies farthest back along frame 0's horizontal velocity: where
+// the going back ends. -1 when frame 0 has no horizontal velocity.
+int farthest_back(const Motion& motion, int from) {
+  const softbody::Vec3& v0 = motion.front().com_velocity;
+  if (v0.x() * v0.x() + v0.z() * v0.z() == 0.0) return -1;
+  const auto along = [&](const MotionSample& s) { return (s.min.x() + s.max.x()) * v0.x() + (s.min.z() + s.max.z()) * v0.z(); };
+  int best = from;
+  for (int i = from; i < static_cast<int>(motion.size()); ++i) {
+    if (along(motion[i]) < along(motion[best])) best = i;
+  }
+  return best;
+}
+
 // Adds the frame farthest from every chosen one (the lowest such frame on ties).
 void add_farthest(std::vector<int>& chosen, int last_frame) {
   int best = -1, best_distance = -1;
@@ -87,7 +100,10 @@ std::vector<int> frames_from_motion(const Motion& motion, int tiles, std::option
       if (const int rebound = highest_rebound(motion, *floor_height_m, tolerance, lift_off); rebound >= 0) {
         later_keys.push_back(motion[rebound].frame);
       }
-      if (const int turn = turn_back(motion, contact); turn >= 0) later_keys.push_back(motion[turn].frame);
+      if (const int turn = turn_back(motion, contact); turn >= 0) {
+        later_keys.push_back(motion[turn].frame);
+        later_keys.push_back(motion[farthest_back(motion, turn)].frame);
+      }
     }
   }
   keys.push_back(last);

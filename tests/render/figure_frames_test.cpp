@@ -35,6 +35,18 @@ TEST(FigureFrames, TheBouncesMomentsAreChosen) {
   EXPECT_EQ(output::frames_from_motion(made_up_bounce(), 4, 0.0), (std::vector<int>{0, 5, 7, 20}));
 }
 
+TEST(FigureFrames, TheEndOfTheGoingBackIsChosen) {
+  // The body moves +x until frame 8, then back until frame 15 (its box centre smallest there), then on again.
+  std::vector<output::MotionSample> motion = made_up_bounce();
+  for (output::MotionSample& s : motion) {
+    const double x = s.frame <= 8 ? 0.1 * s.frame : s.frame <= 15 ? 0.8 - 0.05 * (s.frame - 8) : 0.45 + 0.01 * (s.frame - 15);
+    s.min.x() = x;
+    s.max.x() = x + 1.0;
+  }
+  // 0, contact 5, compression 7, rest 20, rebound 13, turn back 8, farthest back 15.
+  EXPECT_EQ(output::frames_from_motion(motion, 7, 0.0), (std::vector<int>{0, 5, 7, 8, 13, 15, 20}));
+}
+
 TEST(FigureFrames, SpareTilesGoWhereTheSheetHasTheLongestGap) {
   // The key frames 0, 5, 7, 8, 13, 20, then 16 (3 frames from 13 and from 20: the longest gap split), then 2
   // (the lowest of the frames 2 away from every chosen one).
