@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -181,6 +182,32 @@ TEST(OutputSafety, SigtermDuringExportLeavesOnlyCompleteFrames) {
   char last[32];
   std::snprintf(last, sizeof last, "frame_%04d.obj", frames - 1);
   EXPECT_TRUE(fs::exists(dir / "meshes" / last));
+}
+
+TEST(OutputSafety, SigintDuringPointCacheExportWritesTheCompleteFrames) {
+  const fs::path dir = scratch_dir("sigint_pc2");
+  fs::create_directories(dir / "caches");
+  const fs::path stale = dir / "caches" / (".body0.pc2.tmp" + std::to_string(dead_pid()));
+  std::ofstream(stale) << "half a cache from a killed run";
+  std::vector<std::string> arguments{"export"};
+  arguments.insert(arguments.end(), kLongRun.begin(), kLongRun.end());
+  arguments.insert(arguments.end(), {"--format", "pc2", "-o", (dir / "caches").string()});
+  const Interrupted run = interrupt(arguments, SIGINT, 1500, dir);
+  EXPECT_EQ(run.exit_status, 130) << run.errors;
+  const int frames = complete_frames(run.errors);
+  ASSERT_GT(frames, 0) << run.errors;
+  // PC2: a 32-byte header (point count at byte 16, sample count at byte 28), then 12 bytes per point per sample.
+  const std::string cache = read_text(dir / "caches" / "body0.pc2");
+  ASSERT_GE(cache.size(), 32u);
+  std::int32_t points = 0, samples = 0;
+  std::memcpy(&points, cache.data() + 16, 4);
+  std::memcpy(&samples, cache.data() + 28, 4);
+  EXPECT_EQ(samples, frames);
+  EXPECT_EQ(cache.size(), 32u + 12u * static_cast<std::size_t>(points) * static_cast<std::size_t>(samples));
+  for (const auto& entry : fs::directory_iterator(dir / "caches")) {
+    EXPECT_NE(entry.path().filename().string()[0], '.') << "a temporary left: " << entry.path();
+  }
+  EXPECT_FALSE(fs::exists(stale));
 }
 
 }  // namespace

@@ -34,6 +34,8 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
     throw softbody::InputError("--resume: a point cache is written whole at the end; export it again instead");
   }
   PreparedRun run = prepare_run(options.scene);
+  // SIGINT / SIGTERM end the run after the frame in progress; the caches then hold every complete frame.
+  frames::stop_on_signals();
   const PlannedFrames planned(run, options.frames);
   const frames::FrameSelection& chosen = planned.plan().frames;
   if (chosen.count() != chosen.last() - chosen.first() + 1) {
@@ -42,6 +44,7 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   }
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::PointCacheExporter exporter(dir, format);
+  output::remove_stale_temporaries(dir);  // a killed run's half-written cache
   std::vector<frames::FrameSink*> sinks = {&exporter};
   const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
   print_run_summary(run, stats, "wrote " + exporter.mesh_path(0).string() + ", " + exporter.cache_path(0).filename().string() +
