@@ -28,7 +28,31 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
   std::printf("), fastest-mode damping rate %.4g 1/s\n", b.damping_rate);
 }
 
-void print_integrator(sim::IntegratorKind integrator, double dt, double frame_interval_s) {
+// What one step costs per vertex, one thread, a body resting on the floor (docs/perf_step.csv, icosphere:3;
+// bench/run_performance.sh): the explicit methods' force evaluations per step set it. 0: not estimated
+// (implicit and newton: their solver's iterations grow with dt and the mesh: 474 ns at icosphere:3 and 750 at
+// :5 for implicit at its stable dt).
+double step_ns_per_vertex(sim::IntegratorKind integrator) {
+  switch (integrator) {
+    case sim::IntegratorKind::Euler: return 26.0;
+    case sim::IntegratorKind::Symplectic: return 26.0;
+    case sim::IntegratorKind::Verlet: return 35.0;
+    case sim::IntegratorKind::Rk4: return 109.0;
+    case sim::IntegratorKind::Rk45: return 166.0;  // per accepted step at the auto dt; rejected steps add to it
+    default: return 0.0;
+  }
+}
+
+// "about X s", the wall time per simulated second of `steps_per_s` steps on `vertices` vertices.
+std::string expected_cost(sim::IntegratorKind integrator, double steps_per_s, std::size_t vertices) {
+  const double ns = step_ns_per_vertex(integrator);
+  if (ns == 0.0) return "not estimated (solver iterations vary)";
+  char text[64];
+  std::snprintf(text, sizeof text, "about %.3g s", steps_per_s * static_cast<double>(vertices) * ns * 1e-9);
+  return text;
+}
+
+void print_integrator(sim::IntegratorKind integrator, double dt, double frame_interval_s, std::size_t vertices) {
   const std::string text = sim::to_string(integrator);
   const char* name = text.c_str();
   if (dt == 0.0) {
@@ -38,7 +62,8 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
     std::printf("  %-10s  no limit (%s)\n", name, every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
   } else {
     const double steps = std::ceil(frame_interval_s / (sim::kAutoDtSafety * dt));
-    std::printf("  %-10s  %-12.4g %-12.4g %.0f\n", name, dt, sim::kAutoDtSafety * dt, steps);
+    std::printf("  %-10s  %-12.4g %-12.4g %-22.0f %s\n", name, dt, sim::kAutoDtSafety * dt, steps,
+                expected_cost(integrator, steps / frame_interval_s, vertices).c_str());
   }
 }
 
@@ -54,10 +79,10 @@ void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate,
   const int substeps = sim::auto_substeps(model, estimate, frame_interval_s);
   const double substeps_per_s = substeps / frame_interval_s;
   const double cost = substeps_per_s * static_cast<double>(vertices) * kXpbdSubstepNsPerVertex * 1e-9;
-  std::printf("  %-10s  %-12.4g %-12.4g %d substeps; expect about %.3g s of wall time per simulated second "
-              "(%.0f substeps/s x %zu vertices x %.0f ns)\n",
-              "xpbd", dt, frame_interval_s / substeps, substeps, cost, substeps_per_s, vertices,
-              kXpbdSubstepNsPerVertex);
+  char per_frame[32];
+  std::snprintf(per_frame, sizeof per_frame, "%d substeps", substeps);
+  std::printf("  %-10s  %-12.4g %-12.4g %-22s about %.3g s (%.0f substeps/s x %zu vertices x %.0f ns)\n", "xpbd", dt,
+              frame_interval_s / substeps, per_frame, cost, substeps_per_s, vertices, kXpbdSubstepNsPerVertex);
 }
 
 struct InfoOptions {
@@ -85,12 +110,14 @@ int run_info(const InfoOptions& options) {
     std::printf("  (includes the floor-contact travel limit: dt <= %.4g s, a tenth of the shortest edge per step)\n",
                 estimate.travel_dt_s);
   }
-  std::printf("  %-10s  %-12s %-12s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt");
+  std::printf("  %-10s  %-12s %-12s %-22s %s\n", "integrator", "stable dt/s", "auto dt/s", "steps/frame at auto dt",
+              "expected wall time per simulated second (one thread)");
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
     if (integrator.kind == sim::IntegratorKind::Xpbd) {
       print_xpbd(run.world.model, estimate, run.clock.frame_interval_s, run.world.state.x.size());
     } else {
-      print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s);
+      print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s,
+                       run.world.state.x.size());
     }
   }
   std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", sim::to_string(run.scene.solver.integrator).c_str(),
