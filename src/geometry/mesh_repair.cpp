@@ -116,10 +116,12 @@ void orient_soup(Soup& soup, std::vector<std::string>& notes) {
   std::set<std::pair<std::size_t, std::size_t>> edges;
   PMP::orient_polygon_soup(soup.points, soup.polygons, CGAL::parameters::visitor(OrientationVisitor(&counts, &edges)));
   if (counts.non_manifold_edges > 0 || counts.non_manifold_vertices > 0) {
-    notes.push_back(cat({"repair: split ", count_of(counts.non_manifold_edges, "non-manifold edge", "non-manifold edges"),
-                         " (three or more faces) and ",
-                         count_of(counts.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"),
-                         " (surfaces touching at a point) into separate sheets: ",
+    const std::string edge_words = cat({count_of(counts.non_manifold_edges, "non-manifold edge", "non-manifold edges"), " (three or more faces)"});
+    const std::string vertex_words =
+        cat({count_of(counts.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"), " (surfaces touching at a point)"});
+    const bool both = counts.non_manifold_edges > 0 && counts.non_manifold_vertices > 0;
+    notes.push_back(cat({"repair: split ", counts.non_manifold_edges > 0 ? edge_words : "", both ? " and " : "",
+                         counts.non_manifold_vertices > 0 ? vertex_words : "", " into separate sheets: ",
                          count_of(counts.duplicated_vertices, "vertex", "vertices"), " duplicated"}));
   }
   if (counts.reversed_faces > 0) {
