@@ -28,5 +28,6 @@ Action register_bench(CLI::App& parent);
 Action add_accuracy_options(CLI::App& command);
 Action register_render(CLI::App& parent);
 Action register_info(CLI::App& parent);
+Action register_prepare(CLI::App& parent);
 
 }  // namespace app

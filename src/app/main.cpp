@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   actions["bench"] = app::register_bench(cli);
   actions["render"] = app::register_render(cli);
   actions["info"] = app::register_info(cli);
+  actions["prepare"] = app::register_prepare(cli);
 
   try {
     cli.parse(argc, argv);

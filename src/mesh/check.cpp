@@ -10,7 +10,7 @@
 namespace mesh {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) { throw softbody::InputError(what); }
+[[noreturn]] void fail(MeshDefect defect, const std::string& what) { throw MeshDefectError(defect, what); }
 
 std::uint64_t edge_key(int a, int b) {
   return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
@@ -32,7 +32,7 @@ void check_degenerate_faces(const TriMesh& mesh) {
     const Triangle& t = mesh.triangles[f];
     const double area = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(area > min_area)) {
-      fail("triangle " + std::to_string(f) + " is degenerate (zero area" +
+      fail(MeshDefect::Degenerate, "triangle " + std::to_string(f) + " is degenerate (zero area" +
            (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ? ", repeated vertex" : "") +
            "): every face must span an area to carry pressure");
     }
@@ -76,24 +76,24 @@ EdgeCounts count_edges(const TriMesh& mesh) {
 
 void validate_closed(TriMesh& mesh, std::vector<std::string>& notes) {
   if (mesh.triangles.size() < 4 || mesh.vertices.size() < 4) {
-    fail("has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
+    fail(MeshDefect::TooSmall, "has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
   }
   check_degenerate_faces(mesh);
   const EdgeCounts counts = count_edges(mesh);
   if (counts.boundary > 0) {
-    fail("is not closed: " + std::to_string(counts.boundary) + " boundary edges (of " + std::to_string(counts.edges) +
+    fail(MeshDefect::Open, "is not closed: " + std::to_string(counts.boundary) + " boundary edges (of " + std::to_string(counts.edges) +
          "); pressure needs a closed surface");
   }
   if (counts.non_manifold > 0) {
-    fail("is not manifold: " + std::to_string(counts.non_manifold) + " edges are shared by more than two triangles");
+    fail(MeshDefect::NonManifold, "is not manifold: " + std::to_string(counts.non_manifold) + " edges are shared by more than two triangles");
   }
   if (counts.misoriented > 0) {
-    fail("has inconsistent winding: " + std::to_string(counts.misoriented) +
+    fail(MeshDefect::Winding, "has inconsistent winding: " + std::to_string(counts.misoriented) +
          " edges are traversed in the same direction by both of their triangles");
   }
   const double volume = signed_volume(mesh);
   const double diagonal = bounding_diagonal(mesh);
-  if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal)) fail("encloses no volume (flat or self-cancelling surface)");
+  if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal)) fail(MeshDefect::NoVolume, "encloses no volume (flat or self-cancelling surface)");
   if (volume < 0.0) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
     notes.push_back("the winding was inverted (normals pointing inward); flipped every triangle");

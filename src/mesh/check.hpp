@@ -4,9 +4,22 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "mesh/trimesh.hpp"
 
 namespace mesh {
+
+// What validation found wrong, so that the caller can say which repair step would fix it.
+enum class MeshDefect { TooSmall, Degenerate, Open, NonManifold, Winding, NoVolume };
+
+class MeshDefectError : public softbody::InputError {
+ public:
+  MeshDefectError(MeshDefect defect, const std::string& what) : softbody::InputError(what), defect_(defect) {}
+  MeshDefect defect() const { return defect_; }
+
+ private:
+  MeshDefect defect_;
+};
 
 struct EdgeCounts {
   std::size_t edges = 0;          // unique undirected edges
@@ -19,7 +32,7 @@ struct EdgeCounts {
 EdgeCounts count_edges(const TriMesh& mesh);
 
 // Checks the mesh and fixes what can be fixed without guessing: a globally inverted winding (negative
-// volume) is flipped, and a note says so in `notes`. Throws softbody::InputError saying what is wrong
+// volume) is flipped, and a note says so in `notes`. Throws MeshDefectError saying what is wrong
 // (boundary or non-manifold edge counts, inconsistent winding, degenerate faces, zero volume).
 void validate_closed(TriMesh& mesh, std::vector<std::string>& notes);
 

@@ -1,9 +1,10 @@
-// Generator or file → weld → validate: the closed surface a body is built from.
+// Generator or file → weld → repair (when asked) → validate: the closed surface a body is built from.
 #include "mesh/load.hpp"
 
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "geometry/mesh_repair.hpp"
 #include "mesh/check.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/import.hpp"
@@ -44,15 +45,50 @@ void note_suspicious_shapes(const TriMesh& mesh, std::vector<std::string>& notes
   }
 }
 
+// What the repair step that fixes `defect` does, or "" where repair has no step for it.
+std::string repair_action(MeshDefect defect) {
+  switch (defect) {
+    case MeshDefect::Open: return "fill the holes";
+    case MeshDefect::NonManifold: return "split the non-manifold edges";
+    case MeshDefect::Winding: return "orient the faces consistently";
+    case MeshDefect::Degenerate: return "remove the degenerate faces";
+    case MeshDefect::TooSmall:
+    case MeshDefect::NoVolume: return "";
+  }
+  return "";
+}
+
 }  // namespace
 
+std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file) {
+  const std::string action = repair_action(defect);
+  if (action.empty()) return "";
+  if (!repair.enabled) {
+    return "; add \"repair\": true to the body to " + action + " (or write a repaired copy: softbody prepare " +
+           file.string() + " OUT.obj)";
+  }
+  if (defect == MeshDefect::Open && !repair.holes) return "; repair.holes is false: set it to true to " + action;
+  if (defect == MeshDefect::Degenerate && !repair.degenerate) return "; repair.degenerate is false: set it to true to " + action;
+  return "; still so after \"repair\" (see its notes)";
+}
+
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits) {
+                            const MeshLimits& limits, const RepairOptions& repair) {
   const std::string what = file.empty() ? spec : file.string();
   try {
     LoadedMesh loaded;
     loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits));
-    validate_closed(loaded.mesh, loaded.notes);
+    if (!file.empty() && repair.enabled) {
+      geometry::RepairedMesh repaired = geometry::repair_mesh(loaded.mesh, repair);
+      loaded.mesh = std::move(repaired.mesh);
+      loaded.notes = std::move(repaired.notes);
+    }
+    try {
+      validate_closed(loaded.mesh, loaded.notes);
+    } catch (const MeshDefectError& e) {
+      if (file.empty()) throw;
+      throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file));
+    }
     if (!file.empty()) note_suspicious_shapes(loaded.mesh, loaded.notes);
     for (std::string& note : loaded.notes) note = context + ": " + what + ": " + note;
     return loaded;

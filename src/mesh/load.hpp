@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "mesh/check.hpp"
 #include "mesh/mesh_limits.hpp"
+#include "mesh/repair_options.hpp"
 #include "mesh/trimesh.hpp"
 
 namespace mesh {
@@ -16,9 +18,14 @@ struct LoadedMesh {
 };
 
 // `spec` is a generator ("icosphere:3") or, with `file` set, the spec as written in the scene.
-// Throws softbody::InputError whose message starts with `context` (e.g. "scene.json: bodies.0.mesh").
-// A file is read within `limits` (mesh/import.hpp).
+// Throws softbody::InputError whose message starts with `context` (e.g. "scene.json: bodies.0.mesh"); a
+// defect that repair fixes ends with the option that fixes it. A file is read within `limits`
+// (mesh/import.hpp), welded, and repaired (geometry/mesh_repair.hpp) when `repair.enabled`, before validation.
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits = {});
+                            const MeshLimits& limits = {}, const RepairOptions& repair = {});
+
+// The words appended to a validation error of a file: which repair fixes `defect` ("" where none does).
+// With `repair.enabled` the mesh was repaired already: the words say which step was off, or that repair was not enough.
+std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file);
 
 }  // namespace mesh

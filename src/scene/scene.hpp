@@ -10,6 +10,7 @@
 #include "core/gl_backend.hpp"
 #include "core/vec.hpp"
 #include "mesh/mesh_limits.hpp"
+#include "mesh/repair_options.hpp"
 #include "sim/intent.hpp"
 #include "sim/settings.hpp"
 
@@ -32,6 +33,7 @@ struct Body {
   double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
   bool split = false;                // "split": each separate closed part of the mesh becomes its own body
+  mesh::RepairOptions repair;        // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
   Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...}
                            // instead of numbers, resolved against the mesh by sim/intent.hpp

@@ -283,6 +283,27 @@ void read_pressure(ObjectReader& body_reader, Body& body) {
   body.intent.pressure = intent;
 }
 
+// "repair": true | false, or {"degenerate", "holes": booleans (default true), "parts": "keep" | "largest"}.
+void read_repair(ObjectReader& body_reader, Body& body) {
+  if (!body_reader.has("repair")) return;
+  const json& value = body_reader.at("repair");
+  if (value.is_boolean()) {
+    if (value.get<bool>()) body.repair = mesh::full_repair();
+    return;
+  }
+  if (!value.is_object()) {
+    body_reader.fail(body_reader.child("repair"), "expected true, false or an object of repair steps", &value);
+  }
+  ObjectReader r(value, body_reader.child("repair"), body_reader.file());
+  mesh::RepairOptions repair = mesh::full_repair();
+  repair.degenerate = r.boolean("degenerate", repair.degenerate);
+  repair.holes = r.boolean("holes", repair.holes);
+  repair.parts = r.choice<mesh::PartsPolicy>("parts", repair.parts,
+                                             {{"keep", mesh::PartsPolicy::Keep}, {"largest", mesh::PartsPolicy::Largest}});
+  r.reject_unknown();
+  body.repair = repair;
+}
+
 Body read_body(const json& node, const std::string& path, const fs::path& file) {
   ObjectReader r(node, path, file);
   Body body;
@@ -295,6 +316,7 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   read_damping(r, body);
   read_pressure(r, body);
   body.split = r.boolean("split", body.split);
+  read_repair(r, body);
   body.color = r.color("color", body.color);
   body.pattern = r.choice<Pattern>("pattern", body.pattern,
                                    {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});

@@ -99,7 +99,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
-    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits);
+    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits, spec.repair);
     for (std::string& note : loaded.notes) {
       if (spec.split && note.find("separate closed parts") != std::string::npos) continue;  // split below
       notes.push_back(std::move(note));

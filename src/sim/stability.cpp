@@ -19,7 +19,6 @@ using Mat3 = Eigen::Matrix3d;
 // Power iterations give λ_max from below; this margin makes the estimate conservative (the iterates
 // converge to within about 1 % on icospheres, and the pressure-stretched state moves λ by a few %).
 constexpr double kPowerMargin = 1.05;
-constexpr int kPowerIterations = 100;
 
 // Geometric stiffness share of a stretched spring, k (1 − L0/|d|) across the spring; compressed: 0.
 double geometric_share(double length, double rest_length) {
