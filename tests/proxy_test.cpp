@@ -124,6 +124,17 @@ TEST(ProxyScene, ReadsBothFormsAndRefusesOthers) {
             std::string::npos) << error_of(R"({ "resolution": { "edges": 1 } })");
 }
 
+TEST(ProxyScene, AnEdgeLengthFarTooShortIsBadInput) {
+  // Unit sphere, area 4π: L = 1e-4 m would make about 2·4π / (√3·1e-8) ≈ 1.5e9 vertices.
+  try {
+    testing_support::world_from_text(R"({ "bodies": [ { "mesh": "icosphere:1", "resolution": { "edge_length": 1e-4 } } ] })");
+    ADD_FAILURE() << "no error";
+  } catch (const softbody::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies.0.resolution.edge_length: expected an edge length giving at most 1000000 vertices"),
+              std::string::npos) << e.what();
+  }
+}
+
 constexpr const char* kProxyAndPlain = R"({
   "bodies": [ { "mesh": "icosphere:4", "resolution": 300, "position": [0, 2, 0] },
               { "mesh": "icosphere:2", "position": [3, 2, 0] } ] })";
