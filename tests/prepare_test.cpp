@@ -112,7 +112,7 @@ TEST(Prepare, BadInputExitsTwoAndWritesNothing) {
   for (const Case& c : {Case{testing_support::data_path("not_a_mesh.obj") + " " + out.string(), "error: prepare: mesh "},
                         Case{(dir / "missing.obj").string() + " " + out.string(), "does not exist"},
                         Case{in.string() + " " + (dir / "out.xyz").string(), "expected an output file name ending in .obj, .ply or .stl"},
-                        Case{in.string() + " " + out.string() + " --resolution 2000", "--resolution needs the remesher (not in this build)"},
+                        Case{in.string() + " " + out.string() + " --resolution 10", "expected a vertex count from 20 to 1000000"},
                         Case{in.string() + " " + out.string() + " --parts some", "--parts"}}) {
     const auto result = run_softbody("prepare " + c.arguments);
     EXPECT_EQ(result.exit_status, 2) << c.arguments << "\n" << result.output;
@@ -120,6 +120,19 @@ TEST(Prepare, BadInputExitsTwoAndWritesNothing) {
     EXPECT_FALSE(std::filesystem::exists(out)) << c.arguments;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.xyz"));
   }
+}
+
+TEST(Prepare, ResolutionRemeshesTheRepairedMeshToAboutThatManyVertices) {
+  const auto dir = scratch_dir("prepare_resolution");
+  const std::filesystem::path in = write_holed_sphere(dir);
+  const std::filesystem::path out = dir / "proxy.obj";
+  const auto result = run_softbody("prepare " + in.string() + " " + out.string() + " --resolution 300");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("note: remeshed isotropically from "), std::string::npos) << result.output;
+  const mesh::LoadedMesh back = mesh::load_closed_mesh("proxy.obj", out, "ctx");
+  const double vertices = static_cast<double>(back.mesh.vertices.size());
+  EXPECT_NEAR(vertices, 300.0, 30.0);
+  EXPECT_NEAR(mesh::signed_volume(back.mesh), 4.0 / 3.0 * 3.14159265358979 * 0.98, 0.1) << "about the unit sphere's";
 }
 
 TEST(Prepare, HelpListsTheCommand) {

@@ -103,6 +103,10 @@ int run_info(const InfoOptions& options) {
   const auto& bodies = run.world.model.bodies;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.model.of(bodies[b], run.world.state.x)), estimate.bodies[b]);
+    if (const sim::Skin* skin = run.world.model.skin_of(static_cast<int>(b))) {
+      std::printf("  simulated on a proxy; render and export show its detailed mesh: %zu vertices, %zu faces\n",
+                  skin->vertex_count(), skin->triangles.size());
+    }
   }
   std::printf("estimated stable dt (limiting body %d; auto uses %.2f x it; frame interval 1/%d s):\n",
               estimate.limiting_body, sim::kAutoDtSafety, run.scene.fps);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "geometry/remesh.hpp"
 #include "core/errors.hpp"
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
@@ -36,9 +37,9 @@ void print_summary(const std::string& output, const mesh::TriMesh& prepared, dou
 
 int run_prepare(const PrepareOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  if (options.resolution) {
+  if (options.resolution && (*options.resolution < 20 || *options.resolution > 1000000)) {
     throw softbody::InputError("--resolution " + std::to_string(*options.resolution) +
-                               ": --resolution needs the remesher (not in this build)");
+                               ": expected a vertex count from 20 to 1000000 (the remeshed surface's)");
   }
   if (!output::mesh_file_format_of(options.output)) {
     throw softbody::InputError(options.output + ": expected an output file name ending in .obj, .ply or .stl");
@@ -47,9 +48,15 @@ int run_prepare(const PrepareOptions& options) {
   repair.parts = options.parts;
   const mesh::LoadedMesh prepared = mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair);
   for (const std::string& note : prepared.notes) std::cerr << "note: " << note << "\n";
-  output::write_mesh_file(options.output, prepared.mesh, "prepared by softbody prepare from " + options.input);
+  mesh::TriMesh result = prepared.mesh;
+  if (options.resolution) {
+    result = geometry::remesh_to_vertex_count(prepared.mesh, *options.resolution);
+    std::cerr << "note: remeshed isotropically from " << prepared.mesh.vertices.size() << " to " << result.vertices.size()
+              << " vertices (--resolution " << *options.resolution << ")\n";
+  }
+  output::write_mesh_file(options.output, result, "prepared by softbody prepare from " + options.input);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  print_summary(options.output, prepared.mesh, wall_s);
+  print_summary(options.output, result, wall_s);
   return 0;
 }
 
@@ -63,7 +70,7 @@ Action register_prepare(CLI::App& parent) {
   command->add_option("OUT", options->output, "Where to write the prepared mesh: .obj, .ply or .stl (written whole or not at all)")
       ->required();
   command->add_option("--resolution", options->resolution,
-                      "Remesh to about N vertices for the simulation (needs the remesher: not in this build)")
+                      "Also remesh isotropically to about N vertices (CGAL; what a body's \"resolution\": N simulates on)")
       ->type_name("N")
       ->check(CLI::Range(4, 10'000'000));
   command->add_option("--parts", options->parts,

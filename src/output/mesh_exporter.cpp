@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "output/atomic_file.hpp"
+#include "output/shown_surface.hpp"
 
 namespace output {
 namespace {
@@ -39,15 +40,15 @@ void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
 void MeshExporter::finish(bool /*complete*/) {}
 
 void append_obj_object(std::string& text, const sim::World& world, int body_index, int first_index) {
-  const sim::Body& body = world.model.bodies[static_cast<std::size_t>(body_index)];
   char line[160];
   std::snprintf(line, sizeof line, "o body%d\n", body_index);
   text += line;
-  for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
+  ShownPositions shown;
+  for (const softbody::Vec3& p : shown.of(world, body_index)) {
     std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
     text += line;
   }
-  for (const softbody::Triangle& f : body.topology.faces) {
+  for (const softbody::Triangle& f : shown_triangles(world, body_index)) {
     std::snprintf(line, sizeof line, "f %d %d %d\n", f[0] + first_index, f[1] + first_index, f[2] + first_index);
     text += line;
   }
@@ -61,16 +62,17 @@ std::string world_to_obj(const sim::World& world, double time_s) {
   int first_index = 1;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     append_obj_object(text, world, static_cast<int>(b), first_index);
-    first_index += world.model.bodies[b].vertex_count;
+    first_index += shown_vertex_count(world, static_cast<int>(b));
   }
   return text;
 }
 
 std::string world_to_ply(const sim::World& world, double time_s) {
+  const int bodies = static_cast<int>(world.model.bodies.size());
   std::size_t vertices = 0, faces = 0;
-  for (const sim::Body& body : world.model.bodies) {
-    vertices += static_cast<std::size_t>(body.vertex_count);
-    faces += body.topology.faces.size();
+  for (int b = 0; b < bodies; ++b) {
+    vertices += static_cast<std::size_t>(shown_vertex_count(world, b));
+    faces += shown_triangles(world, b).size();
   }
   char header[512];
   std::snprintf(header, sizeof header,
@@ -80,16 +82,19 @@ std::string world_to_ply(const sim::World& world, double time_s) {
                 time_s, vertices, faces);
   std::string bytes = header;
   bytes.reserve(bytes.size() + vertices * 12 + faces * 13);
-  for (const sim::Body& body : world.model.bodies) {
-    for (const softbody::Vec3& p : world.model.of(body, world.state.x)) {
+  ShownPositions shown;
+  for (int b = 0; b < bodies; ++b) {
+    for (const softbody::Vec3& p : shown.of(world, b)) {
       for (int axis = 0; axis < 3; ++axis) append_binary(bytes, static_cast<float>(p[axis]));
     }
   }
-  for (const sim::Body& body : world.model.bodies) {
-    for (const softbody::Triangle& f : body.topology.faces) {
+  int first_vertex = 0;  // the body's first vertex in the file's one vertex list
+  for (int b = 0; b < bodies; ++b) {
+    for (const softbody::Triangle& f : shown_triangles(world, b)) {
       append_binary(bytes, static_cast<std::uint8_t>(3));
-      for (int corner : f) append_binary(bytes, static_cast<std::int32_t>(corner + body.first_vertex));
+      for (int corner : f) append_binary(bytes, static_cast<std::int32_t>(corner + first_vertex));
     }
+    first_vertex += shown_vertex_count(world, b);
   }
   return bytes;
 }

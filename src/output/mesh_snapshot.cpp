@@ -1,20 +1,23 @@
 // World → FrameMesh.
 #include "output/mesh_snapshot.hpp"
 
+#include "output/shown_surface.hpp"
+
 namespace output {
 
 void snapshot_surfaces(const sim::World& world, std::vector<render::FrameMesh>& meshes) {
-  const std::vector<sim::Body>& bodies = world.model.bodies;
-  if (meshes.size() != bodies.size()) {
-    meshes.assign(bodies.size(), {});
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      for (const softbody::Triangle& t : bodies[b].topology.faces) {
+  const std::size_t bodies = world.model.bodies.size();
+  if (meshes.size() != bodies) {
+    meshes.assign(bodies, {});
+    for (std::size_t b = 0; b < bodies; ++b) {
+      for (const softbody::Triangle& t : shown_triangles(world, static_cast<int>(b))) {
         meshes[b].triangles.emplace_back(t[0], t[1], t[2]);
       }
     }
   }
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const std::span<const softbody::Vec3> x = world.model.of(bodies[b], world.state.x);
+  ShownPositions shown;  // a skin's scratch (one allocation per frame: small beside drawing it)
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const std::span<const softbody::Vec3> x = shown.of(world, static_cast<int>(b));
     std::vector<glm::vec3>& positions = meshes[b].positions;
     positions.resize(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {

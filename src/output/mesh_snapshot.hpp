@@ -9,8 +9,9 @@
 
 namespace output {
 
-// Fills `meshes` with one FrameMesh per body of `world`: positions converted to float every call,
-// triangles copied on the first call only (topology does not change during a run).
+// Fills `meshes` with one FrameMesh per body of `world`, of the surface it shows (output/shown_surface.hpp:
+// the detailed mesh of a body simulated on a proxy): positions converted to float every call, triangles
+// copied on the first call only (topology does not change during a run).
 void snapshot_surfaces(const sim::World& world, std::vector<render::FrameMesh>& meshes);
 
 }  // namespace output

@@ -8,6 +8,7 @@
 
 #include "output/atomic_file.hpp"
 #include "output/mesh_exporter.hpp"
+#include "output/shown_surface.hpp"
 
 namespace output {
 namespace {
@@ -76,7 +77,7 @@ void PointCacheExporter::on_frame(int index, double time_s, const sim::World& wo
     first_frame_ = index;
     for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
       meshes_obj_.push_back(body_to_obj(world, static_cast<int>(b), time_s));
-      bodies_.push_back({world.model.bodies[b].vertex_count, {}, {}});
+      bodies_.push_back({shown_vertex_count(world, static_cast<int>(b)), {}, {}});
     }
   } else if (index != last_frame_ + 1) {
     throw std::logic_error("a point cache needs frames one after another, got " + std::to_string(index) +
@@ -85,7 +86,7 @@ void PointCacheExporter::on_frame(int index, double time_s, const sim::World& wo
   last_frame_ = index;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     PointSamples& samples = bodies_[b];
-    for (const softbody::Vec3& p : world.model.of(world.model.bodies[b], world.state.x)) {
+    for (const softbody::Vec3& p : shown_.of(world, static_cast<int>(b))) {
       for (int axis = 0; axis < 3; ++axis) samples.xyz.push_back(static_cast<float>(p[axis]));
     }
     samples.times_s.push_back(static_cast<float>(time_s));

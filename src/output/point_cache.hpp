@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frames/frame_sink.hpp"
+#include "output/shown_surface.hpp"
 
 namespace output {
 
@@ -48,6 +49,7 @@ class PointCacheExporter final : public frames::FrameSink {
   int last_frame_ = -1;
   std::vector<std::string> meshes_obj_;  // per body, from the first frame
   std::vector<PointSamples> bodies_;
+  ShownPositions shown_;  // the skins' scratch
 };
 
 // One body of `world` as OBJ text ("o body<N>", its vertices, 1-based faces).

@@ -34,6 +34,11 @@ struct Body {
   double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
   bool split = false;                // "split": each separate closed part of the mesh becomes its own body
   mesh::RepairOptions repair;        // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
+  // "resolution": N simulates the body on an isotropic remesh of its mesh with about N vertices (the proxy),
+  // or {"edge_length": L} on one with edges of about L [m, placed]; the mesh itself follows the proxy for
+  // render and export. Neither (0): the mesh is simulated as it is.
+  int resolution_vertices = 0;
+  double resolution_edge_length_m = 0.0;
   Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...}
                            // instead of numbers, resolved against the mesh by sim/intent.hpp

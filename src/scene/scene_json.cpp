@@ -304,6 +304,23 @@ void read_repair(ObjectReader& body_reader, Body& body) {
   body.repair = repair;
 }
 
+// "resolution": N (the proxy's vertex count) or {"edge_length": L} (its edge length, metres once placed);
+// null as if left out.
+void read_resolution(ObjectReader& r, Body& body) {
+  if (!r.has("resolution") || r.at("resolution").is_null()) return;  // null: simulate the mesh as it is
+  const json& value = r.at("resolution");
+  if (value.is_object()) {
+    ObjectReader inner(value, r.child("resolution"), r.file());
+    if (!inner.has("edge_length")) {
+      inner.fail(r.child("resolution"), "expected {\"edge_length\": L} with L > 0 in metres", &value);
+    }
+    body.resolution_edge_length_m = inner.number("edge_length", 0.0, kPositive);
+    inner.reject_unknown();
+    return;
+  }
+  body.resolution_vertices = r.integer("resolution", 0, 20, 1000000);
+}
+
 Body read_body(const json& node, const std::string& path, const fs::path& file) {
   ObjectReader r(node, path, file);
   Body body;
@@ -317,6 +334,7 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   read_pressure(r, body);
   body.split = r.boolean("split", body.split);
   read_repair(r, body);
+  read_resolution(r, body);
   body.color = r.color("color", body.color);
   body.pattern = r.choice<Pattern>("pattern", body.pattern,
                                    {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});

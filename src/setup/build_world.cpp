@@ -7,6 +7,8 @@
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
+#include "setup/bind_skin.hpp"
+#include "setup/simulation_proxy.hpp"
 #include "sim/intent.hpp"
 
 namespace setup {
@@ -106,11 +108,18 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
     }
     const std::vector<BodyPart> parts = parts_of(loaded, spec, key_path, notes);
     for (const BodyPart& part : parts) {
-      const std::vector<softbody::Vec3> x0 = place_mesh(part.mesh, spec);
+      const bool proxied = wants_proxy(spec);
+      const mesh::TriMesh proxy = proxied ? simulation_proxy(part.mesh, spec, key_path, notes) : mesh::TriMesh{};
+      const mesh::TriMesh& simulated = proxied ? proxy : part.mesh;
+      const std::vector<softbody::Vec3> x0 = place_mesh(simulated, spec);
       check_placed(x0, key_path);
-      sim::Body body = sim::build_body(x0, part.mesh.triangles, spec.mass_kg * part.mass_share);
+      sim::Body body = sim::build_body(x0, simulated.triangles, spec.mass_kg * part.mass_share);
       const sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
       body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path);
+      if (proxied) {
+        const int index = static_cast<int>(model.bodies.size());
+        model.skins.push_back(bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));
+      }
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));

@@ -8,6 +8,7 @@
 
 #include "sim/body.hpp"
 #include "sim/settings.hpp"
+#include "sim/skin.hpp"
 #include "sim/state.hpp"
 
 namespace sim {
@@ -21,6 +22,16 @@ struct Model {
   BodyContact body_contact;          // between bodies (searched only when there are several)
   Solver solver;                     // the integrator and its options (dt_s: the step a run asks for)
   std::vector<Vec3> initial_x;       // every vertex where the model placed it: the stable-dt advice's state
+  std::vector<Skin> skins;           // detailed meshes carried by bodies simulated on a proxy ("resolution");
+                                     // read by render and export only, in body order
+
+  // The skin body `body` carries, or null when render and export show its simulated surface.
+  const Skin* skin_of(int body) const {
+    for (const Skin& skin : skins) {
+      if (skin.body == body) return &skin;
+    }
+    return nullptr;
+  }
 
   std::size_t vertex_count() const { return mass_kg.size(); }
   // A body's slice of a per-vertex array of the state.
