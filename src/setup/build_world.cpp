@@ -7,6 +7,7 @@
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
+#include "sim/bending.hpp"
 #include "sim/intent.hpp"
 
 namespace setup {
@@ -109,8 +110,10 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       const std::vector<softbody::Vec3> x0 = place_mesh(part.mesh, spec);
       check_placed(x0, key_path);
       sim::Body body = sim::build_body(x0, part.mesh.triangles, spec.mass_kg * part.mass_share);
-      const sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
-      body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path);
+      sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
+      raw.bending_N_per_m = spec.bending_N_per_m;
+      body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path, notes);
+      if (body.params.bending_N_per_m > 0.0) sim::add_bending_links(body, x0);  // none: no links, no cost
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));
