@@ -48,13 +48,14 @@ TensionSystem tension_system(const Topology& t, std::span<const Vec3> x, double 
   return system;
 }
 
-// The least-squares solution of A t = b.
-Eigen::VectorXd least_squares(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b) {
+// The least-squares solution of A t = b, to |Aᵀ(A t − b)| ≤ tolerance |Aᵀ b|, from `guess` when given.
+Eigen::VectorXd least_squares(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, double tolerance = 1e-12,
+                              const Eigen::VectorXd* guess = nullptr) {
   Eigen::LeastSquaresConjugateGradient<Eigen::SparseMatrix<double>> solver;
-  solver.setTolerance(1e-12);
+  solver.setTolerance(tolerance);
   solver.setMaxIterations(20000);
   solver.compute(A);
-  return solver.solve(b);
+  return guess ? Eigen::VectorXd(solver.solveWithGuess(b, *guess)) : Eigen::VectorXd(solver.solve(b));
 }
 
 // Edge tensions t_e [N] per unit nRT that balance the gas at shape x, vertex by vertex (tension_system):
@@ -103,7 +104,7 @@ GasPerStiffness gas_per_stiffness(const PressureIntent& intent, const Body& body
 // leave every rest length L0 = L − t/k at least kShortestRestFraction · L is taken: the closest balance with
 // springs no more than doubled in length.
 constexpr double kShortestRestFraction = 0.5;  // L0 ≥ L/2: no spring starts stretched beyond twice its rest length
-constexpr int kRegularisationBisections = 24;
+constexpr int kRegularisationBisections = 10;  // log α to 10/2^10 of a decade
 
 struct ClosestEquilibrium {
   std::vector<double> rest_length_m;
@@ -111,9 +112,10 @@ struct ClosestEquilibrium {
   double inflation = 0;          // the mean strain it reaches (the intent's measure)
 };
 
-// The regularised tensions for weight α [N] (see above): least squares of [A; α I] t = [nRT b; α T0].
+// The regularised tensions for weight α [N] (see above): least squares of [A; α I] t = [nRT b; α T0], from the
+// guess t. A tolerance of 1e-9 puts t well within what the bisection resolves.
 Eigen::VectorXd regularised_tensions(const TensionSystem& system, const Eigen::VectorXd& gas,
-                                     const Eigen::VectorXd& membrane, double alpha) {
+                                     const Eigen::VectorXd& membrane, double alpha, const Eigen::VectorXd& guess) {
   const Eigen::Index rows = system.A.rows(), m = system.A.cols();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(system.A.nonZeros() + m));
@@ -127,7 +129,7 @@ Eigen::VectorXd regularised_tensions(const TensionSystem& system, const Eigen::V
   stacked.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd rhs(rows + m);
   rhs << gas, alpha * membrane;
-  return least_squares(stacked, rhs);
+  return least_squares(stacked, rhs, 1e-9, &guess);
 }
 
 bool rest_lengths_allowed(const Eigen::VectorXd& tension, const std::vector<double>& L, double k) {
@@ -145,12 +147,12 @@ ClosestEquilibrium closest_equilibrium(const Body& body, std::span<const Vec3> x
   const std::vector<double>& L = body.rest.edge_length_m;
   Eigen::VectorXd membrane(static_cast<Eigen::Index>(L.size()));
   for (std::size_t e = 0; e < L.size(); ++e) membrane[static_cast<Eigen::Index>(e)] = k * L[e] * inflation / (1.0 + inflation);
-  // Bisect log α between a weight that is exact-like and one that is the membrane (feasible for f < 1).
-  double low = -8.0, high = 4.0;  // log10 α
+  // Bisect log α between a weight that is nearly exact and one that is nearly the membrane (feasible for f < 1).
+  double low = -6.0, high = 4.0;  // log10 α
   Eigen::VectorXd best = membrane;
   for (int it = 0; it < kRegularisationBisections; ++it) {
     const double mid = 0.5 * (low + high);
-    const Eigen::VectorXd tension = regularised_tensions(system, gas, membrane, std::pow(10.0, mid));
+    const Eigen::VectorXd tension = regularised_tensions(system, gas, membrane, std::pow(10.0, mid), best);
     if (rest_lengths_allowed(tension, L, k)) {
       best = tension;
       high = mid;
