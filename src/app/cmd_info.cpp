@@ -20,6 +20,10 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
   std::printf("  lumped vertex masses %.4g..%.4g kg (total %.4g kg); k = %.4g N/m, c = %.4g N s/m, nRT = %.4g J\n",
               s.mass_min_kg, s.mass_max_kg, body.masses.total_kg, body.params.stiffness_N_per_m,
               body.params.damping_N_s_per_m, body.params.pressure_J);
+  if (!body.topology.bending_links.empty()) {
+    std::printf("  %zu bending links (one across each edge); k_b = %.4g N/m, c_b = %.4g N s/m\n",
+                body.topology.bending_links.size(), body.params.bending_N_per_m, body.params.bending_damping_N_s_per_m);
+  }
   std::printf("  lambda_max(M^-1 K/k) = %.4g 1/kg (%d power iterations, a fixed count; Gershgorin bound %.4g)\n",
               b.lambda_max_per_kg, sim::kPowerIterations, b.lambda_gershgorin_per_kg);
   std::printf("  omega_max = %.4g rad/s (springs %.4g, gas %.4g", b.omega_max(), std::sqrt(b.omega2_springs),

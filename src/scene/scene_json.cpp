@@ -321,6 +321,18 @@ void read_resolution(ObjectReader& r, Body& body) {
   body.resolution_vertices = r.integer("resolution", 0, 20, 1000000);
 }
 
+// "bending": k_b in N/m, or {"ratio": r} (k_b = r k, relative to the edge springs).
+void read_bending(ObjectReader& body_reader, Body& body) {
+  if (!body_reader.has("bending") || !body_reader.at("bending").is_object()) {
+    body.bending_N_per_m = body_reader.number("bending", body.bending_N_per_m, kNonNegative);
+    return;
+  }
+  ObjectReader r(body_reader.at("bending"), body_reader.child("bending"), body_reader.file());
+  if (!r.has("ratio")) r.fail(r.child("ratio"), "expected a ratio >= 0 of the bending links' stiffness to the edges'", nullptr);
+  body.intent.bending_ratio = r.number("ratio", 0.0, kNonNegative);
+  r.reject_unknown();
+}
+
 Body read_body(const json& node, const std::string& path, const fs::path& file) {
   ObjectReader r(node, path, file);
   Body body;
@@ -332,6 +344,7 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   read_stiffness(r, body);
   read_damping(r, body);
   read_pressure(r, body);
+  read_bending(r, body);
   body.split = r.boolean("split", body.split);
   read_repair(r, body);
   read_resolution(r, body);

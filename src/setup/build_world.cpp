@@ -9,6 +9,7 @@
 #include "mesh/parts.hpp"
 #include "setup/bind_skin.hpp"
 #include "setup/simulation_proxy.hpp"
+#include "sim/bending.hpp"
 #include "sim/intent.hpp"
 
 namespace setup {
@@ -114,8 +115,10 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       const std::vector<softbody::Vec3> x0 = place_mesh(simulated, spec);
       check_placed(x0, key_path);
       sim::Body body = sim::build_body(x0, simulated.triangles, spec.mass_kg * part.mass_share);
-      const sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
-      body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path);
+      sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
+      raw.bending_N_per_m = spec.bending_N_per_m;
+      body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path, notes);
+      if (body.params.bending_N_per_m > 0.0) sim::add_bending_links(body, x0);  // none: no links, no cost
       if (proxied) {
         const int index = static_cast<int>(model.bodies.size());
         model.skins.push_back(bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));

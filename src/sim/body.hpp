@@ -17,6 +17,9 @@ using softbody::Vec3;
 struct Topology {
   std::vector<std::array<int, 2>> edges;  // each unique mesh edge, one spring-damper (a < b, sorted)
   std::vector<Triangle> faces;            // counter-clockwise seen from outside
+  // Bending links (sim/bending.hpp): per interior edge, the two vertices opposite it in its two triangles
+  // (a < b, sorted, each pair once). Empty unless the body has bending stiffness.
+  std::vector<std::array<int, 2>> bending_links;
 };
 
 // The shape the springs and the gas rest at (the initial, placed shape unless intent changed it).
@@ -24,6 +27,7 @@ struct RestShape {
   std::vector<double> edge_length_m;  // per edge: L0 of its spring
   double volume_m3 = 0.0;             // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
   double mean_edge_m = 0.0;           // the mean of edge_length_m: sets body contact's search distance
+  std::vector<double> bending_length_m;  // per bending link: its length in the placed mesh [m]
 };
 
 // Lumped vertex masses: each face gives a third of its area share of the body's mass to each corner.
@@ -38,6 +42,8 @@ struct Params {
   double stiffness_N_per_m = 0.0;   // k: Hooke spring, F = -k (|d| - L0) d̂
   double damping_N_s_per_m = 0.0;   // c: damper along the spring, F = -c ((v_i - v_j)·d̂) d̂
   double pressure_J = 0.0;          // nRT: ideal gas, P = nRT / V  [Pa = J/m³]
+  double bending_N_per_m = 0.0;     // k_b: Hooke spring along each bending link (0: no links, no cost)
+  double bending_damping_N_s_per_m = 0.0;  // c_b = c k_b / k: the links' dampers, the edges' damping time c/k
 };
 
 struct Body {

@@ -62,8 +62,8 @@ class Dynamics {
   void forces(const State& state, std::vector<Vec3>& force);
   // a_i = f_i(x, v) / m_i for every vertex [m/s²]; `a` is resized here.
   void accelerations(const State& state, std::vector<Vec3>& a);
-  // f_i of gravity and the gas only, without springs and dampers [N] (xpbd's prediction: its springs and
-  // dampers are constraints); `force` is resized here. One thread.
+  // f_i of gravity and the gas only, without springs, dampers and bending links [N] (xpbd's prediction: those
+  // are its constraints); `force` is resized here. One thread.
   void gravity_and_gas_forces(const State& state, std::vector<Vec3>& force);
   // One forward or symplectic Euler step of `state` by dt, the update applied in the force evaluation's
   // last per-vertex pass (the same arithmetic as accelerations() and then the update: one pass fewer).
@@ -80,7 +80,8 @@ class Dynamics {
   void visit_body_forces_in_parallel(std::size_t b, const State& state, std::span<Vec3> f, bool body_contact, Use& use);
   template <FirstOrderUpdate kUpdate>
   void fused_first_order_step(State& state, double dt);
-  // Gravity, then the springs and dampers (one fused pass), summed into f (overwritten).
+  // Gravity, then the springs and dampers (one fused pass) and the bending links' (another), summed into f
+  // (overwritten).
   void gravity_and_spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                                  std::span<Vec3> f) const;
   // The smooth floor contact's forces added to f (only with floor.contact smooth; the other contacts are

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "sim/bending.hpp"
 #include "sim/forces.hpp"
 
 namespace sim {
@@ -32,6 +33,7 @@ double spring_energy(const Body& body, std::span<const Vec3> x) {
     const double stretch = (x[i] - x[j]).norm() - body.rest.edge_length_m[e];
     energy += 0.5 * body.params.stiffness_N_per_m * stretch * stretch;  // ½ k (|d| − L0)²
   }
+  if (!body.topology.bending_links.empty()) energy += bending_energy(body, x);  // the links are springs too
   return energy;
 }
 

@@ -15,7 +15,7 @@ Vec3 centre_of_mass(const Body& body, std::span<const Vec3> x);
 Vec3 momentum(const Body& body, std::span<const Vec3> v);
 // Σ ½ m_i |v_i|² [J].
 double kinetic_energy(const Body& body, std::span<const Vec3> v);
-// Σ_e ½ k (|d_e| − L0_e)² [J].
+// Σ_e ½ k (|d_e| − L0_e)² over the edges, plus the bending links' ½ k_b (|d| − ℓ0)² (sim/bending.hpp) [J].
 double spring_energy(const Body& body, std::span<const Vec3> x);
 // −nRT ln(V / V0) at the enclosed volume V [m³], V held at guarded_volume() [J]; 0 without gas.
 double gas_energy(const Body& body, double volume_m3);

@@ -13,6 +13,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sim/body.hpp"
 
@@ -33,6 +34,7 @@ struct BodyIntent {
   std::optional<StiffnessIntent> stiffness;  // instead of Params::stiffness_N_per_m
   std::optional<double> damping_ratio;       // ζ, of the breathing mode's critical damping
   std::optional<PressureIntent> pressure;    // instead of Params::pressure_J
+  std::optional<double> bending_ratio;       // r: Params::bending_N_per_m = r k (the edges' k after intent)
 };
 
 // λ_b of the breathing mode of the springs with k = 1 [1/kg].
@@ -50,10 +52,15 @@ double breathing_lambda(const Body& body, std::span<const Vec3> x);
 //                                stretched by f (mean strain) at the initial shape, vertex by vertex
 //                                (start "equilibrium": no pop), or the rest lengths kept and nRT chosen
 //                                for that equilibrium (start "rest": the body inflates, the paper's pop).
-// `raw` holds the constants given as numbers. May change body.rest.edge_length_m (and its mean). Throws
-// softbody::InputError (naming `key_path`, e.g. "scene.json: bodies.0") when the tension solve needs a negative
-// rest length.
+//                                Where the exact balance needs a rest length at or below zero (a non-convex
+//                                mesh), the closest balance with every rest length at least half its edge,
+//                                and a note with its residual force and the inflation it reaches.
+//   "bending" {"ratio": r}:     k_b = r k (after the stiffness intent), the bending links' stiffness; with
+//                               any k_b > 0, c_b = c k_b / k (sim/bending.hpp)
+// `raw` holds the constants given as numbers. May change body.rest.edge_length_m (and its mean); adds to
+// `notes` (each naming `key_path`). Throws softbody::InputError (naming `key_path`, e.g. "scene.json: bodies.0")
+// for an intent the body cannot have (inflation or bending without springs).
 Params resolve_params(const Params& raw, const BodyIntent& intent, Body& body, std::span<const Vec3> x,
-                      const std::string& key_path);
+                      const std::string& key_path, std::vector<std::string>& notes);
 
 }  // namespace sim

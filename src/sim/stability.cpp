@@ -25,22 +25,38 @@ double geometric_share(double length, double rest_length) {
   return length > rest_length ? 1.0 - rest_length / length : 0.0;
 }
 
-// y = K u with k = 1: K_e = d̂d̂ᵀ + g (I − d̂d̂ᵀ) on each edge (the spring's Hessian, compressions clamped).
-void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
-  y.assign(u.size(), Vec3::Zero());
-  const Topology& t = body.topology;
-  for (std::size_t e = 0; e < t.edges.size(); ++e) {
-    const auto [i, j] = t.edges[e];
+// y += weight · K u over these springs: K_e = d̂d̂ᵀ + g (I − d̂d̂ᵀ) on each (the spring's Hessian per unit
+// stiffness, compressions clamped).
+void add_spring_matvec(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double weight,
+                       std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const auto [i, j] = edges[e];
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     if (length == 0.0) continue;
     const Vec3 n = d / length;
     const Vec3 du = u[i] - u[j];
-    const double g = geometric_share(length, body.rest.edge_length_m[e]);
-    const Vec3 f = n * n.dot(du) + g * (du - n * n.dot(du));
+    const double g = geometric_share(length, rest[e]);
+    Vec3 f = n * n.dot(du) + g * (du - n * n.dot(du));
+    if (weight != 1.0) f *= weight;
     y[i] += f;
     y[j] -= f;
   }
+}
+
+// The bending links' stiffness relative to the edges', k_b / k (0 without links).
+double link_weight(const Body& body) {
+  const double k = body.params.stiffness_N_per_m;
+  return body.topology.bending_links.empty() || k <= 0.0 ? 0.0 : body.params.bending_N_per_m / k;
+}
+
+// y = K u with k = 1: the edges, plus the bending links weighted by k_b / k (then c_b / c is the same ratio,
+// so the damping stays proportional, C = (c/k) K).
+void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
+  y.assign(u.size(), Vec3::Zero());
+  add_spring_matvec(body.topology.edges, body.rest.edge_length_m, 1.0, x, u, y);
+  const double r = link_weight(body);
+  if (r > 0.0) add_spring_matvec(body.topology.bending_links, body.rest.bending_length_m, r, x, u, y);
 }
 
 // λ_max of M⁻¹K (k = 1) by power iterations with the M-weighted Rayleigh quotient uᵀKu / uᵀMu [1/kg].
@@ -80,6 +96,13 @@ double gershgorin_lambda(const Body& body, std::span<const Vec3> x) {
   for (std::size_t e = 0; e < t.edges.size(); ++e) {
     const auto [i, j] = t.edges[e];
     const double w = 2.0 * std::max(1.0, geometric_share((x[i] - x[j]).norm(), body.rest.edge_length_m[e]));
+    row[i] += w;
+    row[j] += w;
+  }
+  const double r = link_weight(body);
+  for (std::size_t l = 0; r > 0.0 && l < t.bending_links.size(); ++l) {  // the links' blocks, k_b / k each
+    const auto [i, j] = t.bending_links[l];
+    const double w = 2.0 * r * std::max(1.0, geometric_share((x[i] - x[j]).norm(), body.rest.bending_length_m[l]));
     row[i] += w;
     row[j] += w;
   }

@@ -2,7 +2,8 @@
 //
 // Design note. Linearised about the initial state, each body is M ẍ = −K x − C ẋ + gas, with K the
 // spring stiffness matrix, C = (c/k) K_dd the damper matrix (dampers act along the springs, so C has the
-// pattern of the springs' axial part K_dd) and a gas term. A mode of M⁻¹K_dd with eigenvalue λ [1/kg]
+// pattern of the springs' axial part K_dd) and a gas term. The bending links (sim/bending.hpp) are springs
+// with k_b and c_b = (c/k) k_b: K and C take them with the weight k_b / k, and C stays (c/k) K_dd. A mode of M⁻¹K_dd with eigenvalue λ [1/kg]
 // therefore has
 //     μ = k λ (1 + r_gas)   squared frequency [1/s²], r_gas = the gas's share relative to the springs
 //     γ = c λ              damping rate [1/s]           (ζ ω = γ / 2: proportional damping)
@@ -40,7 +41,7 @@ inline constexpr int kPowerIterations = 100;
 
 // What the estimate knows about one body's fastest modes.
 struct ModeBounds {
-  double lambda_max_per_kg = 0.0;       // λ_max of M⁻¹K_dd with k = 1, from power iterations [1/kg]
+  double lambda_max_per_kg = 0.0;       // λ_max of M⁻¹K_dd with k = 1 (links k_b/k), from power iterations [1/kg]
   double lambda_gershgorin_per_kg = 0.0;// Gershgorin's upper bound on the same: max_i (‖K_ii‖ + Σ_j ‖K_ij‖) / m_i
   double omega2_springs = 0.0;          // k λ [1/s²], with the stretched springs' geometric stiffness
   double omega2_gas = 0.0;              // the gas's local and breathing stiffness over the mass [1/s²]

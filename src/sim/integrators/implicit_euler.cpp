@@ -33,6 +33,18 @@ void ImplicitEuler::build_pattern(const Model& model, std::size_t vertex_count) 
       add_pattern_block(blocks.j, blocks.i);
       edges_.push_back(blocks);
     }
+    if (body.params.bending_N_per_m == 0.0) continue;
+    for (std::size_t l = 0; l < body.topology.bending_links.size(); ++l) {  // springs like the edges, own k_b, c_b
+      EdgeBlocks blocks;
+      blocks.i = body.first_vertex + body.topology.bending_links[l][0];
+      blocks.j = body.first_vertex + body.topology.bending_links[l][1];
+      blocks.rest_length_m = body.rest.bending_length_m[l];
+      blocks.stiffness_N_per_m = body.params.bending_N_per_m;
+      blocks.damping_N_s_per_m = body.params.bending_damping_N_s_per_m;
+      add_pattern_block(blocks.i, blocks.j);
+      add_pattern_block(blocks.j, blocks.i);
+      edges_.push_back(blocks);
+    }
   }
   for (std::size_t v = 0; v < vertex_count; ++v) add_pattern_block(static_cast<int>(v), static_cast<int>(v));
   const auto size = static_cast<Eigen::Index>(3 * vertex_count);

@@ -50,7 +50,18 @@ void IncrementalPotential::build(const Model& model) {
       // A closed, consistently wound mesh has both; without one side the edge gets no curvature term.
       edge.across_ij = ij == across.end() ? -1 : first + ij->second;
       edge.across_ji = ji == across.end() ? -1 : first + ji->second;
+      edge.stiffness_N_per_m = body.params.stiffness_N_per_m;
+      edge.damping_N_s_per_m = body.params.damping_N_s_per_m;
       edges_.push_back(edge);
+    }
+    if (body.params.bending_N_per_m != 0.0) {
+      for (std::size_t l = 0; l < body.topology.bending_links.size(); ++l) {  // a spring, no face across it
+        const auto [i, j] = body.topology.bending_links[l];
+        pairs_.push_back({first + i, first + j});
+        rest_length_m_.push_back(body.rest.bending_length_m[l]);
+        edges_.push_back({static_cast<int>(b), -1, -1, body.params.bending_N_per_m,
+                          body.params.bending_damping_N_s_per_m});
+      }
     }
     if (body.params.pressure_J != 0.0) {
       gas_.push_back({static_cast<int>(b), std::vector<Vec3>(static_cast<std::size_t>(body.vertex_count))});
@@ -84,11 +95,11 @@ double IncrementalPotential::energy(const Model& model, std::span<const Vec3> x,
   double springs = 0.0, dampers = 0.0;
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const auto [i, j] = pairs_[e];
-    const Params& params = model.bodies[edges_[e].body].params;
+    const Edge& edge = edges_[e];
     const double stretch = (x[i] - x[j]).norm() - rest_length_m_[e];
-    springs += params.stiffness_N_per_m * stretch * stretch;  // Σ k (|d| − L0)², halved below
+    springs += edge.stiffness_N_per_m * stretch * stretch;  // Σ k (|d| − L0)², halved below
     const double along = ((x[i] - start_x_[i]) - (x[j] - start_x_[j])).dot(damper_axis_[e]);
-    dampers += params.damping_N_s_per_m * along * along;  // Σ c (Δx_ij·d̂)², over 2h below
+    dampers += edge.damping_N_s_per_m * along * along;  // Σ c (Δx_ij·d̂)², over 2h below
   }
   double gas = 0.0, gas_size = 0.0;
   for (const GasTerm& term : gas_) {
@@ -139,8 +150,7 @@ void IncrementalPotential::assemble(const Model& model, std::span<const Vec3> x,
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     const auto [i, j] = pairs_[e];
     const Edge& edge = edges_[e];
-    const Params& params = model.bodies[edge.body].params;
-    const double k = params.stiffness_N_per_m, c_over_h = params.damping_N_s_per_m / h_;
+    const double k = edge.stiffness_N_per_m, c_over_h = edge.damping_N_s_per_m / h_;
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     const Vec3& axis = damper_axis_[e];

@@ -19,6 +19,7 @@ namespace sim {
 // with the model's potential U and a dissipation potential D for the dampers [J]:
 //   gravity   U = −Σ m_i g·(x_i − x_n,i)                     (the constant m g·x_n dropped)
 //   springs   U = Σ_e ½ k (|d_e| − L0_e)²,  d_e = x_i − x_j
+//             (and the bending links, sim/bending.hpp: the same with k_b, ℓ0; no gas curvature term)
 //   gas       U = −nRT ln(V / V0) per body, V at guarded_volume()
 //   dampers   D = Σ_e c/(2h) ((Δx_i − Δx_j)·d̂_e)²,  Δx = x − x_n,  d̂_e = d_e / |d_e| at x_n
 // ∇D = c ((v'_i − v'_j)·d̂_e) d̂_e is the model's damper force along the spring with its direction taken at
@@ -70,6 +71,7 @@ class IncrementalPotential {
   struct Edge {
     int body = 0;
     int across_ij = 0, across_ji = 0;  // world index of the vertex opposite the directed edge i→j (and j→i)
+    double stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;  // the body's k, c (a bending link: k_b, c_b)
   };
 
   // Gas term `gas`: the area sums at x into area_sums_; returns the body's volume there, guarded [m³].

@@ -1,4 +1,5 @@
-// The XPBD substep: predict with gravity and the gas, one coloured pass over the edge constraints, velocities.
+// The XPBD substep: predict with gravity and the gas, one coloured pass over the edge constraints (and the
+// bending links), velocities.
 #include "sim/integrators/xpbd.hpp"
 
 #include <cmath>
@@ -6,15 +7,14 @@
 namespace sim {
 namespace {
 
-// One pass over body's edge constraints in colour order (see xpbd.hpp for Δλ). x: the body's positions,
-// previous: the same at the start of the substep, w: inverse masses [1/kg].
-void solve_edges(const Body& body, const EdgeColouring& colouring, double h, std::span<Vec3> x,
-                 std::span<const Vec3> previous, std::span<const double> w) {
-  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
+// One pass over distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ): the edges'
+// with k, c, or the bending links' with k_b, c_b. x: the body's positions, previous: the same at the start of
+// the substep, w: inverse masses [1/kg].
+void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double k, double c,
+                     const EdgeColouring& colouring, double h, std::span<Vec3> x, std::span<const Vec3> previous,
+                     std::span<const double> w) {
   if (k == 0.0 && c == 0.0) return;
   const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
-  const auto& edges = body.topology.edges;
-  const auto& rest = body.rest.edge_length_m;
   for (const int e : colouring.edges) {
     const auto [i, j] = edges[static_cast<std::size_t>(e)];
     const Vec3 d = x[i] - x[j];
@@ -34,7 +34,11 @@ void solve_edges(const Body& body, const EdgeColouring& colouring, double h, std
 void Xpbd::colour_once(const Model& model) {
   if (colourings_.size() == model.bodies.size()) return;
   colourings_.clear();
-  for (const Body& body : model.bodies) colourings_.push_back(colour_edges(body.topology.edges, body.vertex_count));
+  link_colourings_.clear();
+  for (const Body& body : model.bodies) {
+    colourings_.push_back(colour_edges(body.topology.edges, body.vertex_count));
+    link_colourings_.push_back(colour_edges(body.topology.bending_links, body.vertex_count));
+  }
 }
 
 void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
@@ -52,9 +56,14 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
     const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
-    solve_edges(body, colourings_[b], h, std::span<Vec3>(state.x.data() + first, count),
-                std::span<const Vec3>(previous_x_.data() + first, count),
-                std::span<const double>(model.inverse_mass.data() + first, count));
+    const std::span<Vec3> x(state.x.data() + first, count);
+    const std::span<const Vec3> previous(previous_x_.data() + first, count);
+    const std::span<const double> w(model.inverse_mass.data() + first, count);
+    solve_distances(body.topology.edges, body.rest.edge_length_m, body.params.stiffness_N_per_m,
+                    body.params.damping_N_s_per_m, colourings_[b], h, x, previous, w);
+    if (body.params.bending_N_per_m == 0.0) continue;
+    solve_distances(body.topology.bending_links, body.rest.bending_length_m, body.params.bending_N_per_m,
+                    body.params.bending_damping_N_s_per_m, link_colourings_[b], h, x, previous, w);
   }
   // 3. Velocities from the positions.
   const double inverse_h = 1.0 / h;

@@ -21,6 +21,8 @@ namespace sim {
 //                multiplied through by k h², which also serves k = 0 (a damper alone) and c = 0:
 //                  Δλ = (−k h² C − c h ∇C·(x − x_prev)) / ((k h² + c h)(w_i + w_j) + 1)      [m·kg]
 //                  x_i += w_i Δλ n̂,  x_j −= w_j Δλ n̂,  n̂ = (x_i − x_j)/|x_i − x_j|, w = 1/m
+//   2b. bending  the same pass over the bending links (sim/bending.hpp) with k_b, c_b and their own colouring,
+//                after the edges (bodies without bending stiffness skip it)
 //   3. velocity  v = (x − x_prev)/h
 //
 // Why it is the same model: for h → 0 the correction is Δx_i = −h² w_i (k C + c Ċ) n̂ = h² f_i/m_i, the
@@ -36,6 +38,7 @@ class Xpbd final : public Integrator {
   void colour_once(const Model& model);
 
   std::vector<EdgeColouring> colourings_;  // per body of the model, computed on the first step
+  std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
   std::vector<Vec3> previous_x_;           // scratch: x at the start of the substep
   std::vector<Vec3> force_;                // scratch: gravity + gas on every vertex [N]
 };
