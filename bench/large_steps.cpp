@@ -26,6 +26,7 @@ struct Options {
   std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "newton", "xpbd"};
   std::vector<int> rates{60, 240};         // implicit: dt = 1/rate
   std::vector<int> newton_rates{60, 240};  // newton: dt = 1/rate
+  std::vector<std::string> newton_contacts{"smooth", "friction"};  // newton: floor contacts (both in one run)
   std::vector<std::string> friction_too{"symplectic"};  // also run at their automatic step on the friction floor
   std::vector<int> bullet_rates{60, 240};  // Bullet: dt = 1/rate
   std::vector<double> reference_tolerances{1e-8, 1e-7};  // rk45: the first is the reference
@@ -94,10 +95,9 @@ std::string tolerance_label(double tolerance) {
   return text;
 }
 
-// The floor contact an integrator runs at step dt_s: smooth where the integrator takes it and is stable with
-// it (newton's potential has no smooth contact; implicit takes the contact explicitly: h < 2/ω_contact).
+// The floor contact an integrator runs at step dt_s: smooth where the integrator is stable with it (implicit
+// takes the contact explicitly: h < 2/ω_contact; newton's contacts are chosen by --newton-contacts).
 sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double dt_s) {
-  if (integrator == sim::IntegratorKind::Newton) return sim::FloorContact::Friction;
   if (integrator != sim::IntegratorKind::Implicit) return sim::FloorContact::Smooth;
   BounceSetup probe;
   probe.level = level;
@@ -132,7 +132,13 @@ void run_level(int level, const Options& o) {
     if (integrator == sim::IntegratorKind::Implicit || integrator == sim::IntegratorKind::Newton) {
       steps.clear();
       for (const int rate : integrator == sim::IntegratorKind::Newton ? o.newton_rates : o.rates) {
-        steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
+        if (integrator == sim::IntegratorKind::Implicit) {
+          steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
+          continue;
+        }
+        for (const std::string& contact : o.newton_contacts) {
+          steps.emplace_back(1.0 / rate, contact == "smooth" ? sim::FloorContact::Smooth : sim::FloorContact::Friction);
+        }
       }
     }
     for (const auto& [dt, contact] : steps) {
@@ -169,6 +175,9 @@ int main(int argc, char** argv) {
   cli.add_option("--rates", o.rates, "newton and implicit: steps per second (must divide 60 or be a multiple of it)")
       ->delimiter(',');
   cli.add_option("--newton-rates", o.newton_rates, "newton: steps per second")->delimiter(',');
+  cli.add_option("--newton-contacts", o.newton_contacts, "newton: floor contacts")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"smooth", "friction"}));
   cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
       ->delimiter(',');
   cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second")
