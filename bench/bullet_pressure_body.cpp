@@ -69,4 +69,21 @@ int BulletPressureBody::vertex_count() const { return parts_->body->m_nodes.size
 
 double BulletPressureBody::first_node_height_m() const { return parts_->body->m_nodes[0].m_x.y(); }
 
+std::vector<softbody::Vec3> BulletPressureBody::node_positions_m() const {
+  std::vector<softbody::Vec3> x;
+  x.reserve(static_cast<std::size_t>(vertex_count()));
+  for (int i = 0; i < vertex_count(); ++i) {
+    const btVector3& p = parts_->body->m_nodes[i].m_x;
+    x.emplace_back(p.x(), p.y(), p.z());
+  }
+  return x;
+}
+
+std::vector<double> BulletPressureBody::node_masses_kg() const {
+  std::vector<double> masses;
+  masses.reserve(static_cast<std::size_t>(vertex_count()));
+  for (int i = 0; i < vertex_count(); ++i) masses.push_back(1.0 / static_cast<double>(parts_->body->m_nodes[i].m_im));
+  return masses;
+}
+
 }  // namespace bench

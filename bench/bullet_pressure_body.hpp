@@ -34,6 +34,9 @@ class BulletPressureBody {
   int vertex_count() const;
   // Height of the body's first node [m] (to check that the body moved and stayed finite).
   double first_node_height_m() const;
+  // Every node's position [m] and mass [kg], in the order of BulletBodySpec::vertices_m.
+  std::vector<softbody::Vec3> node_positions_m() const;
+  std::vector<double> node_masses_kg() const;
 
  private:
   struct Parts;

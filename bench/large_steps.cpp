@@ -1,133 +1,205 @@
-// build/bench_large_steps: the bounce of issue 13 at large steps: wall time per simulated second, Newton
-// iterations, and the volume and centre of mass against a converged run, per integrator, level and dt.
+// build/bench_large_steps: issue 13's "what the user waits for": the bounce at icosphere levels, every
+// integrator at its automatic step (newton and implicit at the frame step and smaller ones) and Bullet's
+// btSoftBody, each run's wall time per simulated second and its error against a converged run of our model.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
-#include "scene/scene_json.hpp"
+#include "bounce_run.hpp"
 #include "setup/build_world.hpp"
-#include "sim/energy.hpp"
-#include "sim/forces.hpp"
-#include "sim/integrators/newton_euler.hpp"
 #include "sim/stability.hpp"
-#include "sim/world.hpp"
+#include "trajectory_error.hpp"
 
 namespace {
 
-using softbody::Vec3;
+using bench::BounceRecord;
+using bench::BounceSetup;
 
-constexpr double kSampleInterval_s = 1.0 / 60;  // every dt measured divides it
-
-// scenes/bounce.json as issue 13 measures it: friction floor, k 1000 N/m, c 1 N·s/m, nRT 50 J, 1 kg.
-sim::World bounce_world(int level, sim::IntegratorKind integrator, double dt_s) {
-  scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json",
-                                     {"floor.contact=friction", "bodies.0.stiffness=1000", "bodies.0.damping=1",
-                                      "bodies.0.pressure=50", "bodies.0.mass=1",
-                                      "bodies.0.mesh=icosphere:" + std::to_string(level)});
-  s.solver.integrator = integrator;
-  s.solver.dt_s = dt_s;
-  std::vector<std::string> notes;
-  return setup::build_world(s, notes);
-}
-
-struct Trajectory {
-  std::vector<double> volume_m3;  // every kSampleInterval_s, from t = 0
-  std::vector<Vec3> com_m;
-  double wall_s = 0.0;            // stepping only
-  long long steps = 0;
-  sim::NewtonEuler::Statistics newton;
+struct Options {
+  std::vector<int> levels{3};
+  std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "newton", "xpbd"};
+  std::vector<int> rates{60, 240};         // implicit: dt = 1/rate
+  std::vector<int> newton_rates{60, 240};  // newton: dt = 1/rate
+  std::vector<std::string> newton_contacts{"smooth", "friction"};  // newton: floor contacts (both in one run)
+  std::vector<std::string> friction_too{"symplectic"};  // also run at their automatic step on the friction floor
+  std::vector<int> bullet_rates{60, 240};  // Bullet: dt = 1/rate
+  std::vector<double> reference_tolerances{1e-8, 1e-7};  // rk45: the first is the reference
+  double duration_s = 3.0;
+  int repeats = 3;              // runs whose CPU time is below repeat_below_s are repeated: medians
+  double repeat_below_s = 5.0;
+  bool header = true;
 };
 
-void sample(const sim::World& world, Trajectory& t) {
-  const sim::Body& body = world.model.bodies[0];
-  t.volume_m3.push_back(sim::enclosed_volume(body.topology.faces, world.model.of(body, world.state.x)));
-  t.com_m.push_back(sim::centre_of_mass(body, world.model.of(body, world.state.x)));
+// One CSV row's description of a run.
+struct RowLabel {
+  std::string program, model, contact, step;
+};
+
+std::string csv_safe(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text.empty() ? "ok" : text;
 }
 
-Trajectory run(int level, sim::IntegratorKind integrator, double dt_s, double duration_s) {
-  sim::World world = bounce_world(level, integrator, dt_s);
-  Trajectory t;
-  sample(world, t);
-  const auto steps_per_sample = std::lround(kSampleInterval_s / dt_s);
-  const auto samples = std::lround(duration_s / kSampleInterval_s);
-  for (long s = 0; s < samples; ++s) {
-    const auto start = std::chrono::steady_clock::now();
-    for (long k = 0; k < steps_per_sample; ++k) world.step(dt_s);
-    t.wall_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    t.steps += steps_per_sample;
-    sample(world, t);
-  }
-  if (integrator == sim::IntegratorKind::Newton) {
-    t.newton = dynamic_cast<const sim::NewtonEuler&>(*world.workspace.integrator).statistics();
-  }
-  return t;
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-// The converged run: symplectic Euler at its automatic dt (0.7 × the estimated stable step), made to divide
-// the sample interval.
-Trajectory reference_run(int level, double duration_s, double& dt_s) {
-  const sim::World probe = bounce_world(level, sim::IntegratorKind::Symplectic, 1e-4);
-  const sim::StabilityEstimate estimate = sim::estimate_stability(probe.model, probe.state);
-  const double stable = sim::kAutoDtSafety * estimate.stable_dt(sim::IntegratorKind::Symplectic);
-  dt_s = kSampleInterval_s / std::ceil(kSampleInterval_s / stable);
-  return run(level, sim::IntegratorKind::Symplectic, dt_s, duration_s);
+// Runs `record` once, and again up to `repeats` times in all while a run takes under repeat_below_s: the
+// trajectories are deterministic, so only the wall time (the median) changes. Returns the first record.
+template <class Record>
+BounceRecord timed(const Options& o, Record record, int& runs) {
+  BounceRecord first = record();
+  std::vector<double> walls{first.wall_s}, cpus{first.cpu_s};
+  while (static_cast<int>(walls.size()) < o.repeats && first.cpu_s < o.repeat_below_s) {
+    const BounceRecord again = record();
+    walls.push_back(again.wall_s);
+    cpus.push_back(again.cpu_s);
+  }
+  first.wall_s = median(walls);
+  first.cpu_s = median(cpus);
+  runs = static_cast<int>(walls.size());
+  return first;
+}
+
+void print_row(int level, const Options& o, const RowLabel& label, const BounceRecord& r, int runs,
+               const BounceRecord* reference) {
+  bench::TrajectoryError e;
+  if (reference != nullptr) e = bench::trajectory_error(r, *reference);
+  const double simulated = bench::kBounceSampleInterval_s * static_cast<double>(std::max<std::size_t>(r.volume_m3.size(), 2) - 1);
+  std::printf("%d,%.4g,%s,%s,%s,%s,%.6g,%lld,%.5g,%.5g,%d,", level, o.duration_s, label.program.c_str(),
+              label.model.c_str(), label.contact.c_str(), label.step.c_str(), r.dt_s, r.steps, r.cpu_s / simulated,
+              r.wall_s / simulated, runs);
+  if (reference != nullptr) {
+    std::printf("%.4g,%.4g,%.4g,%.4g,", e.com_max_m, e.volume_worst_pct, e.rms_end_m, e.rms_samples_m);
+  } else {
+    std::printf(",,,,");
+  }
+  std::printf("%.3g,%s\n", r.newton_iterations_per_step, csv_safe(r.failure).c_str());
+  std::fflush(stdout);
+  std::fprintf(stderr, "level %d %s %s %s: %.4g CPU s, %.4g wall s per simulated s\n", level, label.program.c_str(),
+               label.contact.c_str(), label.step.c_str(), r.cpu_s / simulated, r.wall_s / simulated);
+}
+
+std::string tolerance_label(double tolerance) {
+  char text[32];
+  std::snprintf(text, sizeof text, "tolerance %.0e", tolerance);
+  return text;
+}
+
+// The floor contact an integrator runs at step dt_s: smooth where the integrator is stable with it (implicit
+// takes the contact explicitly: h < 2/ω_contact; newton's contacts are chosen by --newton-contacts).
+sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double dt_s) {
+  if (integrator != sim::IntegratorKind::Implicit) return sim::FloorContact::Smooth;
+  BounceSetup probe;
+  probe.level = level;
+  probe.integrator = integrator;
+  probe.dt_s = dt_s;
+  double dt = 0.0;
+  const sim::World world = bench::bounce_world(probe, dt);
+  const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
+  return dt <= sim::stable_dt(integrator, estimate.bodies.at(0)) ? sim::FloorContact::Smooth : sim::FloorContact::Friction;
+}
+
+void run_level(int level, const Options& o) {
+  BounceSetup reference_setup;
+  reference_setup.level = level;
+  reference_setup.integrator = sim::IntegratorKind::Rk45;
+  reference_setup.tolerance = o.reference_tolerances.at(0);
+  const BounceRecord reference = bench::record_bounce(reference_setup, o.duration_s);
+  print_row(level, o, {"reference rk45", "ours", "smooth", tolerance_label(reference_setup.tolerance)}, reference, 1,
+            nullptr);
+  for (std::size_t t = 1; t < o.reference_tolerances.size(); ++t) {
+    BounceSetup check = reference_setup;
+    check.tolerance = o.reference_tolerances[t];
+    print_row(level, o, {"reference check rk45", "ours", "smooth", tolerance_label(check.tolerance)},
+              bench::record_bounce(check, o.duration_s), 1, &reference);
+  }
+  for (const std::string& name : o.integrators) {
+    const sim::IntegratorKind integrator = *sim::integrator_named(name);
+    std::vector<std::pair<double, sim::FloorContact>> steps{{0.0, contact_for(level, integrator, 0.0)}};  // 0: auto
+    if (std::find(o.friction_too.begin(), o.friction_too.end(), name) != o.friction_too.end()) {
+      steps.emplace_back(0.0, sim::FloorContact::Friction);
+    }
+    if (integrator == sim::IntegratorKind::Implicit || integrator == sim::IntegratorKind::Newton) {
+      steps.clear();
+      for (const int rate : integrator == sim::IntegratorKind::Newton ? o.newton_rates : o.rates) {
+        if (integrator == sim::IntegratorKind::Implicit) {
+          steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
+          continue;
+        }
+        for (const std::string& contact : o.newton_contacts) {
+          steps.emplace_back(1.0 / rate, contact == "smooth" ? sim::FloorContact::Smooth : sim::FloorContact::Friction);
+        }
+      }
+    }
+    for (const auto& [dt, contact] : steps) {
+      BounceSetup setup;
+      setup.level = level;
+      setup.integrator = integrator;
+      setup.dt_s = dt;
+      setup.contact = contact;
+      int runs = 0;
+      const BounceRecord r = timed(o, [&] { return bench::record_bounce(setup, o.duration_s); }, runs);
+      std::string step = dt > 0.0 ? "1/" + std::to_string(std::lround(1.0 / dt)) + " s"
+                                  : integrator == sim::IntegratorKind::Xpbd ? "substeps auto" : "dt auto";
+      if (integrator == sim::IntegratorKind::Rk45) step += " (" + tolerance_label(setup.tolerance) + ")";
+      print_row(level, o, {"softbody " + name, "ours", sim::to_string(setup.contact), step}, r, runs, &reference);
+    }
+  }
+  for (const int rate : o.bullet_rates) {
+    int runs = 0;
+    const BounceRecord r = timed(o, [&] { return bench::record_bullet_bounce(level, 1.0 / rate, o.duration_s); }, runs);
+    print_row(level, o, {"bullet btSoftBody", "bullet (own model)", "bullet SDF_RS", "1/" + std::to_string(rate) + " s"},
+              r, runs, &reference);
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli("bench_large_steps: the bounce at large steps against a converged run (issue 13)");
-  std::vector<int> levels{3, 5};
-  std::vector<std::string> integrators{"newton", "implicit"};
-  std::vector<int> steps_per_second{60, 240};
-  double duration_s = 3.0;
-  bool reference = true;
-  cli.add_option("--levels", levels, "icosphere levels")->delimiter(',');
-  cli.add_option("--integrators", integrators, "integrators")->delimiter(',');
-  cli.add_option("--rates", steps_per_second, "steps per second (dt = 1/rate; must divide 60 or be a multiple)")
+  CLI::App cli("bench_large_steps: the bounce of issue 13, every integrator and Bullet, wall time per simulated "
+               "second against the error from a converged rk45 run (smooth floor); CSV on stdout");
+  Options o;
+  cli.add_option("--levels", o.levels, "icosphere levels")->delimiter(',');
+  cli.add_option("--integrators", o.integrators, "integrators (newton and implicit run at each of --rates)")
       ->delimiter(',');
-  cli.add_option("--duration", duration_s, "simulated seconds");
-  cli.add_flag("!--no-reference", reference, "skip the converged run (no errors reported)");
+  cli.add_option("--rates", o.rates, "newton and implicit: steps per second (must divide 60 or be a multiple of it)")
+      ->delimiter(',');
+  cli.add_option("--newton-rates", o.newton_rates, "newton: steps per second")->delimiter(',');
+  cli.add_option("--newton-contacts", o.newton_contacts, "newton: floor contacts")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"smooth", "friction"}));
+  cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
+      ->delimiter(',');
+  cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second")
+      ->delimiter(',');
+  cli.add_option("--reference-tolerances", o.reference_tolerances,
+                 "rk45 tolerances of the reference (the first) and of its checks")
+      ->delimiter(',');
+  cli.add_option("--duration", o.duration_s, "simulated seconds");
+  cli.add_option("--repeats", o.repeats, "runs (median wall time) of each setting that takes under --repeat-below");
+  cli.add_option("--repeat-below", o.repeat_below_s, "wall seconds");
+  cli.add_flag("!--no-header", o.header, "no CSV header line (to append)");
   CLI11_PARSE(cli, argc, argv);
-
-  std::printf("integrator level dt_s steps wall_s_per_sim_s us_per_step newton_per_step newton_most halvings "
-              "unconverged worst_volume_error end_volume_ratio worst_com_error_m\n");
-  for (int level : levels) {
-    Trajectory truth;
-    double reference_dt = 0.0;
-    if (reference) {
-      truth = reference_run(level, duration_s, reference_dt);
-      std::printf("reference %d %.4g %lld %.4g %.2f - - - - 0 1 0\n", level, reference_dt, truth.steps,
-                  truth.wall_s / duration_s, 1e6 * truth.wall_s / static_cast<double>(truth.steps));
-    }
-    for (const std::string& name : integrators) {
-      const std::optional<sim::IntegratorKind> integrator = sim::integrator_named(name);
-      if (!integrator) {
-        std::fprintf(stderr, "error: --integrators: expected integrator names, got %s\n", name.c_str());
-        return 2;
-      }
-      for (int rate : steps_per_second) {
-        const double dt = 1.0 / rate;
-        const Trajectory t = run(level, *integrator, dt, duration_s);
-        double worst_volume = 0.0, worst_com = 0.0;
-        for (std::size_t s = 0; reference && s < t.volume_m3.size(); ++s) {
-          worst_volume = std::max(worst_volume, std::abs(t.volume_m3[s] / truth.volume_m3[s] - 1.0));
-          worst_com = std::max(worst_com, (t.com_m[s] - truth.com_m[s]).norm());
-        }
-        const double end_ratio = reference ? t.volume_m3.back() / truth.volume_m3.back() : NAN;
-        const double per_step = t.newton.steps > 0 ? static_cast<double>(t.newton.iterations) / static_cast<double>(t.newton.steps) : 0.0;
-        std::printf("%s %d %.4g %lld %.4g %.1f %.2f %d %lld %lld %.4f %.4f %.4f\n", name.c_str(), level, dt, t.steps,
-                    t.wall_s / duration_s, 1e6 * t.wall_s / static_cast<double>(t.steps), per_step,
-                    t.newton.most_iterations, t.newton.halvings, t.newton.unconverged_steps, worst_volume, end_ratio,
-                    worst_com);
-        std::fflush(stdout);
-      }
+  for (const std::string& name : o.integrators) {
+    if (!sim::integrator_named(name)) {
+      std::fprintf(stderr, "error: --integrators: expected integrator names, got %s\n", name.c_str());
+      return 2;
     }
   }
+  if (o.header) {
+    std::printf("level,duration_s,program,model,contact,step,dt_s,steps,cpu_s_per_sim_s,wall_s_per_sim_s,runs,com_max_error_m,"
+                "volume_worst_error_pct,rms_end_m,rms_samples_m,newton_iterations_per_step,status\n");
+  }
+  for (const int level : o.levels) run_level(level, o);
   return 0;
 }

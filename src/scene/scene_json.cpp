@@ -195,12 +195,8 @@ void read_smooth_contact(ObjectReader& r, sim::SmoothContact& smooth) {
 // and gravity only, so a smooth contact (a force inside a(x, v)) would be left out of its steps.
 void refuse_unsupported_combinations(ObjectReader& top, const Scene& s) {
   if (s.solver.integrator != sim::IntegratorKind::Newton) return;
-  if (s.floor && s.floor->contact == sim::FloorContact::Smooth) {
-    top.fail("floor.contact", "paper or friction with solver.integrator newton (its potential has no smooth contact "
-                              "yet; the other integrators take \"smooth\")", &top.at("floor").at("contact"));
-  }
   if (s.collisions.contact == sim::BodyContactModel::Smooth && s.bodies.size() > 1) {
-    top.fail("collisions.contact", "impulse with solver.integrator newton (its potential has no smooth contact yet)",
+    top.fail("collisions.contact", "impulse with solver.integrator newton (its potential has the smooth floor but no body contact yet)",
              &top.at("collisions").at("contact"));
   }
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "sim/integrators/block_system.hpp"
+#include "sim/integrators/floor_potential.hpp"
 #include "sim/model.hpp"
 #include "sim/state.hpp"
 
@@ -22,6 +23,8 @@ namespace sim {
 //             (and the bending links, sim/bending.hpp: the same with k_b, ℓ0; no gas curvature term)
 //   gas       U = −nRT ln(V / V0) per body, V at guarded_volume()
 //   dampers   D = Σ_e c/(2h) ((Δx_i − Δx_j)·d̂_e)²,  Δx = x − x_n,  d̂_e = d_e / |d_e| at x_n
+//   smooth floor: its spring, dashpot and friction (sim/integrators/floor_potential.hpp; the dashpot's weight and
+//             the friction's normal force lagged: taken at x̂ by begin_step(), then wherever update_lags() says)
 // ∇D = c ((v'_i − v'_j)·d̂_e) d̂_e is the model's damper force along the spring with its direction taken at
 // the start of the step (an O(h) change of direction, within backward Euler's O(h) error), which makes the
 // damper a potential, so that E can be minimised with a line search; its Hessian (c/h) d̂d̂ᵀ is the exact
@@ -66,6 +69,9 @@ class IncrementalPotential {
   void assemble(const Model& model, std::span<const Vec3> x, Hessian form, BlockSystem& hessian,
                 Eigen::VectorXd& gradient);
   std::span<const GasTerm> gas_terms() const { return gas_; }
+  // True when E has lagged terms (the smooth floor); update_lags() takes them at x, which changes E.
+  bool has_lagged_terms() const { return floor_.active(); }
+  void update_lags(const Model& model, std::span<const Vec3> x);
 
  private:
   struct Edge {
@@ -88,6 +94,7 @@ class IncrementalPotential {
   std::vector<Vec3> start_x_;        // x_n
   std::vector<Vec3> predicted_x_;    // x̂ = x_n + h v_n
   std::vector<Vec3> damper_axis_;    // per edge: d̂ at x_n
+  FloorPotential floor_;
 };
 
 }  // namespace sim

@@ -18,6 +18,10 @@ constexpr int kMostNewtonIterations = 30;
 // conjugate-gradient iterations.
 constexpr double kSolveTolerance = 1e-3;
 constexpr int kMostCgIterations = 2000;
+// The smooth floor's lagged dashpot weights and friction forces (floor_potential.hpp) follow the iterate in the first
+// this many iterations, then stay: E is then fixed, so the line search converges (a vertex crossing the floor's
+// 2 mm smoothing band between iterates changes its weights, and following them every iteration could cycle).
+constexpr int kMostLagUpdates = 5;
 constexpr double kArmijo = 1e-4;           // sufficient-decrease fraction of the predicted ∇E·Δ
 constexpr int kMostHalvings = 30;
 // A predicted decrease below this fraction of the size of E's terms is round-off in E: the step is taken
@@ -68,6 +72,10 @@ void NewtonEuler::step(Dynamics& dynamics, State& state, double dt) {
   bool converged = false;
   IncrementalPotential::Hessian form = IncrementalPotential::Hessian::Exact;
   while (iterations < kMostNewtonIterations) {
+    if (potential_.has_lagged_terms() && iterations < kMostLagUpdates) {
+      potential_.update_lags(model, x_);
+      energy = potential_.energy(model, x_, energy_scale);  // E with the new lags
+    }
     // The exact Hessian while it is positive definite; once it is not, the definite one for the rest of the step.
     bool definite = solve_for_direction(model, form);
     if (!definite && form == IncrementalPotential::Hessian::Exact) {
