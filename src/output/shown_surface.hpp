@@ -23,6 +23,9 @@ class ShownPositions {
   // proxy's positions and normals (valid until the next call).
   std::span<const softbody::Vec3> of(const sim::World& world, int body);
 
+  // The same for the body at rest (the placed mesh it was built from).
+  std::span<const softbody::Vec3> at_rest(const sim::World& world, int body);
+
  private:
   std::vector<softbody::Vec3> normals_;
   std::vector<softbody::Vec3> detailed_;

@@ -31,14 +31,17 @@ BodyMesh::BodyMesh(std::size_t vertex_count, std::span<const glm::uvec3> triangl
   check_gl("allocating a body's buffers");
 }
 
-void BodyMesh::update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals) {
-  if (positions.size() != vertex_count_ || normals.size() != vertex_count_) {
+void BodyMesh::update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                      std::span<const glm::vec3> rest_positions) {
+  if (positions.size() != vertex_count_ || normals.size() != vertex_count_ ||
+      (!rest_positions.empty() && rest_positions.size() != vertex_count_)) {
     throw std::logic_error("BodyMesh::update: the vertex count changed during the run");
   }
   if (!has_pattern_coordinates_) {
+    const std::span<const glm::vec3> painted = rest_positions.empty() ? positions : rest_positions;
     glm::vec3 centroid(0.0f);
-    for (const glm::vec3& p : positions) centroid += p / float(vertex_count_);
-    std::vector<glm::vec3> coordinates(positions.begin(), positions.end());
+    for (const glm::vec3& p : painted) centroid += p / float(vertex_count_);
+    std::vector<glm::vec3> coordinates(painted.begin(), painted.end());
     for (glm::vec3& c : coordinates) c -= centroid;
     glBindBuffer(GL_ARRAY_BUFFER, pattern_coordinates_.get());
     glBufferSubData(GL_ARRAY_BUFFER, 0, bytes_of(vertex_count_, sizeof(glm::vec3)), coordinates.data());

@@ -17,7 +17,9 @@ class BodyMesh {
 
   // Replaces this frame's positions and normals (the only per-frame upload). The first call also uploads
   // the pattern coordinates: those first positions relative to their centroid (the body's own frame).
-  void update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals);
+  // `rest_positions` (or, when empty, the first frame's positions) set the pattern coordinates on the first call.
+  void update(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+              std::span<const glm::vec3> rest_positions);
   void draw() const;
 
   std::size_t vertex_count() const { return vertex_count_; }

@@ -90,7 +90,7 @@ void Renderer::upload(std::span<const FrameMesh> bodies) {
   }
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     area_weighted_normals(bodies[b].positions, bodies[b].triangles, normals_scratch_);
-    body_meshes_[b].update(bodies[b].positions, normals_scratch_);
+    body_meshes_[b].update(bodies[b].positions, normals_scratch_, bodies[b].rest_positions);
   }
 }
 

@@ -37,6 +37,7 @@ Body build_body(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, 
   for (const auto& [a, b] : topology.edges) body.rest.edge_length_m.push_back((x[a] - x[b]).norm());
   body.rest.mean_edge_m = mean_edge_length(body.rest);
   body.rest.volume_m3 = enclosed_volume(topology.faces, x);
+  body.rest.position_m = x;
   body.masses.kg = lump_masses_by_area(x, faces, total_mass);
   body.masses.inverse.reserve(x.size());
   for (double m : body.masses.kg) body.masses.inverse.push_back(1.0 / m);

@@ -28,6 +28,7 @@ struct RestShape {
   double volume_m3 = 0.0;             // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
   double mean_edge_m = 0.0;           // the mean of edge_length_m: sets body contact's search distance
   std::vector<double> bending_length_m;  // per bending link: its length in the placed mesh [m]
+  std::vector<Vec3> position_m;          // the placed mesh [m]: where render paints the body's pattern
 };
 
 // Lumped vertex masses: each face gives a third of its area share of the body's mass to each corner.

@@ -42,6 +42,32 @@ TEST(SceneGolden, RollingBallAfterLanding) {
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
+// The pattern is painted on the body at rest, not on the first frame a renderer draws: a render that starts
+// late (a farm chunk, a resumed run) paints frame N as a render from frame 0 does.
+TEST(SceneGolden, PatternIsPaintedOnTheRestShapeWhicheverFrameComesFirst) {
+  const scene::Scene s = scene::load_scene(std::filesystem::path(SOFTBODY_SOURCE_DIR) / "scenes" / "roll.json");
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(s, notes);
+  render::RenderSettings settings = render::settings_from_scene(s);
+  settings.width_px = 160;
+  settings.height_px = 120;
+  const auto draw = [&](render::Renderer& renderer) {
+    std::vector<render::FrameMesh> meshes;
+    output::snapshot_surfaces(world, meshes);
+    renderer.draw(meshes);
+    softbody::Image image;
+    renderer.read_back(image);
+    return image;
+  };
+  render::Renderer from_the_start(render_test::gl_context(), settings);
+  draw(from_the_start);  // frame 0
+  for (long long n = std::llround(1.2 / s.solver.dt_s); n > 0; --n) world.step(s.solver.dt_s);
+  const softbody::Image continued = draw(from_the_start);
+  render::Renderer started_late(render_test::gl_context(), settings);
+  const softbody::Image late = draw(started_late);
+  EXPECT_TRUE(continued.rgb == late.rgb) << "the same state painted differently";
+}
+
 TEST(SceneGolden, PileStacked) {
   const std::string failure = render_test::check_against_golden(scene_at("pile.json", 0.45), "pile_scene", kGoldenTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
