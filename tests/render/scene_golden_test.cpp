@@ -19,22 +19,40 @@ namespace {
 // Same tolerance as the code-built goldens (golden_test.cpp): > 16 of 255 in a channel, ≤ 0.3 % pixels.
 const render_test::Tolerance kGoldenTolerance{16, 0.003};
 
-// The scene simulated to `time_s` and rendered small.
-softbody::Image scene_at(const std::string& scene_file, double time_s) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(SOFTBODY_SOURCE_DIR) / "scenes" / scene_file);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(s, notes);
-  for (long long n = std::llround(time_s / s.solver.dt_s); n > 0; --n) world.step(s.solver.dt_s);
+scene::Scene shipped_scene(const std::string& scene_file) {
+  return scene::load_scene(std::filesystem::path(SOFTBODY_SOURCE_DIR) / "scenes" / scene_file);
+}
+
+// The scene's own camera and light, rendered small.
+render::RenderSettings small_settings(const scene::Scene& s) {
   render::RenderSettings settings = render::settings_from_scene(s);
   settings.width_px = 160;
   settings.height_px = 120;
-  render::Renderer renderer(render_test::gl_context(), settings);
+  return settings;
+}
+
+void simulate_to(sim::World& world, const scene::Scene& s, double time_s) {
+  for (long long n = std::llround(time_s / s.solver.dt_s); n > 0; --n) world.step(s.solver.dt_s);
+}
+
+// `world` as it is now, drawn by `renderer`.
+softbody::Image draw(render::Renderer& renderer, const sim::World& world) {
   std::vector<render::FrameMesh> meshes;
   output::snapshot_surfaces(world, meshes);
   renderer.draw(meshes);
   softbody::Image image;
   renderer.read_back(image);
   return image;
+}
+
+// The scene simulated to `time_s` and rendered small.
+softbody::Image scene_at(const std::string& scene_file, double time_s) {
+  const scene::Scene s = shipped_scene(scene_file);
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(s, notes);
+  simulate_to(world, s, time_s);
+  render::Renderer renderer(render_test::gl_context(), small_settings(s));
+  return draw(renderer, world);
 }
 
 TEST(SceneGolden, RollingBallAfterLanding) {
@@ -45,26 +63,15 @@ TEST(SceneGolden, RollingBallAfterLanding) {
 // The pattern is painted on the body at rest, not on the first frame a renderer draws: a render that starts
 // late (a farm chunk, a resumed run) paints frame N as a render from frame 0 does.
 TEST(SceneGolden, PatternIsPaintedOnTheRestShapeWhicheverFrameComesFirst) {
-  const scene::Scene s = scene::load_scene(std::filesystem::path(SOFTBODY_SOURCE_DIR) / "scenes" / "roll.json");
+  const scene::Scene s = shipped_scene("roll.json");
   std::vector<std::string> notes;
   sim::World world = setup::build_world(s, notes);
-  render::RenderSettings settings = render::settings_from_scene(s);
-  settings.width_px = 160;
-  settings.height_px = 120;
-  const auto draw = [&](render::Renderer& renderer) {
-    std::vector<render::FrameMesh> meshes;
-    output::snapshot_surfaces(world, meshes);
-    renderer.draw(meshes);
-    softbody::Image image;
-    renderer.read_back(image);
-    return image;
-  };
-  render::Renderer from_the_start(render_test::gl_context(), settings);
-  draw(from_the_start);  // frame 0
-  for (long long n = std::llround(1.2 / s.solver.dt_s); n > 0; --n) world.step(s.solver.dt_s);
-  const softbody::Image continued = draw(from_the_start);
-  render::Renderer started_late(render_test::gl_context(), settings);
-  const softbody::Image late = draw(started_late);
+  render::Renderer from_the_start(render_test::gl_context(), small_settings(s));
+  draw(from_the_start, world);  // frame 0
+  simulate_to(world, s, 1.2);
+  const softbody::Image continued = draw(from_the_start, world);
+  render::Renderer started_late(render_test::gl_context(), small_settings(s));
+  const softbody::Image late = draw(started_late, world);
   EXPECT_TRUE(continued.rgb == late.rgb) << "the same state painted differently";
 }
 
