@@ -61,11 +61,11 @@ int complete_frames(const std::string& errors) {
 }
 
 // Sends `signal` and waits for the exit: its status, or a failure if it still runs kStopBound later.
-int stop(BackgroundRun& run, int signal, const std::string& integrator) {
+int stop(BackgroundRun& run, int signal, const std::string& what) {
   run.signal(signal);
   const std::optional<int> status = run.wait_for_exit(kStopBound);
   EXPECT_TRUE(status) << "still running " << kStopBound.count() << " s after the signal: " << run.errors();
-  std::printf("[ measured ] %s: exit %.2f s after the signal\n", integrator.c_str(), run.seconds_to_exit());
+  if (status) std::printf("[ measured ] %s: exit %.2f s after the signal\n", what.c_str(), run.seconds_to_exit());
   return status.value_or(-1);
 }
 
