@@ -33,9 +33,10 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   if (options.resume) {
     throw softbody::InputError("--resume: a point cache is written whole at the end; export it again instead");
   }
-  PreparedRun run = prepare_run(options.scene);
-  // SIGINT / SIGTERM end the run after the frame in progress; the caches then hold every complete frame.
+  // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step;
+  // the caches then hold every complete frame.
   frames::stop_on_signals();
+  PreparedRun run = prepare_run(options.scene);
   const PlannedFrames planned(run, options.frames);
   const frames::FrameSelection& chosen = planned.plan().frames;
   if (chosen.count() != chosen.last() - chosen.first() + 1) {
@@ -57,8 +58,10 @@ int run_export(const ExportOptions& options) {
   if (options.format == ExportFormat::Pc2) return run_point_cache_export(options, output::PointCacheFormat::Pc2);
   if (options.format == ExportFormat::Mdd) return run_point_cache_export(options, output::PointCacheFormat::Mdd);
   const output::MeshFormat mesh_format = options.format == ExportFormat::Obj ? output::MeshFormat::Obj : output::MeshFormat::Ply;
+  // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step
+  // (the frame in progress dropped); the outputs hold every complete frame.
+  frames::stop_on_signals();
   PreparedRun run = prepare_run(options.scene);
-  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);

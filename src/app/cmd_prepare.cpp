@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "geometry/remesh.hpp"
 #include "core/errors.hpp"
+#include "frames/stop_request.hpp"
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
@@ -36,6 +37,9 @@ void print_summary(const std::string& output, const mesh::TriMesh& prepared, dou
 }
 
 int run_prepare(const PrepareOptions& options) {
+  // SIGINT / SIGTERM end it when the phase in progress (reading, repairing, checking, remeshing) ends, before
+  // OUT is written; the write itself, once started, finishes.
+  frames::stop_on_signals();
   const auto start = std::chrono::steady_clock::now();
   if (options.resolution && (*options.resolution < 20 || *options.resolution > 1000000)) {
     throw softbody::InputError("--resolution " + std::to_string(*options.resolution) +
@@ -46,11 +50,14 @@ int run_prepare(const PrepareOptions& options) {
   }
   mesh::RepairOptions repair = mesh::full_repair();
   repair.parts = options.parts;
-  const mesh::LoadedMesh prepared = mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair);
+  const mesh::LoadedMesh prepared =
+      mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair, frames::throw_if_stop_requested_after);
   for (const std::string& note : prepared.notes) std::cerr << "note: " << note << "\n";
   mesh::TriMesh result = prepared.mesh;
   if (options.resolution) {
     result = geometry::remesh_to_vertex_count(prepared.mesh, *options.resolution);
+    frames::throw_if_stop_requested_after("remeshing " + options.input + " to about " +
+                                          std::to_string(*options.resolution) + " vertices");
     std::cerr << "note: remeshed isotropically from " << prepared.mesh.vertices.size() << " to " << result.vertices.size()
               << " vertices (--resolution " << *options.resolution << ")\n";
   }

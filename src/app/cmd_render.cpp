@@ -114,8 +114,10 @@ void print_written(const output::RenderOutputs& outputs, const output::RenderSin
 }
 
 int run_render(const RenderOptions& options) {
+  // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step of
+  // the simulation (the frame in progress dropped); the outputs hold every complete frame.
+  frames::stop_on_signals();
   PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
-  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   if (options.resume && options.no_png) {
     throw softbody::InputError("--resume continues from the PNG frames on disk: use it without --no-png");
@@ -142,6 +144,7 @@ int run_render(const RenderOptions& options) {
   const std::vector<int> figure = chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame)
                                                       : std::vector<int>{};
   render::Renderer renderer(*context, settings);
+  frames::throw_if_stop_requested_after("setting up the renderer");  // before any output is touched
 
   output::RenderOutputs outputs;
   outputs.dir = scene.output.dir;

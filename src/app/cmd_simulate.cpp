@@ -29,8 +29,10 @@ struct SimulateOptions {
 };
 
 int run_simulate(const SimulateOptions& options) {
+  // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step
+  // (the frame in progress dropped); the outputs hold every complete frame.
+  frames::stop_on_signals();
   PreparedRun run = prepare_run(options.scene);
-  frames::stop_on_signals();  // SIGINT / SIGTERM end the run after the frame in progress, outputs complete
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"

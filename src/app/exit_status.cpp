@@ -15,7 +15,7 @@ int run_reporting_errors(const Action& action) {
     std::cerr << "error: " << e.what() << "\n";
     return softbody::kExitBadInput;
   } catch (const frames::Interrupted& e) {
-    std::cerr << "interrupted: " << e.what() << " (the outputs hold those frames only)\n";
+    std::cerr << "interrupted: " << e.what() << "\n";
     return 128 + e.signal();
   } catch (const softbody::DivergedError& e) {
     std::cerr << "diverged: " << e.what() << "\n";

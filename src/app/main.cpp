@@ -10,7 +10,8 @@
 namespace {
 
 constexpr const char* kFooter =
-    "Exit status: 0 ok, 1 other failure, 2 bad input (scene, mesh, command line), 3 the simulation diverged.\n"
+    "Exit status: 0 ok, 1 other failure, 2 bad input (scene, mesh, command line), 3 the simulation diverged,\n"
+    "130 / 143 interrupted by SIGINT / SIGTERM (within one step; during setup when its phase ends).\n"
     "Environment: SOFTBODY_GL=auto|egl|osmesa chooses the GL backend of `render` and wins over the scene's\n"
     "render.backend.\n"
     "Scenes to start from: share/softbody/scenes/ where softbody is installed (bounce.json: the paper's Figure 1).\n"

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "frames/stop_request.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/stability.hpp"
@@ -16,7 +17,9 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
   std::vector<int> bodies_per_scene_body;
-  sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body);
+  // SIGINT / SIGTERM during setup (a long mesh repair, remesh, ...) end it when that phase ends.
+  const softbody::AfterPhase after_phase = frames::throw_if_stop_requested_after;
+  sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body, after_phase);
   // A split body is several bodies from here on: one scene body each, so that colours and patterns follow.
   std::vector<scene::Body> bodies;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) bodies.insert(bodies.end(), static_cast<std::size_t>(bodies_per_scene_body[b]), scene.bodies[b]);
@@ -25,6 +28,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
     const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
     scene.solver.substeps = sim::auto_substeps(world.model, estimate, 1.0 / scene.fps);
+    after_phase("estimating the stable substep");
     char note[200];
     std::snprintf(note, sizeof note,
                   "solver.substeps = auto: %d substeps per frame (h = %.4g s: a volume bias of about %.2g %% and "
@@ -39,6 +43,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   } else if (scene.solver.dt_auto) {
     const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
     scene.solver.dt_s = sim::auto_dt(estimate, scene.solver.integrator, 1.0 / scene.fps, scene.source.string());
+    after_phase("estimating the stable step");
     world.state.next_dt_s = scene.solver.dt_s;
     char note[200];
     std::snprintf(note, sizeof note, "solver.dt = auto: %.4g s (%.2f x the estimated stable dt of %s, %.4g s)",

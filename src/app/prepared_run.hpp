@@ -19,7 +19,8 @@ struct PreparedRun {
 };
 
 // Loads and validates the scene (with --set), plans the frame clock, builds the world, and prints
-// every note (rounded dt, fixed meshes) to stderr. Throws softbody::InputError on bad input.
+// every note (rounded dt, fixed meshes) to stderr. Throws softbody::InputError on bad input, and
+// frames::Interrupted (nothing written) when a stop was requested, at the end of the setup phase in progress.
 // `threads_when_auto`: the force threads when the scene leaves solver.threads at 0 (0: one per core);
 // render passes 1, because there the second core renders while the simulation runs beside it.
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto = 0);

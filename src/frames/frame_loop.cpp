@@ -5,6 +5,20 @@
 #include "frames/wall_clock.hpp"
 
 namespace frames {
+namespace {
+
+// One frame interval of whole steps, then the guard's full check before the frame is handed out; false
+// (the frame unfinished) when a stop was requested before one of its steps.
+bool step_one_frame(sim::World& world, const FrameClock& clock) {
+  for (int s = 0; s < clock.steps_per_frame; ++s) {
+    if (stop_requested()) return false;
+    world.step(clock.dt_s);
+  }
+  world.check_before_frame();
+  return true;
+}
+
+}  // namespace
 
 Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current, int target,
                          const Checkpoints* checkpoints) {
@@ -18,13 +32,11 @@ Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current
     }
   }
   const long long steps_before = world.state.steps, rejected_before = world.state.rejected_steps;
-  for (int frame = current + 1; frame <= target; ++frame) {
-    if (world.adaptive()) {
-      world.advance_to(frame * clock.frame_interval_s);  // its every step had the full check
-    } else {
-      for (int s = 0; s < clock.steps_per_frame; ++s) world.step(clock.dt_s);
-      world.check_before_frame();  // the guard's full check before the frame is handed out
-    }
+  for (int frame = current + 1; frame <= target && !advance.stopped; ++frame) {
+    // Adaptive: its every step had the full check.
+    const bool reached = world.adaptive() ? world.advance_to(frame * clock.frame_interval_s, stop_requested)
+                                          : step_one_frame(world, clock);
+    advance.stopped = !reached;
   }
   advance.steps = world.state.steps - steps_before;
   advance.rejected = world.state.rejected_steps - rejected_before;
@@ -51,6 +63,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
       if (!selection.contains(frame)) continue;
       const auto step_start = WallClock::now();
       const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+      if (advance.stopped) throw Interrupted(stop_signal(), stats.frames);  // the frame in progress is dropped
       current = frame;
       stats.step_wall_s += seconds_since(step_start);
       stats.loaded_states += advance.loaded ? 1 : 0;

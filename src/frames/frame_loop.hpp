@@ -41,11 +41,13 @@ struct Advance {
   bool loaded = false;       // a checkpoint's state was loaded
   long long steps = 0;       // accepted steps taken (after the load)
   long long rejected = 0;    // rejected attempts (adaptive integrators)
+  bool stopped = false;      // a stop was requested (SIGINT / SIGTERM): the world is part of the way only
 };
 
 // Brings the world from frame `current` to frame `target` (> current): when a checkpoint lies between
 // them, its state is loaded first; then, frame by frame, whole steps followed by the guard's full check,
-// or the adaptive steps that land exactly on the frame time.
+// or the adaptive steps that land exactly on the frame time. Before every step it looks whether a stop was
+// requested (frames/stop_request.hpp) and if so returns at once with `stopped`: the caller discards the frame.
 Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current, int target,
                          const Checkpoints* checkpoints);
 
@@ -53,7 +55,8 @@ Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current
 // (adaptive integrators instead advance to each frame time with their own steps, landing on it exactly).
 // The sinks get the frames of plan.frames only, in order; the run stops at the last of them. On divergence
 // the sinks are finished with complete = false and the DivergedError propagates: frames handed out before
-// stay valid and no frame of a diverged state is emitted.
+// stay valid and no frame of a diverged state is emitted. A stop request (SIGINT / SIGTERM) ends the run
+// within one step the same way, with frames::Interrupted: the frame in progress is never handed out.
 RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameSink* const> sinks,
                     const Progress& progress = {}, const RunPlan& plan = {});
 

@@ -47,6 +47,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
         throw;
       }
       const auto [advance, seconds] = stepping.get();  // rethrows the worker's DivergedError
+      if (advance.stopped) throw Interrupted(stop_signal(), stats.frames);  // the frame in progress is dropped
       stats.step_wall_s += seconds;
       stats.loaded_states += advance.loaded ? 1 : 0;
       stats.steps += advance.steps;

@@ -1,8 +1,10 @@
-// SIGINT and SIGTERM as a request to stop after the frame in progress: the frame loops end there, the sinks
-// finish with the complete frames (the CSV keeps their rows), and the program exits 128 + the signal.
+// SIGINT and SIGTERM as a request to stop: the frame loops end within one step (the frame in progress is
+// discarded), setup ends when the phase in progress ends; the sinks finish with the complete frames (the CSV
+// keeps their rows), and the program exits 128 + the signal.
 #pragma once
 
 #include <stdexcept>
+#include <string>
 
 namespace frames {
 
@@ -13,19 +15,30 @@ void stop_on_signals();
 // The signal that asked to stop (SIGINT, SIGTERM), or 0.
 int stop_signal();
 
-// Thrown by the frame loops once a stop was requested, after `complete_frames` frames were handed out.
+// True once a stop was requested: one relaxed atomic load, cheap enough for every step.
+bool stop_requested();
+
+// Thrown by the frame loops once a stop was requested, after `complete_frames` frames were handed out, or
+// (during_setup) between two setup phases, before anything was written.
 class Interrupted : public std::runtime_error {
  public:
   Interrupted(int signal, int complete_frames);
+  // Setup stopped after the phase `phase_done` ("repairing meshes/bunny.obj"): no frame, no output.
+  static Interrupted during_setup(int signal, const std::string& phase_done);
   int signal() const { return signal_; }
   int complete_frames() const { return complete_frames_; }
 
  private:
+  Interrupted(int signal, const std::string& what);
   int signal_;
-  int complete_frames_;
+  int complete_frames_ = 0;
 };
 
 // Throws Interrupted when a stop was requested.
 void throw_if_stop_requested(int complete_frames);
+
+// Between setup phases (a softbody::AfterPhase): throws Interrupted::during_setup naming the phase just done
+// when a stop was requested.
+void throw_if_stop_requested_after(const std::string& phase_done);
 
 }  // namespace frames

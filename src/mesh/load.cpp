@@ -73,15 +73,20 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
 }
 
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits, const RepairOptions& repair) {
+                            const MeshLimits& limits, const RepairOptions& repair, const softbody::AfterPhase& after_phase) {
   const std::string what = file.empty() ? spec : file.string();
+  const auto phase_done = [&](const std::string& phase) {
+    if (after_phase) after_phase(phase + " " + what);
+  };
   try {
     LoadedMesh loaded;
     loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits));
+    phase_done(file.empty() ? "generating" : "reading");
     if (!file.empty() && repair.enabled) {
       geometry::RepairedMesh repaired = geometry::repair_mesh(loaded.mesh, repair);
       loaded.mesh = std::move(repaired.mesh);
       loaded.notes = std::move(repaired.notes);
+      phase_done("repairing");
     }
     try {
       validate_closed(loaded.mesh, loaded.notes);
@@ -90,6 +95,7 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
       throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file));
     }
     if (!file.empty()) note_suspicious_shapes(loaded.mesh, loaded.notes);
+    phase_done("checking");
     for (std::string& note : loaded.notes) note = context + ": " + what + ": " + note;
     return loaded;
   } catch (const softbody::InputError& e) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/after_phase.hpp"
 #include "mesh/check.hpp"
 #include "mesh/mesh_limits.hpp"
 #include "mesh/repair_options.hpp"
@@ -21,8 +22,10 @@ struct LoadedMesh {
 // Throws softbody::InputError whose message starts with `context` (e.g. "scene.json: bodies.0.mesh"); a
 // defect that repair fixes ends with the option that fixes it. A file is read within `limits`
 // (mesh/import.hpp), welded, and repaired (geometry/mesh_repair.hpp) when `repair.enabled`, before validation.
+// `after_phase` is called after each of reading (and welding), repairing, and checking the mesh.
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits = {}, const RepairOptions& repair = {});
+                            const MeshLimits& limits = {}, const RepairOptions& repair = {},
+                            const softbody::AfterPhase& after_phase = {});
 
 // The words appended to a validation error of a file: which repair fixes `defect` ("" where none does).
 // With `repair.enabled` the mesh was repaired already: the words say which step was off, or that repair was not enough.

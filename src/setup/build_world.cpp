@@ -95,14 +95,19 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
 }
 
 sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
-                       std::vector<int>* bodies_per_scene_body) {
+                       std::vector<int>* bodies_per_scene_body, const softbody::AfterPhase& after_phase) {
+  const auto phase_done = [&](const std::string& phase) {
+    if (after_phase) after_phase(phase);
+  };
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, scene.solver);
   model.body_contact = scene.collisions;
   sim::State state = sim::initial_state(model);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
-    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits, spec.repair);
+    const std::string key = "bodies." + std::to_string(b);
+    mesh::LoadedMesh loaded =
+        mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits, spec.repair, after_phase);
     for (std::string& note : loaded.notes) {
       if (spec.split && note.find("separate closed parts") != std::string::npos) continue;  // split below
       notes.push_back(std::move(note));
@@ -111,6 +116,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
     for (const BodyPart& part : parts) {
       const bool proxied = wants_proxy(spec);
       const mesh::TriMesh proxy = proxied ? simulation_proxy(part.mesh, spec, key_path, notes) : mesh::TriMesh{};
+      if (proxied) phase_done("remeshing " + key + " into its simulation proxy");
       const mesh::TriMesh& simulated = proxied ? proxy : part.mesh;
       const std::vector<softbody::Vec3> x0 = place_mesh(simulated, spec);
       check_placed(x0, key_path);
@@ -119,9 +125,11 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       raw.bending_N_per_m = spec.bending_N_per_m;
       body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path, notes);
       if (body.params.bending_N_per_m > 0.0) sim::add_bending_links(body, x0);  // none: no links, no cost
+      phase_done("resolving the parameters of " + key);
       if (proxied) {
         const int index = static_cast<int>(model.bodies.size());
         model.skins.push_back(bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));
+        phase_done("binding the mesh of " + key + " to its proxy");
       }
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/after_phase.hpp"
 #include "mesh/trimesh.hpp"
 #include "scene/scene.hpp"
 #include "sim/world.hpp"
@@ -19,7 +20,9 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
 // A body with "split": true whose mesh holds several separate closed parts becomes one body per part (in
 // the order of their first triangle), its mass shared by area and its nRT by volume (the same gas pressure
 // in every part); `bodies_per_scene_body`, when given, receives how many bodies each scene body became.
+// `after_phase` is called after each long phase of each body: reading, repairing and checking its mesh
+// (mesh::load_closed_mesh), remeshing its proxy, resolving its parameters (intent, bending links).
 sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
-                       std::vector<int>* bodies_per_scene_body = nullptr);
+                       std::vector<int>* bodies_per_scene_body = nullptr, const softbody::AfterPhase& after_phase = {});
 
 }  // namespace setup

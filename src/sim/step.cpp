@@ -157,10 +157,11 @@ void step(const Model& model, State& state, Workspace& workspace, double dt) {
   ++state.steps;
 }
 
-void advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s) {
+bool advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s, StopQuery stop) {
   workspace.deepest_floor_penetration_m = 0.0;
   std::optional<Divergence> last_finding;
   while (state.time_s < end_time_s) {
+    if (stop && stop()) return false;
     const double remaining = end_time_s - state.time_s;
     const bool last = state.next_dt_s >= remaining;
     const double dt = last ? remaining : state.next_dt_s;
@@ -195,6 +196,7 @@ void advance_to(const Model& model, State& state, Workspace& workspace, double e
     ++state.steps;
     if (last) state.time_s = end_time_s;  // exactly, whatever the round-off of the sum
   }
+  return true;
 }
 
 void check_before_frame(const Model& model, State& state) {

@@ -27,12 +27,16 @@ namespace sim {
 // fail too, throws sim::DivergedError.
 void step(const Model& model, State& state, Workspace& workspace, double dt);
 
+// Asked between steps whether to end early (the CLI's: SIGINT / SIGTERM was received); nullptr: never.
+using StopQuery = bool (*)();
+
 // Adaptive integrators: steps of the size the error estimate proposes, the last one clipped so that
 // state.time_s lands exactly on `end_time_s`. Rejected attempts (error above the tolerance, or a step the
 // guard rejects) are undone, counted in state.rejected_steps, and shrink the step. Throws
 // sim::DivergedError when the step size underflows (the motion became unstable or the tolerance is
-// unreachable), with the guard's last finding.
-void advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s);
+// unreachable), with the guard's last finding. Returns false when `stop` said so before an attempt (the state
+// is then that after the last accepted step, short of end_time_s), true once it lands on end_time_s.
+bool advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s, StopQuery stop = nullptr);
 
 // The guard's full check of the state (energy and volume too), which a fixed-step run does only every
 // kFullCheckInterval steps: the frame loops call it before handing a frame out, so that no frame of a

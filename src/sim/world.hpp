@@ -19,7 +19,9 @@ struct World {
   Workspace workspace;
 
   void step(double dt) { sim::step(model, state, workspace, dt); }
-  void advance_to(double end_time_s) { sim::advance_to(model, state, workspace, end_time_s); }
+  bool advance_to(double end_time_s, StopQuery stop = nullptr) {
+    return sim::advance_to(model, state, workspace, end_time_s, stop);
+  }
   void check_before_frame() { sim::check_before_frame(model, state); }
   // True when the integrator chooses its own steps (rk45): drive it with advance_to().
   bool adaptive() const { return integrator_info(model.solver.integrator).adaptive; }
