@@ -181,10 +181,11 @@ std::string accuracy_summary(const AccuracyResult& result) {
   }
   out << "\n";
   for (sim::IntegratorKind integrator : integrators_in(result)) {
-    int ok = 0, failed = 0;
+    int ok = 0, failed = 0, above_stable = 0;
     const AccuracyRun* best = nullptr;
     for (const AccuracyRun& run : result.runs) {
       if (run.integrator != integrator) continue;
+      if (run.above_stable_dt) ++above_stable;
       if (run.status != RunStatus::Ok) {
         ++failed;
         continue;
@@ -197,6 +198,11 @@ std::string accuracy_summary(const AccuracyResult& result) {
     if (best != nullptr) {
       out << "; smallest error " << format("%.2e", best->rms_error_m) << " m in " << format("%.3f", best->wall_s)
           << " s";
+    }
+    if (above_stable > 0) {
+      out << "; " << above_stable << " at a dt above its estimated stable dt "
+          << format("%.3g", result.stable_dt_s[static_cast<std::size_t>(integrator)])
+          << " s (such a run may stay bounded without converging: leave it out of an order fit)";
     }
     out << "\n";
   }
