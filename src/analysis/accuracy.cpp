@@ -117,6 +117,13 @@ double rms_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, std:
   return std::sqrt(sum / static_cast<double>(end - begin));
 }
 
+// 1e-09, not std::to_string's 0.000000.
+std::string format_tolerance(double tolerance) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0e", tolerance);
+  return text;
+}
+
 std::string format_seconds(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g s", s);
@@ -235,7 +242,7 @@ class Benchmark {
     char line[260];
     std::snprintf(line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s%s",
                   sim::to_string(integrator).c_str(), run.dt_s,
-                  tolerance > 0.0 ? (" (tol " + std::to_string(tolerance) + ")").c_str() : "",
+                  tolerance > 0.0 ? (" (tol " + format_tolerance(tolerance) + ")").c_str() : "",
                   to_string(run.status).c_str(), run.rms_error_m, run.final_error_m, run.steps, run.wall_s,
                   run.above_stable_dt ? (" (above the estimated stable dt " + format_seconds(stable_dt) + ")").c_str() : "");
     say(line);

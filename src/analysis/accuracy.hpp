@@ -49,8 +49,8 @@ struct AccuracyRun {
   double final_error_m = 0.0; // RMS over vertices at the last frame
   RunStatus status = RunStatus::Ok;
   // A fixed step above the integrator's estimated stable dt (sim/stability.hpp). With a smooth contact's
-  // regularised friction such a run need not blow up: the friction saturates at μN and the slip chatters in a
-  // bounded cycle, so its error is finite but does not converge as dt halves (fit orders without these runs).
+  // regularised friction such a run need not blow up (the friction force is bounded by μN), so its error is
+  // finite, but it is not in the asymptotic range: fit orders without these runs.
   bool above_stable_dt = false;
 };
 
