@@ -56,7 +56,9 @@ int inward_folded_edges(const sim::World& world) {
 Run run_fixed_steps(const std::string& scene_file, std::vector<std::string> overrides, const std::string& integrator,
                     double dt_s, double duration_s) {
   overrides.push_back("solver.integrator=" + integrator);
-  overrides.push_back("solver.dt=" + std::to_string(dt_s));
+  char dt_text[32];
+  std::snprintf(dt_text, sizeof dt_text, "%.17g", dt_s);  // std::to_string would round 2.5e-6 to 0.000003
+  overrides.push_back(std::string("solver.dt=") + dt_text);
   const scene::Scene scene = scene::load_scene(scene_file, overrides);
   const frames::FrameClock clock = frames::plan_frames(duration_s, scene.fps, dt_s);
   std::vector<std::string> notes;
