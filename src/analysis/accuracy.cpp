@@ -12,6 +12,7 @@
 #include "frames/frame_clock.hpp"
 #include "frames/frame_loop.hpp"
 #include "setup/build_world.hpp"
+#include "sim/stability.hpp"
 
 namespace analysis {
 
@@ -116,6 +117,19 @@ double rms_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b, std:
   return std::sqrt(sum / static_cast<double>(end - begin));
 }
 
+// 1e-09, not std::to_string's 0.000000.
+std::string format_tolerance(double tolerance) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0e", tolerance);
+  return text;
+}
+
+std::string format_seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g s", s);
+  return text;
+}
+
 double body_size(const std::vector<Vec3>& x0) {
   Vec3 centroid = Vec3::Zero();
   for (const Vec3& x : x0) centroid += x / static_cast<double>(x0.size());
@@ -148,6 +162,7 @@ class Benchmark {
 
   AccuracyResult run() {
     const auto start = std::chrono::steady_clock::now();
+    estimate_stable_steps();
     compute_reference();
     for (sim::IntegratorKind integrator : options_.integrators) {
       if (integrator == sim::IntegratorKind::Rk45) {
@@ -163,6 +178,14 @@ class Benchmark {
  private:
   void say(const std::string& line) const {
     if (log_) log_(line);
+  }
+
+  // Every integrator's estimated stable dt at the scene's initial state (what `softbody info` prints).
+  void estimate_stable_steps() {
+    std::vector<std::string> notes;
+    const sim::World world = setup::build_world(scene_, notes);
+    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
+    result_.stable_dt_s.assign(estimate.stable_dt_s.begin(), estimate.stable_dt_s.end());
   }
 
   // The reference method at a fixed step, and again at twice the step to check it.
@@ -214,11 +237,14 @@ class Benchmark {
       if (!(run.rms_error_m <= result_.body_size_m)) run.status = RunStatus::BlownUp;
       if (run.rms_error_m < options_.floor_factor * result_.reference.uncertainty_m) run.status = RunStatus::AtReference;
     }
-    char line[200];
-    std::snprintf(line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s",
+    const double stable_dt = result_.stable_dt_s[static_cast<std::size_t>(integrator)];
+    run.above_stable_dt = integrator != sim::IntegratorKind::Rk45 && run.dt_s > stable_dt;
+    char line[260];
+    std::snprintf(line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s%s",
                   sim::to_string(integrator).c_str(), run.dt_s,
-                  tolerance > 0.0 ? (" (tol " + std::to_string(tolerance) + ")").c_str() : "",
-                  to_string(run.status).c_str(), run.rms_error_m, run.final_error_m, run.steps, run.wall_s);
+                  tolerance > 0.0 ? (" (tol " + format_tolerance(tolerance) + ")").c_str() : "",
+                  to_string(run.status).c_str(), run.rms_error_m, run.final_error_m, run.steps, run.wall_s,
+                  run.above_stable_dt ? (" (above the estimated stable dt " + format_seconds(stable_dt) + ")").c_str() : "");
     say(line);
     result_.runs.push_back(run);
     return run;

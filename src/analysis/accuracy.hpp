@@ -48,6 +48,10 @@ struct AccuracyRun {
   double rms_error_m = 0.0;   // RMS over every frame after frame 0 and every vertex of |x − x_ref|
   double final_error_m = 0.0; // RMS over vertices at the last frame
   RunStatus status = RunStatus::Ok;
+  // A fixed step above the integrator's estimated stable dt (sim/stability.hpp). With a smooth contact's
+  // regularised friction such a run need not blow up (the friction force is bounded by μN), so its error is
+  // finite, but it is not in the asymptotic range: fit orders without these runs.
+  bool above_stable_dt = false;
 };
 
 struct Reference {
@@ -63,6 +67,7 @@ struct AccuracyResult {
   int fps = 0;
   std::size_t vertices = 0;
   double body_size_m = 0.0;   // RMS distance of the vertices from their centroid at t = 0
+  std::vector<double> stable_dt_s;  // the estimated stable dt of each integrator of `runs`, by IntegratorKind
   Reference reference;
   std::vector<AccuracyRun> runs;
   double total_wall_s = 0.0;

@@ -74,7 +74,7 @@ std::string gnuplot_script(const AccuracyResult& result, const fs::path& png) {
      << "set key outside right top\n"
      << "set title \"" << result.scene_name << ": " << result.vertices << " vertices, "
      << result.duration_s << " s simulated; reference " << result.reference.method << ", dt "
-     << format("%.2g", result.reference.dt_s) << " s\"\n"
+     << format("%.2g", result.reference.dt_s) << " s\" noenhanced\n"  // a scene name's _ is no subscript
      << "set arrow from " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
      << ", graph 0 to " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
      << ", graph 1 nohead dashtype 2 lc rgb 'gray40'\n"
@@ -181,10 +181,11 @@ std::string accuracy_summary(const AccuracyResult& result) {
   }
   out << "\n";
   for (sim::IntegratorKind integrator : integrators_in(result)) {
-    int ok = 0, failed = 0;
+    int ok = 0, failed = 0, above_stable = 0;
     const AccuracyRun* best = nullptr;
     for (const AccuracyRun& run : result.runs) {
       if (run.integrator != integrator) continue;
+      if (run.above_stable_dt) ++above_stable;
       if (run.status != RunStatus::Ok) {
         ++failed;
         continue;
@@ -197,6 +198,11 @@ std::string accuracy_summary(const AccuracyResult& result) {
     if (best != nullptr) {
       out << "; smallest error " << format("%.2e", best->rms_error_m) << " m in " << format("%.3f", best->wall_s)
           << " s";
+    }
+    if (above_stable > 0) {
+      out << "; " << above_stable << " at a dt above its estimated stable dt "
+          << format("%.3g", result.stable_dt_s[static_cast<std::size_t>(integrator)])
+          << " s (such a run may stay bounded without converging: leave it out of an order fit)";
     }
     out << "\n";
   }
