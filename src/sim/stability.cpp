@@ -402,7 +402,8 @@ double xpbd_bias_dt(double omega_max, int vertices) {
 
 double xpbd_linearised_dt(double omega_max, int vertices) {
   if (omega_max <= 0.0) return StabilityEstimate::kUnlimited;
-  const double mesh = std::pow(std::max(vertices, 1) / 642.0, -kXpbdLinearisedMeshPower);
+  // Finer meshes only: coarser ones keep the icosphere:3 limit (stability.hpp).
+  const double mesh = std::pow(std::max(vertices, 642) / 642.0, -kXpbdLinearisedMeshPower);
   return kXpbdLinearisedPhaseLimit * mesh / omega_max;
 }
 

@@ -146,7 +146,8 @@ constexpr double kXpbdBiasMeshPower = 0.43;
 constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
 // xpbd takes its linearised form (sim/integrators/xpbd.hpp: the springs and dampers explicit in the prediction, the
 // constraint pass on the increments) while h ≤ xpbd_linearised_dt: h ω_max ≤ kXpbdLinearisedPhaseLimit (N/642)^−p,
-// p = kXpbdLinearisedMeshPower, N the body's vertices. That form has no volume bias but a step limit of its
+// p = kXpbdLinearisedMeshPower, N the body's vertices (at least 642: coarser meshes keep the icosphere:3 limit;
+// icosphere:0 undamped, whose N would allow h ω_max 4.1, gained energy at 3.0 and lost a third of its volume). That form has no volume bias but a step limit of its
 // explicit part, lower on finer meshes. Measured on the bounce ball (k 1000 N/m, c 1 N·s/m, nRT 50 J, 1 kg, smooth
 // floor; ω_max with the contact): icosphere:3 (ω_max 2097 rad/s) stable over 1.2 s at h ω_max 1.94 (18 substeps per
 // 1/60 s), diverged at 2.18 (16); icosphere:5 (8442 rad/s) diverged within 0.03 s at 1.28 and 1.08 (110, 130),
