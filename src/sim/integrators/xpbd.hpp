@@ -5,6 +5,7 @@
 
 #include "sim/edge_colouring.hpp"
 #include "sim/integrators.hpp"
+#include "sim/stability.hpp"
 
 namespace sim {
 
@@ -25,21 +26,37 @@ namespace sim {
 //                after the edges (bodies without bending stiffness skip it)
 //   3. velocity  v = (x − x_prev)/h
 //
+// The linearised form, taken when h ≤ xpbd_linearised_dt (sim/stability.hpp; from ω_max of the body at the
+// initial state, springs, gas and contact, and its vertex count): step 1 also takes the springs' and dampers' forces at the start
+// of the substep, f_s(x, v), and step 2 corrects only what they got wrong, with C and ∇C·(x − x_prev) replaced by
+//                  C − C(x_prev)  and  ∇C·(x − x_prev) − h Ċ(x_prev, v_prev)
+// in the same Δλ. For one spring it is still exactly backward Euler (the explicit force cancels in the algebra);
+// for the network it removes the classical form's bias: at rest (x* = x) there is nothing left to correct, so
+// the one Gauss–Seidel pass cannot leave the network short of its equilibrium, and the pressurised ball flies
+// at the converged volume. The explicit part costs a stability limit like symplectic Euler's (h ω_max below
+// about 2 on icosphere:3, 1 on icosphere:5, measured), which the switch keeps away from; above it the classical form needs no limit.
+//
 // Why it is the same model: for h → 0 the correction is Δx_i = −h² w_i (k C + c Ċ) n̂ = h² f_i/m_i, the
 // spring-damper force of sim/forces.hpp, so the substeps converge to the same ODE as the other integrators,
 // at first order (the pass is one Gauss–Seidel sweep, symplectic Euler in the limit). At large h the springs
 // behave like backward Euler: no step limit from them; the explicit gas and gravity in step 1 keep
 // symplectic Euler's limit h < 2/ω_gas (sim/stability.hpp). Nothing is carried between substeps but x, v.
+// The linearised form converges to the same ODE (its corrections vanish faster as h → 0).
 class Xpbd final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
 
  private:
-  void colour_once(const Model& model);
+  // The colourings and every body's fastest mode, on the first step.
+  void prepare_once(const Model& model);
+  // Whether body b's substeps of h take the linearised form (h ≤ xpbd_linearised_dt).
+  bool linearised(std::size_t b, double h) const { return h <= linearised_dt_[b]; }
 
   std::vector<EdgeColouring> colourings_;  // per body of the model, computed on the first step
   std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
+  std::vector<double> linearised_dt_;      // per body: xpbd_linearised_dt at the initial state, contacts included [s]
   std::vector<Vec3> previous_x_;           // scratch: x at the start of the substep
+  std::vector<Vec3> previous_v_;           // scratch: v at the start of the substep
   std::vector<Vec3> force_;                // scratch: gravity + gas on every vertex [N]
 };
 
