@@ -1,19 +1,21 @@
 // Outputs under hostile conditions: devices, FIFOs and standard output written through (never replaced),
 // temporaries of killed runs removed, no mix of two runs' frames, SIGINT / SIGTERM keeping every complete
 // frame (the CSV's rows included) with exit 128 + the signal.
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
 
+#include "background_run.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
 #include "test_helpers.hpp"
@@ -110,23 +112,11 @@ struct Interrupted {
 
 // Starts softbody with `arguments`, sends `signal` once it has run `after_ms`, and waits for it.
 Interrupted interrupt(const std::vector<std::string>& arguments, int signal, int after_ms, const fs::path& dir) {
-  const fs::path errors = dir / "stderr.txt";
-  const pid_t child = ::fork();
-  if (child == 0) {
-    const int fd = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(fd, 2);
-    if (::chdir(SOFTBODY_SOURCE_DIR) != 0) ::_exit(126);
-    std::vector<char*> argv{const_cast<char*>(SOFTBODY_EXE)};
-    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(SOFTBODY_EXE, argv.data());
-    ::_exit(127);
-  }
+  testing_support::BackgroundRun run(arguments, dir);
   std::this_thread::sleep_for(std::chrono::milliseconds(after_ms));
-  ::kill(child, signal);
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status), read_text(errors)};
+  run.signal(signal);
+  const std::optional<int> status = run.wait_for_exit(std::chrono::seconds(600));
+  return {status.value_or(-1), run.errors()};
 }
 
 // The number N in "after N complete frames".
