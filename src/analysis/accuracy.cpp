@@ -158,6 +158,7 @@ class Benchmark {
     result_.scene_name = scene.name;
     result_.duration_s = options.duration_s > 0.0 ? options.duration_s : scene.duration_s;
     result_.fps = scene.fps;
+    result_.floor_factor = options.floor_factor;
   }
 
   AccuracyResult run() {

@@ -69,6 +69,7 @@ struct AccuracyResult {
   double body_size_m = 0.0;   // RMS distance of the vertices from their centroid at t = 0
   std::vector<double> stable_dt_s;  // the estimated stable dt of each integrator of `runs`, by IntegratorKind
   Reference reference;
+  double floor_factor = 0.0;  // AccuracyOptions::floor_factor: runs below it times the uncertainty are at_reference
   std::vector<AccuracyRun> runs;
   double total_wall_s = 0.0;
 };
