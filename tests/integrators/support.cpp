@@ -97,4 +97,37 @@ ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s,
   return sweep;
 }
 
+double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
+                        std::span<const softbody::Vec3> x, const Eigen::VectorXd& r, double step) {
+  using softbody::Vec3;
+  // H r first: assemble() below replaces the rank-one terms.
+  Eigen::VectorXd product;
+  hessian.multiply(r, product);
+  const auto add_rank_one = [&](std::span<const Vec3> u, auto vertex_of) {
+    double u_r = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) u_r += u[i].dot(r.segment<3>(hessian.dof(vertex_of(i))));
+    for (std::size_t i = 0; i < u.size(); ++i) product.segment<3>(hessian.dof(vertex_of(i))) += u_r * u[i];
+  };
+  for (const sim::IncrementalPotential::GasTerm& term : potential.gas_terms()) {
+    const int first = model.bodies[static_cast<std::size_t>(term.body)].first_vertex;
+    add_rank_one(term.direction, [first](std::size_t i) { return first + static_cast<int>(i); });
+  }
+  for (const sim::BodyContactPotential::Term& term : potential.contact_terms()) {
+    add_rank_one(term.u, [&term](std::size_t i) { return term.vertex[i]; });
+  }
+  std::vector<Vec3> plus(x.begin(), x.end()), minus(x.begin(), x.end());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    plus[i] += step * r.segment<3>(hessian.dof(static_cast<int>(i)));
+    minus[i] -= step * r.segment<3>(hessian.dof(static_cast<int>(i)));
+  }
+  sim::BlockSystem scratch;
+  scratch.build(model.vertex_count(), potential.pairs());
+  Eigen::VectorXd gradient_plus = Eigen::VectorXd::Zero(hessian.size()), gradient_minus = gradient_plus;
+  const auto exact = sim::IncrementalPotential::Hessian::Exact;
+  potential.assemble(model, plus, exact, scratch, gradient_plus);
+  potential.assemble(model, minus, exact, scratch, gradient_minus);
+  const Eigen::VectorXd derivative = (gradient_plus - gradient_minus) / (2.0 * step);
+  return (derivative - product).norm() / product.norm();
+}
+
 }  // namespace integrator_tests

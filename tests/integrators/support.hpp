@@ -1,10 +1,15 @@
 // Helpers shared by the integrator tests: worlds from scene text, fixed-step runs, state distances.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "scene/scene.hpp"
+#include "sim/integrators/block_system.hpp"
+#include "sim/integrators/incremental_potential.hpp"
 #include "sim/world.hpp"
 
 namespace integrator_tests {
@@ -40,6 +45,12 @@ struct ToleranceSweep {
 };
 ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s, const sim::State& reference,
                                     int loosest_exponent, int tightest_exponent);
+
+// How far newton's Hessian, as `potential` last assembled it into `hessian` at x (the sparse part plus the rank-one
+// terms: the gas's and the body contacts'), is from the derivative of the gradient along r:
+// |(∇E(x + εr) − ∇E(x − εr)) / 2ε − H r| / |H r|, with E's lags held (ε = `step`, times r [m]). Assembles again.
+double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
+                        std::span<const softbody::Vec3> x, const Eigen::VectorXd& r, double step);
 
 // Total energy of every body: kinetic + gravitational + spring + gas [J].
 double total_energy(const sim::World& world);
