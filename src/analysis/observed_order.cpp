@@ -6,9 +6,10 @@
 
 namespace analysis {
 
-double least_squares_slope(std::span<const double> x, std::span<const double> y) {
+LineFit least_squares_line(std::span<const double> x, std::span<const double> y) {
   const std::size_t n = std::min(x.size(), y.size());
-  if (n < 2) return std::numeric_limits<double>::quiet_NaN();
+  LineFit fit;
+  if (n < 2) return fit;
   double mean_x = 0.0, mean_y = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     mean_x += x[k] / static_cast<double>(n);
@@ -19,7 +20,16 @@ double least_squares_slope(std::span<const double> x, std::span<const double> y)
     sxy += (x[k] - mean_x) * (y[k] - mean_y);
     sxx += (x[k] - mean_x) * (x[k] - mean_x);
   }
-  return sxx > 0.0 ? sxy / sxx : std::numeric_limits<double>::quiet_NaN();
+  if (!(sxx > 0.0)) return fit;
+  fit.slope = sxy / sxx;
+  if (n < 3) return fit;
+  double residuals = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double r = y[k] - mean_y - fit.slope * (x[k] - mean_x);
+    residuals += r * r;
+  }
+  fit.slope_standard_error = std::sqrt(residuals / static_cast<double>(n - 2) / sxx);
+  return fit;
 }
 
 ObservedOrder observed_order(std::vector<SweepPoint> points) {
@@ -34,7 +44,9 @@ ObservedOrder observed_order(std::vector<SweepPoint> points) {
       order.pairwise.push_back((log_error[k - 1] - log_error[k]) / (log_step[k - 1] - log_step[k]));  // ln(e_k/e_k+1) / ln(h_k/h_k+1)
     }
   }
-  order.fitted = least_squares_slope(log_step, log_error);
+  const LineFit fit = least_squares_line(log_step, log_error);
+  order.fitted = fit.slope;
+  order.fitted_standard_error = fit.slope_standard_error;
   order.points = std::move(points);
   return order;
 }

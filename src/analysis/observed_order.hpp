@@ -23,10 +23,18 @@ struct ObservedOrder {
   // an error constant that wobbles from run to run (a contact event falling at a different place in its step)
   // averages out instead of swinging the pairwise orders.
   double fitted = std::numeric_limits<double>::quiet_NaN();
+  // The fit's standard error, √(Σ residual² / (n − 2) / Σ (ln h − mean)²) (NaN with fewer than three points): how
+  // far the scatter of the points about the line leaves the slope uncertain.
+  double fitted_standard_error = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Least-squares slope of y against x (NaN with fewer than two distinct x).
-double least_squares_slope(std::span<const double> x, std::span<const double> y);
+// Least-squares line of y against x: its slope and the slope's standard error (NaN where undefined: fewer than
+// two distinct x, fewer than three points).
+struct LineFit {
+  double slope = std::numeric_limits<double>::quiet_NaN();
+  double slope_standard_error = std::numeric_limits<double>::quiet_NaN();
+};
+LineFit least_squares_line(std::span<const double> x, std::span<const double> y);
 
 // Pairwise and fitted orders of `points` (in any order; points with a non-positive step or error are dropped).
 ObservedOrder observed_order(std::vector<SweepPoint> points);

@@ -180,7 +180,9 @@ std::string order_line(const AccuracyResult& result, sim::IntegratorKind integra
   if (order.points.size() < 2) return out.str() + ": too few to fit\n";
   out << ": pairwise";
   for (std::size_t k = 0; k < order.pairwise.size(); ++k) out << (k ? ", " : " ") << format("%.2f", order.pairwise[k]);
-  out << "; least squares " << format("%.2f", order.fitted) << "\n";
+  out << "; least squares " << format("%.2f", order.fitted);
+  if (std::isfinite(order.fitted_standard_error)) out << " +- " << format("%.2f", order.fitted_standard_error);
+  out << "\n";
   return out.str();
 }
 

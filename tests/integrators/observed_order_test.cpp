@@ -24,6 +24,7 @@ TEST(ObservedOrder, RecoversAnExactPowerLaw) {
   ASSERT_EQ(order.pairwise.size(), 4u);
   for (double p : order.pairwise) EXPECT_NEAR(p, 4.0, 1e-9);
   EXPECT_NEAR(order.fitted, 4.0, 1e-9);
+  EXPECT_NEAR(order.fitted_standard_error, 0.0, 1e-9);  // on the line
   EXPECT_DOUBLE_EQ(order.points.front().step, 1e-4);
 }
 
@@ -41,7 +42,21 @@ TEST(ObservedOrder, LeastSquaresAveragesAWobblingConstant) {
   for (std::size_t k = 0; k < order.pairwise.size(); ++k) {
     EXPECT_NEAR(order.pairwise[k], 4.0 + (k % 2 == 0 ? 1.0 : -1.0) * std::log2(3.0), 1e-9);
   }
-  EXPECT_NEAR(order.fitted, 4.0 + 1.5 * std::log(3.0) / (17.5 * std::log(2.0)), 1e-9);
+  const double fitted = 4.0 + 1.5 * std::log(3.0) / (17.5 * std::log(2.0));
+  EXPECT_NEAR(order.fitted, fitted, 1e-9);
+  // The standard error from the residuals r_k = ln e_k − the line, recomputed here: √(Σ r² / 4 / Σ (ln h − mean)²).
+  double residuals = 0.0, spread = 0.0, mean_log_h = 0.0, mean_log_e = 0.0;
+  for (const SweepPoint& p : points) {
+    mean_log_h += std::log(p.step) / 6.0;
+    mean_log_e += std::log(p.error_m) / 6.0;
+  }
+  for (const SweepPoint& p : points) {
+    const double r = std::log(p.error_m) - mean_log_e - fitted * (std::log(p.step) - mean_log_h);
+    residuals += r * r;
+    spread += std::pow(std::log(p.step) - mean_log_h, 2);
+  }
+  EXPECT_NEAR(order.fitted_standard_error, std::sqrt(residuals / 4.0 / spread), 1e-9);
+  EXPECT_GT(order.fitted_standard_error, 0.1);
 }
 
 TEST(ObservedOrder, DropsRunsWithoutAnErrorAndNeedsTwo) {
@@ -99,7 +114,7 @@ TEST(OrderFitPoints, KeepsOnlyRunsWellInsideTheStabilityRegionAndAboveTheReferen
 TEST(OrderFitPoints, TheSummaryReportsTheFittedOrders) {
   const std::string summary = analysis::accuracy_summary(sweep());
   EXPECT_NE(summary.find("observed order over 3 of 4 runs ok"), std::string::npos) << summary;
-  EXPECT_NE(summary.find("pairwise 4.00, 4.00; least squares 4.00"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("pairwise 4.00, 4.00; least squares 4.00 +- 0.00"), std::string::npos) << summary;
   EXPECT_NE(summary.find("error ~ tolerance^p over 2 of 2 runs ok"), std::string::npos) << summary;
   EXPECT_NE(summary.find("euler: 2 runs ok"), std::string::npos) << summary;
 }
