@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/observed_order.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/diagnostics.hpp"
@@ -45,15 +47,33 @@ double total_energy(const sim::World& world) {
 }
 
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double sum_x = 0, sum_y = 0, sum_xx = 0, sum_xy = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sum_x += x[k];
-    sum_y += y[k];
-    sum_xx += x[k] * x[k];
-    sum_xy += x[k] * y[k];
-  }
-  return (n * sum_xy - sum_x * sum_y) / (n * sum_xx - sum_x * sum_x);
+  return analysis::least_squares_line(x, y).slope;
+}
+
+HalvingSweep::HalvingSweep(std::string json_text, double span_s, double reference_dt_s)
+    : json_text_(std::move(json_text)), span_s_(span_s), reference_dt_s_(reference_dt_s) {}
+
+sim::State HalvingSweep::state_after(sim::IntegratorKind integrator, double dt) const {
+  sim::World world = make_world(json_text_, integrator);
+  run_for(world, span_s_, dt);
+  return world.state;
+}
+
+const sim::State& HalvingSweep::reference() {
+  if (!reference_) reference_ = state_after(sim::IntegratorKind::Rk45, reference_dt_s_);
+  return *reference_;
+}
+
+double HalvingSweep::reference_uncertainty() {
+  if (!uncertainty_) uncertainty_ = rms_position_difference(state_after(sim::IntegratorKind::Rk45, 2 * reference_dt_s_), reference());
+  return *uncertainty_;
+}
+
+std::vector<double> HalvingSweep::errors(sim::IntegratorKind integrator, double coarsest_dt, int halvings) {
+  std::vector<double> errors;
+  double dt = coarsest_dt;
+  for (int k = 0; k <= halvings; ++k, dt /= 2.0) errors.push_back(rms_position_difference(state_after(integrator, dt), reference()));
+  return errors;
 }
 
 double observed_order(const std::vector<double>& errors) {
