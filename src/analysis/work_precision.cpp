@@ -165,7 +165,8 @@ std::vector<EqualTimeRatio> equal_time_ratios(const AccuracyResult& result, sim:
 
 namespace {
 
-// "    order over 3 of 4 runs ok (...): pairwise 4.23, 3.20; least squares 4.05" (rk45: the tolerance exponent).
+// "    observed order over 3 of 4 runs ok (...): pairwise 4.23, 3.20; least squares 4.05 +- 0.40" (rk45: the
+// exponent of error ~ tolerance^p).
 std::string order_line(const AccuracyResult& result, sim::IntegratorKind integrator, int runs_ok) {
   const ObservedOrder order = observed_order(order_fit_points(result, integrator));
   const bool adaptive = integrator == sim::IntegratorKind::Rk45;
