@@ -158,6 +158,7 @@ class Benchmark {
     result_.scene_name = scene.name;
     result_.duration_s = options.duration_s > 0.0 ? options.duration_s : scene.duration_s;
     result_.fps = scene.fps;
+    result_.floor_factor = options.floor_factor;
   }
 
   AccuracyResult run() {
@@ -255,7 +256,7 @@ class Benchmark {
 
   void sweep_steps(sim::IntegratorKind integrator) {
     double dt = options_.coarsest_factor * scene_.solver.dt_s;
-    for (int k = 0; k < options_.max_runs; ++k, dt /= 2.0) {
+    for (int k = 0; k < options_.max_runs; ++k, dt /= options_.refinement) {
       const AccuracyRun run = measure(integrator, dt, 0.0);
       if (run.wall_s > options_.run_budget_s || at_reference_floor(run)) break;
     }

@@ -21,7 +21,10 @@ struct AccuracyOptions {
   // control. With contact events every method is first order at best, so a cheaper method at a finer
   // step can make the better reference there (docs/integrators.md).
   sim::IntegratorKind reference_integrator = sim::IntegratorKind::Rk45;
-  double coarsest_factor = 32.0;    // fixed-step sweeps start at this × solver.dt, then halve
+  double coarsest_factor = 32.0;    // fixed-step sweeps start at this × solver.dt, then refine
+  // Each fixed-step run's dt is the previous one's over this (2: halving). A finer ratio (√2) puts more runs
+  // between the stability limit and the reference's floor, where an order can be fitted.
+  double refinement = 2.0;
   int max_runs = 12;                // per integrator
   double run_budget_s = 3.0;        // stop refining an integrator once one run takes longer than this
   double rk45_loosest_tolerance = 1e-2;  // then ÷10 per run
@@ -69,6 +72,7 @@ struct AccuracyResult {
   double body_size_m = 0.0;   // RMS distance of the vertices from their centroid at t = 0
   std::vector<double> stable_dt_s;  // the estimated stable dt of each integrator of `runs`, by IntegratorKind
   Reference reference;
+  double floor_factor = 0.0;  // AccuracyOptions::floor_factor: runs below it times the uncertainty are at_reference
   std::vector<AccuracyRun> runs;
   double total_wall_s = 0.0;
 };

@@ -77,14 +77,17 @@ Action add_accuracy_options(CLI::App& command) {
   command.add_option("--coarsest", o.coarsest_factor, "Fixed-step sweeps start at this times solver.dt")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command.add_option("--refinement", o.refinement, "Each fixed-step run's dt is the previous one's divided by this")
+      ->check(CLI::Range(1.0001, 1000.0))
+      ->capture_default_str();
   command.add_option("--max-runs", o.max_runs, "Most runs per integrator")->check(CLI::Range(1, 40))->capture_default_str();
   command.add_option("--integrators", state->integrators, "Only these (default: all of them)")
       ->delimiter(',')
       ->type_name("NAME,...");
   command.footer(
-      "For each integrator: a sweep of steps from --coarsest x solver.dt, halved each run (rk45: tolerances\n"
-      "1e-2, 1e-3, ...), until a run takes longer than --budget, reaches the reference's own uncertainty, or\n"
-      "--max-runs. Error = RMS vertex position error against the reference over every frame after frame 0\n"
+      "For each integrator: a sweep of steps from --coarsest x solver.dt, divided by --refinement each run (rk45:\n"
+      "tolerances 1e-2, 1e-3, ...), until a run takes longer than --budget, reaches the reference's own uncertainty,\n"
+      "or --max-runs. Error = RMS vertex position error against the reference over every frame after frame 0\n"
       "(final_error: the last frame only). The reference is Dormand-Prince's 5th-order formula at a fixed\n"
       "step (--reference-integrator); its distance to the same at twice the step is its uncertainty.\n"
       "CSV columns: " + std::string(analysis::kAccuracyCsvHeader) + "\n"

@@ -191,16 +191,6 @@ void read_smooth_contact(ObjectReader& r, sim::SmoothContact& smooth) {
   smooth.smoothing_m = r.number("smoothing", smooth.smoothing_m, kPositive);
 }
 
-// What the solver cannot do yet: the newton integrator's incremental potential holds springs, dampers, gas
-// and gravity only, so a smooth contact (a force inside a(x, v)) would be left out of its steps.
-void refuse_unsupported_combinations(ObjectReader& top, const Scene& s) {
-  if (s.solver.integrator != sim::IntegratorKind::Newton) return;
-  if (s.collisions.contact == sim::BodyContactModel::Smooth && s.bodies.size() > 1) {
-    top.fail("collisions.contact", "impulse with solver.integrator newton (its potential has the smooth floor but no body contact yet)",
-             &top.at("collisions").at("contact"));
-  }
-}
-
 std::optional<sim::Floor> read_floor(ObjectReader& top) {
   if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
   ObjectReader r(top.at("floor"), "floor", top.file());
@@ -500,7 +490,6 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.limits = read_limits(top);
   s.bodies = read_bodies(top);
   s.collisions = read_collisions(top);
-  refuse_unsupported_combinations(top, s);
   s.render = read_render(top);
   s.camera = read_camera(top);
   s.light = read_light(top);

@@ -236,29 +236,39 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
   return contacts;
 }
 
+BodyCollider::SmoothFrame BodyCollider::smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex,
+                                                     const Nearest& best, double search) {
+  const Vec3* x_surface = x.data() + surface.first_vertex;
+  const Triangle& t = surface.topology.faces[best.triangle];
+  const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
+  const Vec3 offset = x[vertex] - best.point;
+  const double distance = offset.norm();
+  const double side = offset.dot(normal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
+  SmoothFrame frame;
+  frame.vertex = vertex;
+  frame.corners = {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]};
+  frame.weights = best.weights;
+  frame.signed_distance_m = side * distance;
+  // Along the offset from the closest point (continuous where the nearest triangle changes on a convex
+  // surface); the face normal where the vertex sits on the surface.
+  frame.direction = distance > 1e-9 * search ? Vec3(side / distance * offset) : normal;
+  return frame;
+}
+
 int BodyCollider::add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                                          std::span<const Vec3> x, std::span<const Vec3> v,
                                          const SmoothResponse& contact, std::span<Vec3> force) {
   const double search = kSearchFraction * surface.rest.mean_edge_m;
   const double skin = contact.smoothing_m;  // the contact starts δ outside the surface: at s = 0 the ramp is done
   const double eps2 = contact.slip_speed_m_per_s * contact.slip_speed_m_per_s;
-  const Vec3* x_surface = x.data() + surface.first_vertex;
   int contacts = 0;
   for_each_nearest(moving, surface, x, search, [&](int vertex, const Nearest& best) {
-    const Triangle& t = surface.topology.faces[best.triangle];
-    const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
-    const Vec3 offset = x[vertex] - best.point;
-    const double distance = offset.norm();
-    const double side = offset.dot(normal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
-    const double signed_distance = side * distance;
-    const double depth = skin - signed_distance;
+    const SmoothFrame frame = smooth_frame(surface, x, vertex, best, search);
+    const double depth = skin - frame.signed_distance_m;
     if (depth <= 0.0) return;
-    // Along the offset from the closest point (continuous where the nearest triangle changes on a convex
-    // surface); the face normal where the vertex sits on the surface.
-    const Vec3 direction = distance > 1e-9 * search ? Vec3(side / distance * offset) : normal;
-    const std::array<int, 3> corners{surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]};
+    const Vec3& direction = frame.direction;
     Vec3 surface_velocity = Vec3::Zero();
-    for (int k = 0; k < 3; ++k) surface_velocity += best.weights[k] * v[corners[k]];
+    for (int k = 0; k < 3; ++k) surface_velocity += frame.weights[k] * v[frame.corners[k]];
     const Vec3 relative = v[vertex] - surface_velocity;
     const double normal_speed = relative.dot(direction);
     const Vec3 tangential = relative - normal_speed * direction;
@@ -268,7 +278,7 @@ int BodyCollider::add_smooth_pair_forces(const Body& moving, const Body& surface
     const double per_slip = contact.friction * elastic / std::sqrt(tangential.squaredNorm() + eps2);   // μ N / √(v_t² + ε²)
     const Vec3 f = (elastic + dashpot) * direction - per_slip * tangential;
     force[vertex] += f;
-    for (int k = 0; k < 3; ++k) force[corners[k]] -= best.weights[k] * f;
+    for (int k = 0; k < 3; ++k) force[frame.corners[k]] -= frame.weights[k] * f;
     ++contacts;
   });
   return contacts;
@@ -318,6 +328,20 @@ int BodyCollider::add_smooth_forces(const std::vector<Body>& bodies, std::span<c
   compute_boxes(bodies, x);
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
     return add_smooth_pair_forces(moving, surface, mass_kg, x, v, contact, force);
+  });
+}
+
+void BodyCollider::find_smooth_frames(const std::vector<Body>& bodies, std::span<const Vec3> x,
+                                      std::vector<SmoothFrame>& frames) {
+  frames.clear();
+  if (bodies.size() < 2) return;
+  compute_boxes(bodies, x);
+  for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
+    const double search = kSearchFraction * surface.rest.mean_edge_m;
+    for_each_nearest(moving, surface, x, search, [&](int vertex, const Nearest& best) {
+      frames.push_back(smooth_frame(surface, x, vertex, best, search));
+    });
+    return 0;
   });
 }
 

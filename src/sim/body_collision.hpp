@@ -6,6 +6,7 @@
 // the force evaluation (sim::Dynamics). A single body costs nothing (no search at all).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,6 +37,18 @@ class BodyCollider {
   int add_smooth_forces(const std::vector<Body>& bodies, std::span<const double> mass_kg, std::span<const Vec3> x,
                         std::span<const Vec3> v, const SmoothResponse& contact, std::span<Vec3> force);
 
+  // Where the smooth model looks (the same search as add_smooth_forces): one vertex near another body's surface.
+  struct SmoothFrame {
+    int vertex = 0;                   // world index
+    std::array<int, 3> corners{};     // the nearest triangle's corners, world indices
+    Vec3 weights = Vec3::Zero();      // barycentric weights of the closest point q on it
+    Vec3 direction = Vec3::Zero();    // unit: the way the contact pushes the vertex, ±(x − q)/|x − q| (outward)
+    double signed_distance_m = 0.0;   // direction·(x − q): < 0 inside the surface body
+  };
+  // Every vertex of each body with a triangle of another body within the contact's search (half the surface's
+  // mean edge), nearest triangle first found, in the order add_smooth_forces visits them; `frames` is overwritten.
+  void find_smooth_frames(const std::vector<Body>& bodies, std::span<const Vec3> x, std::vector<SmoothFrame>& frames);
+
  private:
   struct Box {
     Vec3 lo, hi;
@@ -59,6 +72,8 @@ class BodyCollider {
   void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material, bool full_push);
+  // The frame of `vertex` against its nearest triangle `best` of `surface`.
+  static SmoothFrame smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best, double search);
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                              std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                              std::span<Vec3> force);

@@ -57,6 +57,11 @@ double smooth_dashpot_weight(const SmoothResponse& contact, double depth_m) {
   return smootherstep(depth_m / contact.smoothing_m);
 }
 
+double smooth_energy_per_mass(const SmoothResponse& contact, double depth_m) {
+  const double delta = contact.smoothing_m;
+  return contact.omega2 * delta * delta * smootherstep_second_integral(depth_m / delta);
+}
+
 void add_smooth_floor_forces(const SmoothFloor& floor, std::span<const double> mass_kg, std::span<const Vec3> x,
                              std::span<const Vec3> v, std::span<Vec3> force) {
   const double eps2 = floor.slip_speed_m_per_s * floor.slip_speed_m_per_s;

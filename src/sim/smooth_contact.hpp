@@ -49,6 +49,9 @@ SmoothFloor resolve_smooth_floor(const Floor& floor);
 // of its dashpot there, s(depth/δ) (see the design note).
 double smooth_elastic_per_mass(const SmoothResponse& contact, double depth_m);
 double smooth_dashpot_weight(const SmoothResponse& contact, double depth_m);
+// The contact spring's potential energy per unit mass at penetration `depth` > 0, ω² δ² R(depth/δ) [J/kg]
+// (its derivative in depth is smooth_elastic_per_mass).
+double smooth_energy_per_mass(const SmoothResponse& contact, double depth_m);
 
 // f_i += the contact force on every vertex below the floor (see the design note) [N].
 void add_smooth_floor_forces(const SmoothFloor& floor, std::span<const double> mass_kg, std::span<const Vec3> x,

@@ -13,10 +13,6 @@
 
 namespace {
 
-using integrator_tests::make_world;
-using integrator_tests::rms_position_difference;
-using integrator_tests::run_for;
-
 // A firm ball thrown down and sideways at the smooth floor (friction on): it lands after about 25 ms, its
 // contact patch squashes and slides, and it leaves the floor again within the span.
 constexpr const char* kImpactScene = R"({
@@ -27,22 +23,11 @@ constexpr const char* kImpactScene = R"({
 })";
 constexpr double kSpan = 0.128;  // s: the whole first contact (every dt below divides it)
 
-sim::State fixed_step_state(sim::IntegratorKind integrator, double dt) {
-  sim::World world = make_world(kImpactScene, integrator);
-  run_for(world, kSpan, dt);
-  return world.state;
-}
-
 // The reference: Dormand–Prince's fifth-order formula at a fixed 2 µs; its distance to the same at 4 µs
 // bounds its error.
-const sim::State& reference() {
-  static const sim::State state = fixed_step_state(sim::IntegratorKind::Rk45, 2e-6);
-  return state;
-}
-double reference_uncertainty() {
-  static const double difference =
-      rms_position_difference(fixed_step_state(sim::IntegratorKind::Rk45, 4e-6), reference());
-  return difference;
+integrator_tests::HalvingSweep& impact() {
+  static integrator_tests::HalvingSweep measurement(kImpactScene, kSpan, 2e-6);
+  return measurement;
 }
 
 struct OrderCase {
@@ -55,16 +40,13 @@ class ContactConvergenceOrder : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(ContactConvergenceOrder, MatchesTheMethodsOrderThroughAnImpact) {
   const OrderCase c = GetParam();
-  std::vector<double> errors;
-  for (double dt = c.coarsest_dt; dt >= c.coarsest_dt / 8.0 * 0.99; dt /= 2.0) {
-    errors.push_back(rms_position_difference(fixed_step_state(c.integrator, dt), reference()));
-  }
-  const double order = integrator_tests::report_observed_order(c.integrator, errors, reference_uncertainty());
+  const std::vector<double> errors = impact().errors(c.integrator, c.coarsest_dt, 3);
+  const double order = integrator_tests::report_observed_order(c.integrator, errors, impact().reference_uncertainty());
   // No order is lost through the impact. (rk4 measures above its order here, 5.3: over this short span its
   // error is dominated by the local errors of the steps through the impact, not yet by their accumulation.)
   EXPECT_GT(order, c.expected_order - 0.3);
   EXPECT_LT(order, c.expected_order + (c.integrator == sim::IntegratorKind::Rk4 ? 1.6 : 0.3));
-  EXPECT_LT(reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
+  EXPECT_LT(impact().reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -79,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // rk45 chooses its steps: through the impact its error should still follow the tolerance.
 TEST(ContactAdaptiveTolerance, ErrorFollowsTheToleranceThroughAnImpact) {
-  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kImpactScene, kSpan, reference(), 4, 8);
+  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kImpactScene, kSpan, impact().reference(), 4, 8);
   EXPECT_NEAR(sweep.slope, 1.0, 0.3);
 }
 

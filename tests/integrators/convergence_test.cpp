@@ -9,10 +9,6 @@
 
 namespace {
 
-using integrator_tests::make_world;
-using integrator_tests::rms_position_difference;
-using integrator_tests::run_for;
-
 // A breathing sphere under gravity, no floor (so no contact events: smooth motion). It starts at its spring
 // rest shape; the gas pushes it outward, it overshoots and breathes while falling. Dampers are on so that
 // Verlet's handling of velocity-dependent forces is part of what is measured.
@@ -25,23 +21,11 @@ constexpr const char* kSmoothScene = R"({
 // coarsest steps below are in the asymptotic range. Every dt below divides it.
 constexpr double kSpan = 0.128;  // s
 
-// Dormand–Prince's fifth-order formula at a fixed step (no error control).
-sim::State dormand_prince_state(double dt) {
-  sim::World world = make_world(kSmoothScene, sim::IntegratorKind::Rk45);
-  run_for(world, kSpan, dt);
-  return world.state;
-}
-
-// The reference: fifth order at 2 µs, 50× finer than the finest rk4 step. Computed once; its distance to
-// the same at 4 µs bounds its error and must be far below the smallest error measured.
-constexpr double kReferenceDt = 2e-6;  // s
-const sim::State& reference() {
-  static const sim::State state = dormand_prince_state(kReferenceDt);
-  return state;
-}
-double reference_uncertainty() {
-  static const double difference = rms_position_difference(dormand_prince_state(2 * kReferenceDt), reference());
-  return difference;
+// The reference: fifth order at 2 µs, 50× finer than the finest rk4 step, computed once; its distance to the same
+// at 4 µs bounds its error and must be far below the smallest error measured.
+integrator_tests::HalvingSweep& breathing() {
+  static integrator_tests::HalvingSweep measurement(kSmoothScene, kSpan, 2e-6);
+  return measurement;
 }
 
 struct OrderCase {
@@ -54,18 +38,11 @@ class ConvergenceOrder : public ::testing::TestWithParam<OrderCase> {};
 
 TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
   const OrderCase c = GetParam();
-  const double finest_dt = c.coarsest_dt / 16.0;
-  const sim::State& exact = reference();
-  std::vector<double> errors;
-  for (double dt = c.coarsest_dt; dt >= finest_dt * 0.99; dt /= 2.0) {
-    sim::World world = make_world(kSmoothScene, c.integrator);
-    run_for(world, kSpan, dt);
-    errors.push_back(rms_position_difference(world.state, exact));
-  }
-  const double order = integrator_tests::report_observed_order(c.integrator, errors, reference_uncertainty());
+  const std::vector<double> errors = breathing().errors(c.integrator, c.coarsest_dt, 4);
+  const double order = integrator_tests::report_observed_order(c.integrator, errors, breathing().reference_uncertainty());
   EXPECT_NEAR(order, c.expected_order, 0.2);
   EXPECT_GT(errors.back(), 1e-11) << "the finest error must stay far above round-off";
-  EXPECT_LT(reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
+  EXPECT_LT(breathing().reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -81,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
 // rk45 has no step to halve: its global error should follow the tolerance, roughly proportionally
 // (Dormand–Prince's local error ∝ h⁵ and h ∝ tol^(1/5) make the error per unit time ∝ tol).
 TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
-  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kSmoothScene, kSpan, reference(), 4, 9);
+  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kSmoothScene, kSpan, breathing().reference(), 4, 9);
   for (std::size_t k = 0; k < sweep.errors.size(); ++k) {
     EXPECT_LT(sweep.errors[k], 10.0 * sweep.tolerances[k]) << "the error should stay near the requested tolerance";
   }

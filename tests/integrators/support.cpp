@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/observed_order.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/diagnostics.hpp"
@@ -45,15 +47,33 @@ double total_energy(const sim::World& world) {
 }
 
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double sum_x = 0, sum_y = 0, sum_xx = 0, sum_xy = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    sum_x += x[k];
-    sum_y += y[k];
-    sum_xx += x[k] * x[k];
-    sum_xy += x[k] * y[k];
-  }
-  return (n * sum_xy - sum_x * sum_y) / (n * sum_xx - sum_x * sum_x);
+  return analysis::least_squares_line(x, y).slope;
+}
+
+HalvingSweep::HalvingSweep(std::string json_text, double span_s, double reference_dt_s)
+    : json_text_(std::move(json_text)), span_s_(span_s), reference_dt_s_(reference_dt_s) {}
+
+sim::State HalvingSweep::state_after(sim::IntegratorKind integrator, double dt) const {
+  sim::World world = make_world(json_text_, integrator);
+  run_for(world, span_s_, dt);
+  return world.state;
+}
+
+const sim::State& HalvingSweep::reference() {
+  if (!reference_) reference_ = state_after(sim::IntegratorKind::Rk45, reference_dt_s_);
+  return *reference_;
+}
+
+double HalvingSweep::reference_uncertainty() {
+  if (!uncertainty_) uncertainty_ = rms_position_difference(state_after(sim::IntegratorKind::Rk45, 2 * reference_dt_s_), reference());
+  return *uncertainty_;
+}
+
+std::vector<double> HalvingSweep::errors(sim::IntegratorKind integrator, double coarsest_dt, int halvings) {
+  std::vector<double> errors;
+  double dt = coarsest_dt;
+  for (int k = 0; k <= halvings; ++k, dt /= 2.0) errors.push_back(rms_position_difference(state_after(integrator, dt), reference()));
+  return errors;
 }
 
 double observed_order(const std::vector<double>& errors) {
@@ -95,6 +115,39 @@ ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s,
   sweep.slope = fitted_slope(log_tolerance, log_error);
   std::printf("rk45: d log(error) / d log(tolerance) = %.3f\n", sweep.slope);
   return sweep;
+}
+
+double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
+                        std::span<const softbody::Vec3> x, const Eigen::VectorXd& r, double step) {
+  using softbody::Vec3;
+  // H r first: assemble() below replaces the rank-one terms.
+  Eigen::VectorXd product;
+  hessian.multiply(r, product);
+  const auto add_rank_one = [&](std::span<const Vec3> u, auto vertex_of) {
+    double u_r = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) u_r += u[i].dot(r.segment<3>(hessian.dof(vertex_of(i))));
+    for (std::size_t i = 0; i < u.size(); ++i) product.segment<3>(hessian.dof(vertex_of(i))) += u_r * u[i];
+  };
+  for (const sim::IncrementalPotential::GasTerm& term : potential.gas_terms()) {
+    const int first = model.bodies[static_cast<std::size_t>(term.body)].first_vertex;
+    add_rank_one(term.direction, [first](std::size_t i) { return first + static_cast<int>(i); });
+  }
+  for (const sim::BodyContactPotential::Term& term : potential.contact_terms()) {
+    add_rank_one(term.u, [&term](std::size_t i) { return term.vertex[i]; });
+  }
+  std::vector<Vec3> plus(x.begin(), x.end()), minus(x.begin(), x.end());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    plus[i] += step * r.segment<3>(hessian.dof(static_cast<int>(i)));
+    minus[i] -= step * r.segment<3>(hessian.dof(static_cast<int>(i)));
+  }
+  sim::BlockSystem scratch;
+  scratch.build(model.vertex_count(), potential.pairs());
+  Eigen::VectorXd gradient_plus = Eigen::VectorXd::Zero(hessian.size()), gradient_minus = gradient_plus;
+  const auto exact = sim::IncrementalPotential::Hessian::Exact;
+  potential.assemble(model, plus, exact, scratch, gradient_plus);
+  potential.assemble(model, minus, exact, scratch, gradient_minus);
+  const Eigen::VectorXd derivative = (gradient_plus - gradient_minus) / (2.0 * step);
+  return (derivative - product).norm() / product.norm();
 }
 
 }  // namespace integrator_tests

@@ -1,10 +1,16 @@
 // Helpers shared by the integrator tests: worlds from scene text, fixed-step runs, state distances.
 #pragma once
 
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "scene/scene.hpp"
+#include "sim/integrators/block_system.hpp"
+#include "sim/integrators/incremental_potential.hpp"
 #include "sim/world.hpp"
 
 namespace integrator_tests {
@@ -21,7 +27,29 @@ void run_for(sim::World& world, double duration_s, double dt);
 // RMS over vertices of |x_a − x_b| [m].
 double rms_position_difference(const sim::State& a, const sim::State& b);
 
-// Least-squares slope of y against x.
+// A convergence measurement on one scene over one span (the breathing sphere's, the impact's): the reference,
+// Dormand–Prince's fifth-order formula at a fixed step, computed once; its uncertainty, its distance to the same
+// at twice the step; and a method's errors against it as dt halves.
+class HalvingSweep {
+ public:
+  HalvingSweep(std::string json_text, double span_s, double reference_dt_s);
+  const sim::State& reference();
+  double reference_uncertainty();
+  // `integrator` at fixed steps dt over the span (rk45: its fifth-order formula without error control).
+  sim::State state_after(sim::IntegratorKind integrator, double dt) const;
+  // RMS position errors against the reference at coarsest_dt / 2^k, k = 0 .. halvings.
+  std::vector<double> errors(sim::IntegratorKind integrator, double coarsest_dt, int halvings);
+  const std::string& scene() const { return json_text_; }
+  double span() const { return span_s_; }
+
+ private:
+  std::string json_text_;
+  double span_s_, reference_dt_s_;
+  std::optional<sim::State> reference_;
+  std::optional<double> uncertainty_;
+};
+
+// Least-squares slope of y against x (analysis::least_squares_line, as the accuracy benchmark fits).
 double fitted_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 // errors[k] measured at dt / 2^k: minus the least-squares slope of log2(error) against k, the observed order.
@@ -40,6 +68,12 @@ struct ToleranceSweep {
 };
 ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s, const sim::State& reference,
                                     int loosest_exponent, int tightest_exponent);
+
+// How far newton's Hessian, as `potential` last assembled it into `hessian` at x (the sparse part plus the rank-one
+// terms: the gas's and the body contacts'), is from the derivative of the gradient along r:
+// |(∇E(x + εr) − ∇E(x − εr)) / 2ε − H r| / |H r|, with E's lags held (ε = `step`, times r [m]). Assembles again.
+double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
+                        std::span<const softbody::Vec3> x, const Eigen::VectorXd& r, double step);
 
 // Total energy of every body: kinetic + gravitational + spring + gas [J].
 double total_energy(const sim::World& world);

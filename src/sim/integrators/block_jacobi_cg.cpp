@@ -12,7 +12,7 @@ void BlockJacobiCg::build_preconditioner(const BlockSystem& a, std::span<const R
   for (std::size_t v = 0; v < a.vertex_count(); ++v) inverse_diagonal_[v] = a.diagonal_block(static_cast<int>(v));
   for (const RankOneTerm& term : terms) {
     for (std::size_t i = 0; i < term.u.size(); ++i) {
-      inverse_diagonal_[term.first_vertex + i] += term.u[i] * term.u[i].transpose();
+      inverse_diagonal_[static_cast<std::size_t>(term.vertex(i))] += term.u[i] * term.u[i].transpose();
     }
   }
   for (Eigen::Matrix3d& block : inverse_diagonal_) {
@@ -29,8 +29,8 @@ void BlockJacobiCg::apply(const BlockSystem& a, std::span<const RankOneTerm> ter
   a.multiply(in, out);
   for (const RankOneTerm& term : terms) {
     double u_in = 0.0;
-    for (std::size_t i = 0; i < term.u.size(); ++i) u_in += term.u[i].dot(in.segment<3>(BlockSystem::dof(term.first_vertex + static_cast<int>(i))));
-    for (std::size_t i = 0; i < term.u.size(); ++i) out.segment<3>(BlockSystem::dof(term.first_vertex + static_cast<int>(i))) += u_in * term.u[i];
+    for (std::size_t i = 0; i < term.u.size(); ++i) u_in += term.u[i].dot(in.segment<3>(BlockSystem::dof(term.vertex(i))));
+    for (std::size_t i = 0; i < term.u.size(); ++i) out.segment<3>(BlockSystem::dof(term.vertex(i))) += u_in * term.u[i];
   }
 }
 

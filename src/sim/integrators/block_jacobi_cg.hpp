@@ -13,10 +13,13 @@ namespace sim {
 
 using softbody::Vec3;
 
-// A rank-one term u uᵀ of the operator, u non-zero only on vertices first_vertex .. first_vertex + |u| − 1.
+// A rank-one term u uᵀ of the operator, u non-zero only on vertices first_vertex .. first_vertex + |u| − 1, or,
+// where `vertices` is given (as long as u), on those vertices: u[i] on vertex vertices[i].
 struct RankOneTerm {
   int first_vertex = 0;
   std::span<const Vec3> u;
+  std::span<const int> vertices;
+  int vertex(std::size_t i) const { return vertices.empty() ? first_vertex + static_cast<int>(i) : vertices[i]; }
 };
 
 struct CgResult {

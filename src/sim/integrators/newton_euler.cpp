@@ -35,7 +35,7 @@ void NewtonEuler::build(const Model& model) {
   hessian_.build(model.vertex_count(), potential_.pairs());
   gas_terms_.clear();
   for (const IncrementalPotential::GasTerm& term : potential_.gas_terms()) {
-    gas_terms_.push_back({model.bodies[term.body].first_vertex, term.direction});
+    gas_terms_.push_back({model.bodies[term.body].first_vertex, term.direction, {}});
   }
   const Eigen::Index size = hessian_.size();
   gradient_.setZero(size);
@@ -47,7 +47,9 @@ void NewtonEuler::build(const Model& model) {
 bool NewtonEuler::solve_for_direction(const Model& model, IncrementalPotential::Hessian form) {
   potential_.assemble(model, x_, form, hessian_, gradient_);
   right_side_ = -gradient_;
-  const CgResult result = cg_.solve(hessian_, gas_terms_, right_side_, direction_, kSolveTolerance, kMostCgIterations);
+  terms_.assign(gas_terms_.begin(), gas_terms_.end());
+  for (const BodyContactPotential::Term& term : potential_.contact_terms()) terms_.push_back({0, term.u, term.vertex});
+  const CgResult result = cg_.solve(hessian_, terms_, right_side_, direction_, kSolveTolerance, kMostCgIterations);
   ++statistics_.solves;
   statistics_.cg_iterations += result.iterations;
   return !result.negative_curvature;

@@ -26,8 +26,8 @@ namespace sim {
 // whatever h.
 // The solve (a truncated Newton method, Nocedal & Wright Sect. 7.1): ∇²E = A + Σ_b u_b u_bᵀ, A the sparse
 // part (BlockSystem: pattern built once per model, values overwritten each iteration), u_b the gas's rank-one
-// term of body b, applied as the product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never
-// formed (sim/integrators/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a
+// term of body b (and the smooth body contact's terms, three per contact over its four vertices), applied as the
+// product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never formed (sim/integrators/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a
 // relative residual of kSolveTolerance: a direct LDLᵀ (Eigen's SimplicialLDLT, AMD order, symbolic analysis
 // once) was measured first and costs far more per step (README "Large steps"), and its fill grows faster
 // than the vertices.
@@ -36,8 +36,9 @@ namespace sim {
 // is first-order accuracy and numerical damping of the slow modes, measured in README "Large steps".
 //
 // Nothing is carried between steps (the Newton iteration starts from x̂ and each solve from zero), so a State
-// copy is a checkpoint. No allocation per step: the pattern, the rank-one terms and every vector are built on
-// the first step (again only for a model with another vertex count).
+// copy is a checkpoint. No allocation per step once sizes settle: the pattern, the gas terms and every vector are
+// built on the first step (again only for a model with another vertex count); the body contacts' list grows to
+// the most contacts met.
 class NewtonEuler final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
@@ -66,6 +67,7 @@ class NewtonEuler final : public Integrator {
   BlockSystem hessian_;
   BlockJacobiCg cg_;
   std::vector<RankOneTerm> gas_terms_;  // views of the potential's gas terms
+  std::vector<RankOneTerm> terms_;      // gas_terms_, then views of the body contacts' terms of this assembly
   Eigen::VectorXd gradient_, right_side_, direction_;
   std::vector<Vec3> x_, trial_;
   std::size_t built_for_vertices_ = 0;
