@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "mesh/gltf_check.hpp"
 #include "mesh/load.hpp"
+#include "mesh/parts.hpp"
 #include "mesh/ply_header.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/weld.hpp"
@@ -213,7 +214,24 @@ namespace {
 TEST(SuspiciousMesh, OverlappingPartsAreNamedAsSelfIntersecting) {
   const auto notes = notes_of("overlapping_cubes.obj");
   EXPECT_TRUE(any_note_has(notes, "intersects itself: ")) << ::testing::PrintToString(notes);
+  EXPECT_TRUE(any_note_has(notes, "\"repair\": true joins overlapping parts into one surface")) << ::testing::PrintToString(notes);
   EXPECT_FALSE(any_note_has(notes_of("two_separate_cubes.obj"), "intersects itself"));
+}
+
+// With "repair": true the two cubes of side 2 (overlapping in 1 × 1.5 × 1.75 = 2.625) become their union:
+// one closed part of 8 + 8 − 2.625 = 13.375 that crosses nothing; "parts": "keep" leaves them as they are.
+TEST(SuspiciousMesh, RepairJoinsOverlappingPartsIntoTheirUnion) {
+  const std::string file = data_path("hostile/overlapping_cubes.obj");
+  const mesh::LoadedMesh joined = mesh::load_closed_mesh(file, file, "ctx", {}, mesh::full_repair());
+  EXPECT_EQ(mesh::edge_connected_parts(joined.mesh).count, 1);
+  EXPECT_NEAR(mesh::signed_volume(joined.mesh), 13.375, 1e-12);
+  EXPECT_EQ(mesh::find_self_intersections(joined.mesh).pairs, 0);
+  EXPECT_TRUE(any_note_has(joined.notes, "repair: joined 2 overlapping parts into 1 surface")) << ::testing::PrintToString(joined.notes);
+  mesh::RepairOptions keep = mesh::full_repair();
+  keep.parts = mesh::PartsPolicy::Keep;
+  const mesh::LoadedMesh kept = mesh::load_closed_mesh(file, file, "ctx", {}, keep);
+  EXPECT_EQ(mesh::edge_connected_parts(kept.mesh).count, 2);
+  EXPECT_TRUE(any_note_has(kept.notes, "\"parts\": \"union\" (the default of \"repair\") joins")) << ::testing::PrintToString(kept.notes);
 }
 
 // Two triangles: a vertical one whose lower edge pierces a horizontal one is one crossing pair; lifted by

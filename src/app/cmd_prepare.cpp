@@ -1,4 +1,4 @@
-// `softbody prepare IN OUT [--resolution N] [--parts keep|largest]`: a mesh file read, welded, repaired and
+// `softbody prepare IN OUT [--resolution N] [--parts union|keep|largest]`: a mesh file read, welded, repaired and
 // validated as a body's mesh would be, and written to OUT (OBJ, PLY or STL) so that it can be inspected.
 #include <chrono>
 #include <cstdio>
@@ -23,7 +23,7 @@ struct PrepareOptions {
   std::string input;
   std::string output;
   std::optional<int> resolution;
-  mesh::PartsPolicy parts = mesh::PartsPolicy::Keep;
+  mesh::PartsPolicy parts = mesh::PartsPolicy::Union;
 };
 
 // The prepared mesh in one line: size, enclosed volume and the properties validation established.
@@ -81,8 +81,10 @@ Action register_prepare(CLI::App& parent) {
       ->type_name("N")
       ->check(CLI::Range(4, 10'000'000));
   command->add_option("--parts", options->parts,
-                      "Separate parts: keep (default) every one, or only the largest (most faces)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, mesh::PartsPolicy>{{"keep", mesh::PartsPolicy::Keep},
+                      "Separate parts: union (default: the ones that overlap, touch or nest joined into one surface), keep every "
+                      "one as it is, or only the largest (most faces)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, mesh::PartsPolicy>{{"union", mesh::PartsPolicy::Union},
+                                                                                {"keep", mesh::PartsPolicy::Keep},
                                                                                 {"largest", mesh::PartsPolicy::Largest}}));
   return [options] { return run_prepare(*options); };
 }

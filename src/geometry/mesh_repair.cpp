@@ -1,4 +1,5 @@
-// Mesh repair: polygon soup clean-up and orientation, stitching, degenerate faces, hole filling, parts, outward winding.
+// Mesh repair: polygon soup clean-up and orientation, stitching, degenerate faces, hole filling, parts (kept,
+// the largest, or the overlapping ones joined by a Boolean union), outward winding.
 #include "geometry/mesh_repair.hpp"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <optional>
 #include <iterator>
 #include <string_view>
 #include <set>
@@ -13,17 +15,21 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include "geometry/cgal_surface.hpp"
+#include "geometry/uv_transfer.hpp"
 
 namespace geometry {
 namespace {
@@ -288,6 +294,95 @@ void orient_parts_outward(SurfaceMesh& surface, std::vector<std::string>& notes)
                        " outward (", count_of(inward.size(), "face", "faces"), " reversed)"}));
 }
 
+// The groups of parts that overlap, touch or nest (PMP::do_intersect on closed meshes: faces that meet, or one
+// part's bounded side inside another's), by union-find over the pairs whose bounding boxes meet; each group
+// lists its parts in increasing order, groups in the order of their first part.
+std::vector<std::vector<std::size_t>> overlapping_groups(const std::vector<SurfaceMesh>& parts) {
+  std::vector<std::size_t> root(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) root[i] = i;
+  const auto find = [&](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  std::vector<CGAL::Bbox_3> boxes;
+  for (const SurfaceMesh& part : parts) boxes.push_back(PMP::bbox(part));
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    for (std::size_t j = i + 1; j < parts.size(); ++j) {
+      if (find(i) == find(j) || !CGAL::do_overlap(boxes[i], boxes[j])) continue;
+      const bool meet = PMP::do_intersect(parts[i], parts[j], CGAL::parameters::do_overlap_test_of_bounded_sides(true),
+                                          CGAL::parameters::do_overlap_test_of_bounded_sides(true));
+      if (meet) root[std::max(find(i), find(j))] = std::min(find(i), find(j));
+    }
+  }
+  std::vector<std::vector<std::size_t>> groups(parts.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) groups[find(i)].push_back(i);
+  groups.erase(std::remove_if(groups.begin(), groups.end(), [](const auto& g) { return g.empty(); }), groups.end());
+  return groups;
+}
+
+// The Boolean union of the group's parts, one after the other (PMP::corefine_and_compute_union: the
+// surfaces cut along their intersection curves, the pieces inside another part dropped). Empty where it
+// cannot be computed: a part that intersects itself (corefinement needs each input free of self-crossings),
+// or a result that is not a closed manifold.
+std::optional<SurfaceMesh> union_of(std::vector<SurfaceMesh>& parts, const std::vector<std::size_t>& group) {
+  for (std::size_t p : group) {
+    if (PMP::does_self_intersect(parts[p])) return std::nullopt;
+  }
+  SurfaceMesh joined = parts[group.front()];
+  for (std::size_t k = 1; k < group.size(); ++k) {
+    SurfaceMesh next = parts[group[k]];
+    SurfaceMesh result;
+    if (!PMP::corefine_and_compute_union(joined, next, result)) return std::nullopt;
+    joined = std::move(result);
+  }
+  joined.collect_garbage();
+  if (!CGAL::is_closed(joined)) return std::nullopt;
+  return joined;
+}
+
+// Step 8 ("parts": "union", the default): closed parts that overlap, touch or lie inside one another become
+// one closed surface, their union: one gas volume that counts every point inside once (the teapot's spout,
+// handle and lid passing into its body). Parts apart from all others are left as they are; where nothing
+// overlaps, the surface is not touched at all.
+void union_overlapping_parts(SurfaceMesh& surface, std::vector<std::string>& notes) {
+  if (surface.is_empty() || !CGAL::is_closed(surface)) return;
+  std::vector<SurfaceMesh> parts;
+  PMP::split_connected_components(surface, parts);
+  if (parts.size() < 2) return;
+  const std::vector<std::vector<std::size_t>> groups = overlapping_groups(parts);
+  if (groups.size() == parts.size()) return;
+  SurfaceMesh rebuilt;
+  std::size_t merged = 0, surfaces = 0, failed = 0, parts_now = 0;
+  for (const std::vector<std::size_t>& group : groups) {
+    if (group.size() == 1) {
+      rebuilt.join(parts[group.front()]);
+      ++parts_now;
+      continue;
+    }
+    if (std::optional<SurfaceMesh> joined = union_of(parts, group)) {
+      merged += group.size();
+      ++surfaces;
+      ++parts_now;
+      rebuilt.join(*joined);
+    } else {
+      failed += group.size();
+      parts_now += group.size();
+      for (std::size_t p : group) rebuilt.join(parts[p]);
+    }
+  }
+  if (merged > 0) {
+    surface = std::move(rebuilt);
+    notes.push_back(cat({"repair: joined ", std::to_string(merged), " overlapping parts into ", count_of(surfaces, "surface", "surfaces"),
+                         " (their Boolean union, PMP::corefine_and_compute_union); ",
+                         count_of(static_cast<std::size_t>(surface.number_of_faces()), "face", "faces"), ", ",
+                         count_of(parts_now, "part", "parts"), " now"}));
+  }
+  if (failed > 0) {
+    notes.push_back(cat({"repair: could not join ", std::to_string(failed),
+                         " overlapping parts (one of them intersects itself, or their union is not closed): kept as they are"}));
+  }
+}
+
 // Vertices no triangle uses (left where faces were removed) dropped, the others kept in order.
 mesh::TriMesh without_unused_vertices(mesh::TriMesh m) {
   std::vector<int> renumbered(m.vertices.size(), -1);
@@ -324,7 +419,9 @@ RepairedMesh repair_mesh(const mesh::TriMesh& welded, const mesh::RepairOptions&
   if (options.degenerate) remove_flat_parts(surface, notes);
   if (options.parts == mesh::PartsPolicy::Largest) keep_largest_part(surface, notes);
   orient_parts_outward(surface, notes);
+  if (options.parts == mesh::PartsPolicy::Union) union_overlapping_parts(surface, notes);
   repaired.mesh = without_unused_vertices(to_trimesh(surface));
+  repaired.mesh.corner_uvs = transfer_corner_uvs(welded, repaired.mesh);  // empty where the file had none
   if (notes.empty()) notes.push_back("repair: nothing to repair");
   return repaired;
 }

@@ -22,7 +22,9 @@ struct RepairedMesh {
 //  4. zero-area faces removed by edge collapses and flips (PMP::remove_degenerate_faces);
 //  5. holes filled (PMP::triangulate_refine_and_fair_hole; a hole whose fairing fails keeps the refined
 //     triangulation), 6. flat parts (two-sided sheets, no volume) removed, every part kept or only the largest,
-//  7. each closed part turned outward (6V > 0).
+//  7. each closed part turned outward (6V > 0), 8. with "parts": "union" (the default) the parts that
+//     overlap, touch or nest joined into one closed surface (PMP::corefine_and_compute_union).
+// UVs, where the mesh has them, are carried over (geometry::transfer_corner_uvs).
 // Deterministic: the same mesh gives the same bits. Never throws on a bad mesh; validation judges the result.
 RepairedMesh repair_mesh(const mesh::TriMesh& welded, const mesh::RepairOptions& options);
 

@@ -96,6 +96,7 @@ void validate_closed(TriMesh& mesh, std::vector<std::string>& notes) {
   if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal)) fail(MeshDefect::NoVolume, "encloses no volume (flat or self-cancelling surface)");
   if (volume < 0.0) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+    for (CornerUvs& uv : mesh.corner_uvs) std::swap(uv[1], uv[2]);
     notes.push_back("the winding was inverted (normals pointing inward); flipped every triangle");
   }
 }

@@ -96,12 +96,23 @@ void check_vertex(const aiVector3D& p) {
   }
 }
 
+// The first UV channel at a triangle's three corners (assimp's floats, exactly; a non-finite one read as 0).
+CornerUvs corner_uvs_of(const aiMesh& part, const aiFace& face) {
+  CornerUvs uvs{};
+  for (unsigned k = 0; k < 3; ++k) {
+    const aiVector3D& t = part.mTextureCoords[0][face.mIndices[k]];
+    uvs[k] = {std::isfinite(t.x) ? double{t.x} : 0.0, std::isfinite(t.y) ? double{t.y} : 0.0};
+  }
+  return uvs;
+}
+
 }  // namespace
 
 TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& limits) {
   check_before_reading(file, limits);
   Assimp::Importer importer;
-  // Points and lines carry no surface: drop them. Normals, UVs and materials are not needed.
+  // Points and lines carry no surface: drop them. Normals and materials are not needed; the first UV channel is
+  // kept per corner (assimp splits a vertex on a UV seam into one per side, and the weld joins them again).
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
   // (triangulation reads the vertices a polygon's indices name).
@@ -122,6 +133,9 @@ TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& li
     throw InputError("has " + std::to_string(triangles) + " triangles, more than the limit of " +
                      std::to_string(limits.max_triangles) + " (raise it with the scene key limits.max_triangles)");
   }
+  // UVs only where every mesh of the file has them (a mix would leave triangles without).
+  bool uvs = true;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) uvs = uvs && scene->mMeshes[m]->HasTextureCoords(0);
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* part = scene->mMeshes[m];
     const int base = static_cast<int>(mesh.vertices.size());
@@ -142,6 +156,7 @@ TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& li
       }
       mesh.triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
                                 base + static_cast<int>(face.mIndices[2])});
+      if (uvs) mesh.corner_uvs.push_back(corner_uvs_of(*part, face));
     }
   }
   if (mesh.triangles.empty()) throw InputError("holds no triangles (only points or lines?)");

@@ -15,9 +15,17 @@
 namespace mesh {
 namespace {
 
+// What joins overlapping parts into one surface, for a note on a mesh whose parts pass into each other: the
+// union repair where it was not asked for ("" where it ran: its own note says why it could not).
+std::string union_hint(const RepairOptions& repair) {
+  if (!repair.enabled) return "; \"repair\": true joins overlapping parts into one surface (their union)";
+  if (repair.parts != PartsPolicy::Union) return "; \"parts\": \"union\" (the default of \"repair\") joins overlapping parts into one surface";
+  return "";
+}
+
 // Notes on a closed mesh that is still suspect: several closed parts (one gas volume for all of them),
 // surfaces that touch at a vertex only, and surfaces that pass through each other.
-void note_suspicious_shapes(const TriMesh& mesh, std::vector<std::string>& notes) {
+void note_suspicious_shapes(const TriMesh& mesh, const RepairOptions& repair, std::vector<std::string>& notes) {
   const MeshParts parts = edge_connected_parts(mesh);
   if (parts.count > 1) {
     std::vector<int> triangles(static_cast<std::size_t>(parts.count), 0);
@@ -41,7 +49,7 @@ void note_suspicious_shapes(const TriMesh& mesh, std::vector<std::string>& notes
   if (crossing.pairs > 0) {
     notes.push_back("intersects itself: " + std::to_string(crossing.pairs) + " pairs of triangles cross (the first: " +
                     std::to_string(crossing.first.first) + " and " + std::to_string(crossing.first.second) +
-                    "), so the gas volume counts the overlap twice or not at all");
+                    "), so the gas volume counts the overlap twice or not at all" + (parts.count > 1 ? union_hint(repair) : ""));
   }
 }
 
@@ -94,7 +102,7 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
       if (file.empty()) throw;
       throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file));
     }
-    if (!file.empty()) note_suspicious_shapes(loaded.mesh, loaded.notes);
+    if (!file.empty()) note_suspicious_shapes(loaded.mesh, repair, loaded.notes);
     phase_done("checking");
     for (std::string& note : loaded.notes) note = context + ": " + what + ": " + note;
     return loaded;

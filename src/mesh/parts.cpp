@@ -87,6 +87,7 @@ std::vector<TriMesh> split_parts(const TriMesh& mesh, const MeshParts& parts) {
       v = it->second;
     }
     meshes[p].triangles.push_back(t);
+    if (mesh.has_uvs()) meshes[p].corner_uvs.push_back(mesh.corner_uvs[f]);
   }
   return meshes;
 }

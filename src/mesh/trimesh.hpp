@@ -7,12 +7,18 @@
 
 namespace mesh {
 
+using softbody::CornerUvs;
 using softbody::Triangle;
+using softbody::Uv;
 using softbody::Vec3;
 
 struct TriMesh {
   std::vector<Vec3> vertices;
   std::vector<Triangle> triangles;  // counter-clockwise seen from outside once validated
+  // Per triangle, its corners' texture coordinates (per corner: a seam's vertex has one per side); empty when
+  // the file has none. Whatever reorders or rewinds triangles keeps these in step.
+  std::vector<CornerUvs> corner_uvs;
+  bool has_uvs() const { return !corner_uvs.empty(); }
 };
 
 // Signed enclosed volume by the divergence theorem: V = Σ x_a·(x_b × x_c) / 6  [m³].

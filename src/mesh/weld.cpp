@@ -87,6 +87,7 @@ TriMesh weld(const TriMesh& mesh, double relative_tolerance) {
   }
   out.triangles.reserve(mesh.triangles.size());
   for (const Triangle& t : mesh.triangles) out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+  out.corner_uvs = mesh.corner_uvs;  // per corner: a seam's sides keep their own
   return out;
 }
 

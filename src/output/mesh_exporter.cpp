@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "output/atomic_file.hpp"
+#include "output/obj_uvs.hpp"
 #include "output/shown_surface.hpp"
 
 namespace output {
@@ -39,7 +40,7 @@ void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
 
 void MeshExporter::finish(bool /*complete*/) {}
 
-void append_obj_object(std::string& text, const sim::World& world, int body_index, int first_index) {
+int append_obj_object(std::string& text, const sim::World& world, int body_index, int first_index, int first_uv_index) {
   char line[160];
   std::snprintf(line, sizeof line, "o body%d\n", body_index);
   text += line;
@@ -48,10 +49,11 @@ void append_obj_object(std::string& text, const sim::World& world, int body_inde
     std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
     text += line;
   }
-  for (const softbody::Triangle& f : shown_triangles(world, body_index)) {
-    std::snprintf(line, sizeof line, "f %d %d %d\n", f[0] + first_index, f[1] + first_index, f[2] + first_index);
-    text += line;
-  }
+  int uv_count = 0;
+  const std::vector<std::array<int, 3>> uv = append_obj_uvs(text, world.model.shown_corner_uvs(body_index), uv_count);
+  const std::span<const softbody::Triangle> faces = shown_triangles(world, body_index);
+  for (std::size_t f = 0; f < faces.size(); ++f) append_obj_face(text, faces[f], first_index, uv.empty() ? nullptr : &uv[f], first_uv_index);
+  return uv_count;
 }
 
 std::string world_to_obj(const sim::World& world, double time_s) {
@@ -59,9 +61,9 @@ std::string world_to_obj(const sim::World& world, double time_s) {
   char line[160];
   std::snprintf(line, sizeof line, "# softbody frame at t = %.9g s\n", time_s);
   text += line;
-  int first_index = 1;
+  int first_index = 1, first_uv_index = 1;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
-    append_obj_object(text, world, static_cast<int>(b), first_index);
+    first_uv_index += append_obj_object(text, world, static_cast<int>(b), first_index, first_uv_index);
     first_index += shown_vertex_count(world, static_cast<int>(b));
   }
   return text;

@@ -25,9 +25,10 @@ class MeshExporter final : public frames::FrameSink {
   MeshFormat format_;
 };
 
-// Appends body `body` of `world` as one OBJ object ("o body<N>", its vertices, its faces numbered from
-// `first_index`, OBJ's 1-based index of the object's first vertex in the file).
-void append_obj_object(std::string& text, const sim::World& world, int body, int first_index);
+// Appends body `body` of `world` as one OBJ object ("o body<N>", its vertices, its texture coordinates where
+// the mesh file had UVs, its faces numbered from `first_index` and `first_uv_index`, OBJ's 1-based indices of
+// the object's first vertex and first "vt" in the file). Returns the number of "vt" lines written.
+int append_obj_object(std::string& text, const sim::World& world, int body, int first_index, int first_uv_index = 1);
 
 // The text of one frame as OBJ: one object per body ("o body0", ...), 1-based indices.
 std::string world_to_obj(const sim::World& world, double time_s);

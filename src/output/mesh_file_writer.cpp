@@ -10,6 +10,7 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
+#include "output/obj_uvs.hpp"
 
 namespace output {
 namespace {
@@ -49,10 +50,9 @@ std::string trimesh_to_obj(const mesh::TriMesh& mesh, const std::string& comment
     std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
     text += line;
   }
-  for (const mesh::Triangle& t : mesh.triangles) {
-    std::snprintf(line, sizeof line, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    text += line;
-  }
+  int uv_count = 0;
+  const std::vector<std::array<int, 3>> uv = append_obj_uvs(text, mesh.corner_uvs, uv_count);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) append_obj_face(text, mesh.triangles[f], 1, uv.empty() ? nullptr : &uv[f], 1);
   return text;
 }
 

@@ -269,7 +269,8 @@ void read_pressure(ObjectReader& body_reader, Body& body) {
   body.intent.pressure = intent;
 }
 
-// "repair": true | false, or {"degenerate", "holes": booleans (default true), "parts": "keep" | "largest"}.
+// "repair": true | false, or {"degenerate", "holes": booleans (default true), "parts": "union" (default) | "keep" |
+// "largest"}.
 void read_repair(ObjectReader& body_reader, Body& body) {
   if (!body_reader.has("repair")) return;
   const json& value = body_reader.at("repair");
@@ -285,7 +286,9 @@ void read_repair(ObjectReader& body_reader, Body& body) {
   repair.degenerate = r.boolean("degenerate", repair.degenerate);
   repair.holes = r.boolean("holes", repair.holes);
   repair.parts = r.choice<mesh::PartsPolicy>("parts", repair.parts,
-                                             {{"keep", mesh::PartsPolicy::Keep}, {"largest", mesh::PartsPolicy::Largest}});
+                                             {{"union", mesh::PartsPolicy::Union},
+                                              {"keep", mesh::PartsPolicy::Keep},
+                                              {"largest", mesh::PartsPolicy::Largest}});
   r.reject_unknown();
   body.repair = repair;
 }

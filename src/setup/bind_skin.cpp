@@ -41,9 +41,9 @@ std::vector<int> matching_proxy_parts(const std::vector<int>& detailed_part, int
 void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x, const std::vector<softbody::Triangle>& detailed_faces,
                       const std::vector<softbody::Vec3>& proxy_x, const std::vector<softbody::Triangle>& proxy_faces,
                       std::vector<int>& nearest) {
-  const mesh::MeshParts proxy_parts = mesh::edge_connected_parts(mesh::TriMesh{proxy_x, proxy_faces});
+  const mesh::MeshParts proxy_parts = mesh::edge_connected_parts(mesh::TriMesh{proxy_x, proxy_faces, {}});
   if (proxy_parts.count < 2) return;
-  const mesh::MeshParts detailed_parts = mesh::edge_connected_parts(mesh::TriMesh{detailed_x, detailed_faces});
+  const mesh::MeshParts detailed_parts = mesh::edge_connected_parts(mesh::TriMesh{detailed_x, detailed_faces, {}});
   const std::vector<int> detailed_part = part_of_vertex(detailed_x.size(), detailed_faces, detailed_parts);
   const std::vector<int> match = matching_proxy_parts(detailed_part, detailed_parts.count, nearest, proxy_parts);
   for (int p = 0; p < proxy_parts.count; ++p) {
@@ -53,7 +53,7 @@ void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x, const std::
       if (proxy_parts.part_of_triangle[static_cast<std::size_t>(nearest[i])] != p) stray.push_back(static_cast<int>(i));
     }
     if (stray.empty()) continue;
-    mesh::TriMesh own{proxy_x, {}};
+    mesh::TriMesh own{proxy_x, {}, {}};
     std::vector<int> face_index;  // own.triangles[k] is proxy face face_index[k]
     for (std::size_t t = 0; t < proxy_faces.size(); ++t) {
       if (proxy_parts.part_of_triangle[t] != p) continue;
@@ -73,11 +73,11 @@ void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x, const std::
 
 sim::Skin bind_skin(const std::vector<softbody::Vec3>& detailed_x, const std::vector<softbody::Triangle>& detailed_faces,
                     const std::vector<softbody::Vec3>& proxy_x, const std::vector<softbody::Triangle>& proxy_faces, int body) {
-  std::vector<int> nearest = geometry::nearest_triangles(mesh::TriMesh{proxy_x, proxy_faces}, detailed_x);
+  std::vector<int> nearest = geometry::nearest_triangles(mesh::TriMesh{proxy_x, proxy_faces, {}}, detailed_x);
   keep_parts_apart(detailed_x, detailed_faces, proxy_x, proxy_faces, nearest);
   std::vector<softbody::Vec3> normals;
   sim::vertex_normals(proxy_x, proxy_faces, normals);
-  sim::Skin skin{body, detailed_faces, {}};
+  sim::Skin skin{body, detailed_faces, {}, {}};
   skin.anchors.reserve(detailed_x.size());
   for (std::size_t i = 0; i < detailed_x.size(); ++i) {
     skin.anchors.push_back(sim::anchor_point(detailed_x[i], nearest[i], proxy_x, proxy_faces, normals));

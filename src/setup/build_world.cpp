@@ -129,8 +129,10 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       if (proxied) {
         const int index = static_cast<int>(model.bodies.size());
         model.skins.push_back(bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));
+        model.skins.back().corner_uvs = part.mesh.corner_uvs;
         phase_done("binding the mesh of " + key + " to its proxy");
       }
+      if (!proxied && part.mesh.has_uvs()) model.surface_uvs.push_back({static_cast<int>(model.bodies.size()), part.mesh.corner_uvs});
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));

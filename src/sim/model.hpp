@@ -24,6 +24,8 @@ struct Model {
   std::vector<Vec3> initial_x;       // every vertex where the model placed it: the stable-dt advice's state
   std::vector<Skin> skins;           // detailed meshes carried by bodies simulated on a proxy ("resolution");
                                      // read by render and export only, in body order
+  std::vector<SurfaceUvs> surface_uvs;  // texture coordinates of the bodies simulated on their own mesh (the
+                                        // file's UVs); export only, in body order
 
   // The skin body `body` carries, or null when render and export show its simulated surface.
   const Skin* skin_of(int body) const {
@@ -31,6 +33,15 @@ struct Model {
       if (skin.body == body) return &skin;
     }
     return nullptr;
+  }
+
+  // The corner UVs of the triangles body `body` shows (its skin's, or its own faces'); empty when none.
+  std::span<const softbody::CornerUvs> shown_corner_uvs(int body) const {
+    if (const Skin* skin = skin_of(body)) return skin->corner_uvs;
+    for (const SurfaceUvs& uvs : surface_uvs) {
+      if (uvs.body == body) return uvs.corner_uvs;
+    }
+    return {};
   }
 
   std::size_t vertex_count() const { return mass_kg.size(); }

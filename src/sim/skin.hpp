@@ -29,7 +29,14 @@ struct Skin {
   int body = 0;                      // the model's body whose surface carries this skin
   std::vector<Triangle> triangles;   // the detailed mesh's own triangles, counter-clockwise seen from outside
   std::vector<SkinAnchor> anchors;   // one per detailed vertex, in the detailed mesh's vertex order
+  std::vector<softbody::CornerUvs> corner_uvs;  // per detailed triangle, the file's UVs; empty when it has none
   std::size_t vertex_count() const { return anchors.size(); }
+};
+
+// The file's texture coordinates of a body that shows its simulated surface (no skin): per face of the body.
+struct SurfaceUvs {
+  int body = 0;
+  std::vector<softbody::CornerUvs> corner_uvs;
 };
 
 // Unit area-weighted vertex normals: n_i ∝ Σ over faces at i of (x_b − x_a) × (x_c − x_a) (twice the area

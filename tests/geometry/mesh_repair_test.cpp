@@ -1,5 +1,6 @@
 // Mesh repair on generated meshes with known defects: holes filled back to the sphere's volume, flipped faces
-// turned outward, duplicate and zero-area faces removed, a non-manifold edge split into two closed spheres.
+// turned outward, duplicate and zero-area faces removed, a non-manifold edge split into two closed spheres,
+// overlapping parts joined into their union (exact volumes of cubes), UVs carried through.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <numbers>
 
 #include "geometry/mesh_repair.hpp"
+#include "geometry/uv_transfer.hpp"
 #include "mesh/check.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/parts.hpp"
@@ -211,8 +213,94 @@ TEST(MeshRepair, PartsLargestKeepsTheBiggerSphere) {
   EXPECT_EQ(repaired.mesh.triangles.size(), big.triangles.size());
   EXPECT_NEAR(mesh::signed_volume(repaired.mesh), mesh::signed_volume(big), 1e-12);
   EXPECT_TRUE(any_note_contains(repaired, "repair: kept the largest of 2 parts"));
-  // Keep (the default) keeps both.
+  // Union (the default) and keep keep both: they are apart.
   EXPECT_EQ(geometry::repair_mesh(two, every_step()).mesh.triangles.size(), two.triangles.size());
+}
+
+// `b`'s vertices and triangles appended to `a`'s (one mesh of two parts), with `b` scaled and moved.
+TriMesh with_part(TriMesh a, const TriMesh& b, double scale, const Vec3& shift) {
+  const int offset = static_cast<int>(a.vertices.size());
+  for (const Vec3& x : b.vertices) a.vertices.push_back(scale * x + shift);
+  for (const Triangle& t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (const mesh::CornerUvs& uv : b.corner_uvs) a.corner_uvs.push_back(uv);
+  return a;
+}
+
+// Two unit cubes, the second moved by (0.5, 0.25, 0.125): they overlap in a box of 0.5 × 0.75 × 0.875 =
+// 0.328125, so their union encloses 2 − 0.328125 = 1.671875 (every cut point is a dyadic rational: exact in
+// double, so the volume is exact to round-off).
+TEST(MeshRepair, OverlappingPartsBecomeTheirUnion) {
+  const TriMesh cube = mesh::cube(2);
+  const TriMesh two = with_part(cube, cube, 1.0, Vec3(0.5, 0.25, 0.125));
+  const geometry::RepairedMesh repaired = geometry::repair_mesh(two, every_step());
+  EXPECT_EQ(validation_error(repaired.mesh), "");
+  EXPECT_EQ(mesh::edge_connected_parts(repaired.mesh).count, 1);
+  EXPECT_NEAR(mesh::signed_volume(repaired.mesh), 2.0 - 0.5 * 0.75 * 0.875, 1e-12);
+  EXPECT_TRUE(any_note_contains(repaired, "repair: joined 2 overlapping parts into 1 surface")) << ::testing::PrintToString(repaired.notes);
+  // "parts": "keep" leaves both, the overlap counted twice.
+  mesh::RepairOptions keep = every_step();
+  keep.parts = mesh::PartsPolicy::Keep;
+  const geometry::RepairedMesh kept = geometry::repair_mesh(two, keep);
+  EXPECT_EQ(mesh::edge_connected_parts(kept.mesh).count, 2);
+  EXPECT_NEAR(mesh::signed_volume(kept.mesh), 2.0, 1e-12);
+}
+
+// A cube of side 0.5 inside a cube of side 2 (no face meets another): the union is the outer cube alone.
+TEST(MeshRepair, APartInsideAnotherIsAbsorbed) {
+  const TriMesh cube = mesh::cube(1);
+  const TriMesh nested = with_part(with_part(TriMesh{}, cube, 2.0, Vec3::Zero()), cube, 0.5, Vec3(0.1, -0.2, 0.3));
+  const geometry::RepairedMesh repaired = geometry::repair_mesh(nested, every_step());
+  EXPECT_EQ(validation_error(repaired.mesh), "");
+  EXPECT_EQ(mesh::edge_connected_parts(repaired.mesh).count, 1);
+  EXPECT_NEAR(mesh::signed_volume(repaired.mesh), 8.0, 1e-12);
+}
+
+// Parts apart from each other: the union step changes nothing (the same bits as "keep").
+TEST(MeshRepair, PartsApartAreLeftAsTheyAre) {
+  const TriMesh sphere = mesh::icosphere(2);
+  const TriMesh apart = with_part(sphere, sphere, 0.5, Vec3(2.0, 0.0, 0.0));
+  mesh::RepairOptions keep = every_step();
+  keep.parts = mesh::PartsPolicy::Keep;
+  const geometry::RepairedMesh joined = geometry::repair_mesh(apart, every_step());
+  const geometry::RepairedMesh kept = geometry::repair_mesh(apart, keep);
+  EXPECT_EQ(joined.mesh.vertices, kept.mesh.vertices);
+  EXPECT_EQ(joined.mesh.triangles, kept.mesh.triangles);
+  EXPECT_EQ(joined.notes, kept.notes);
+}
+
+// UVs that are a linear function of position, u = x + 2z, v = y − z, per corner.
+mesh::Uv linear_uv(const Vec3& x) { return {x.x() + 2.0 * x.z(), x.y() - x.z()}; }
+
+TriMesh with_linear_uvs(TriMesh m) {
+  m.corner_uvs.clear();
+  for (const Triangle& t : m.triangles) {
+    m.corner_uvs.push_back({linear_uv(m.vertices[static_cast<std::size_t>(t[0])]), linear_uv(m.vertices[static_cast<std::size_t>(t[1])]),
+                            linear_uv(m.vertices[static_cast<std::size_t>(t[2])])});
+  }
+  return m;
+}
+
+// The union cuts the cubes' faces along their intersection and renumbers everything; every corner's UV is
+// carried over: a corner the input had keeps its UV bit for bit, a new corner (on an input face's plane) gets
+// the UV interpolated there, which for UVs linear in position is that function's value to round-off.
+TEST(MeshRepair, UvsAreCarriedThroughTheUnion) {
+  const TriMesh two = with_linear_uvs(with_part(mesh::cube(2), mesh::cube(2), 1.0, Vec3(0.5, 0.25, 0.125)));
+  const geometry::RepairedMesh repaired = geometry::repair_mesh(two, every_step());
+  ASSERT_EQ(repaired.mesh.corner_uvs.size(), repaired.mesh.triangles.size());
+  std::size_t exact = 0;
+  double worst = 0.0;
+  for (std::size_t f = 0; f < repaired.mesh.triangles.size(); ++f) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Vec3& x = repaired.mesh.vertices[static_cast<std::size_t>(repaired.mesh.triangles[f][k])];
+      const mesh::Uv expected = linear_uv(x), got = repaired.mesh.corner_uvs[f][k];
+      exact += got == expected ? 1 : 0;
+      worst = std::max({worst, std::abs(got[0] - expected[0]), std::abs(got[1] - expected[1])});
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(exact, repaired.mesh.triangles.size());  // most corners are the input's own
+  // Without UVs in, none out.
+  EXPECT_TRUE(geometry::repair_mesh(with_part(mesh::cube(2), mesh::cube(2), 1.0, Vec3(0.5, 0.25, 0.125)), every_step()).mesh.corner_uvs.empty());
 }
 
 TEST(MeshRepair, AClosedMeshIsLeftAsItIs) {
