@@ -25,6 +25,7 @@ if [ "${LEVEL6:-0}" = 1 ]; then
   build/bench_large_steps --levels 6 --duration 0.75 --reference-tolerances 1e-8 --rates 60 --newton-rates 60 \
     --integrators symplectic,implicit,xpbd --friction-too '' --repeats 1 --no-header >> "$csv"
 fi
-gnuplot -e "cd '$out'" docs/large_steps_bounce.gp
+root="$(pwd)"
+(cd "$out" && gnuplot "$root/docs/large_steps_bounce.gp")  # the script reads and writes in the current folder
 bench/large_steps_table.py "$csv"
 echo "bench/run_large_steps.sh: $(( $(date +%s) - start )) s in all"

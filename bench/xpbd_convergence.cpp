@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bounce_run.hpp"
+#include "reference_cache.hpp"
 
 namespace {
 
@@ -76,19 +78,35 @@ int main(int argc, char** argv) {
   double duration_s = 1.2, tolerance = 1e-8;
   std::vector<int> substeps{10, 20, 40, 80, 160, 320};
   std::string integrator = "xpbd";
+  std::string reference_cache;
+  int against_substeps = 0;
   cli.add_option("--level", level, "icosphere level");
   cli.add_option("--duration", duration_s, "simulated seconds");
   cli.add_option("--reference-tolerance", tolerance, "rk45 tolerance of the reference");
   cli.add_option("--substeps", substeps, "xpbd substeps (another integrator: steps) per 1/60 s")->delimiter(',');
   cli.add_option("--integrator", integrator, "the integrator to compare (fixed steps)")
       ->check([](const std::string& name) { return sim::integrator_named(name) ? "" : "expected an integrator name"; });
+  cli.add_option("--reference-cache", reference_cache,
+                 "file with the reference run: read if it holds one, else written after computing it (same level, "
+                 "duration and tolerance are the caller's business)");
+  cli.add_option("--against-substeps", against_substeps,
+                 "compare with --integrator at this many steps per 1/60 s instead of the rk45 reference (where the "
+                 "reference is too costly: its differences, not errors)");
   CLI11_PARSE(cli, argc, argv);
   BounceSetup reference_setup;
   reference_setup.level = level;
   reference_setup.integrator = sim::IntegratorKind::Rk45;
   reference_setup.tolerance = tolerance;
-  const BounceRecord reference = bench::record_bounce(reference_setup, duration_s);
+  if (against_substeps > 0) {
+    reference_setup.integrator = *sim::integrator_named(integrator);
+    reference_setup.dt_s = bench::kBounceSampleInterval_s / against_substeps;
+  }
+  std::optional<BounceRecord> cached;
+  if (!reference_cache.empty()) cached = bench::load_record(reference_cache);
+  const BounceRecord reference = cached ? *cached : bench::record_bounce(reference_setup, duration_s);
+  if (!reference_cache.empty() && !cached) bench::save_record(reference, reference_cache);
   const std::size_t touch = first_touch(reference), leave = end_of_squash(reference, touch);
+  if (against_substeps > 0) std::printf("# against %s at %d steps per 1/60 s, not rk45\n", integrator.c_str(), against_substeps);
   std::printf("# %s, level %d, %.4g s; reference rk45 %.0e; phases: flight to %.4g s, impact (squash) to %.4g s, after\n",
               integrator.c_str(), level, duration_s, tolerance, bench::kBounceSampleInterval_s * static_cast<double>(touch),
               bench::kBounceSampleInterval_s * static_cast<double>(leave));

@@ -31,7 +31,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
     after_phase("estimating the stable substep");
     char note[200];
     std::snprintf(note, sizeof note,
-                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: within the linearised form's limit and "
+                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: within the carried form's limit and "
                   "the contact travel limit %.4g s)",
                   scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps), estimate.travel_dt_s);
     notes.insert(notes.begin(), note);

@@ -400,17 +400,15 @@ double xpbd_bias_dt(double omega_max, int vertices) {
   return phase / omega_max;
 }
 
-double xpbd_linearised_dt(double omega_max, int vertices) {
+double xpbd_carried_dt(double omega_max) {
   if (omega_max <= 0.0) return StabilityEstimate::kUnlimited;
-  // Finer meshes only: coarser ones keep the icosphere:3 limit (stability.hpp).
-  const double mesh = std::pow(std::max(vertices, 642) / 642.0, -kXpbdLinearisedMeshPower);
-  return kXpbdLinearisedPhaseLimit * mesh / omega_max;
+  return kXpbdCarriedPhaseLimit / omega_max;
 }
 
 int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s) {
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
   for (std::size_t b = 0; b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
-    h = std::min(h, xpbd_linearised_dt(estimate.bodies[b].omega_max(), model.bodies[b].vertex_count));
+    h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));
   }
   const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));
   return static_cast<int>(std::clamp(substeps, 1.0, double{kXpbdMostAutoSubsteps}));

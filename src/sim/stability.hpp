@@ -123,42 +123,39 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
                const std::string& scene_file);
 
 // xpbd's `solver.substeps: "auto"` (and `dt: "auto"`): the fewest substeps per frame interval whose substep h
-// keeps (1) every body in the linearised form, h ≤ xpbd_linearised_dt (ω_max: the fastest mode of springs, gas
-// and contact, ModeBounds::omega_max), and (2) the contact travel of every integrator, a tenth of the
-// shortest edge per step (travel_dt_s).
+// keeps (1) every body in the carried form, h ≤ xpbd_carried_dt (ω_max: the fastest mode of springs, gas and
+// contact, ModeBounds::omega_max), and (2) the contact travel of every integrator, a tenth of the shortest edge
+// per step (travel_dt_s).
 //
 // The classical form (h ω_max above the limit, or chosen substeps that put it there): the springs set no
 // stability limit (xpbd.hpp), but one constraint pass per substep leaves a pressurised network short of its
 // equilibrium: the ball flies inflated by a bias that grows with h ω_max and, at the same h ω_max, with the mesh
-// (one Gauss–Seidel pass carries a correction only a few edges); the linearised form has none (+0.07 % on the
-// bounce ball at h ω_max 1.06, 33 substeps per 1/60 s, against +0.76 % classical). Measured on the bounce ball
-// (k 1000 N/m, c 1 N·s/m, nRT 50 J, 1 kg), free-flight volume against symplectic Euler at 2.5e-5 s (icosphere:3)
-// and 1.75e-5 s (icosphere:5):
+// (one Gauss–Seidel pass carries a correction only a few edges). Measured on the bounce ball (k 1000 N/m,
+// c 1 N·s/m, nRT 50 J, 1 kg), free-flight volume against symplectic Euler at 2.5e-5 s (icosphere:3) and
+// 1.75e-5 s (icosphere:5):
 //   icosphere:3 (642 vertices, ω_max 2037 rad/s), h ω_max 3.4, 1.7, 0.85, 0.42: +3.0, +1.0, +0.39, +0.16 %
 //   icosphere:5 (10242 vertices, ω_max 8428 rad/s), h ω_max 3.5, 1.75, 0.88:      +6, +2.9, +1.3 %
 // fitted by bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower (within 10 % of each
-// point from 0.85 to 3.5); xpbd_bias_dt solves it for h (auto used it before the linearised form). A fit of two
+// point from 0.85 to 3.5); xpbd_bias_dt solves it for h (auto used it before the carried form). A fit of two
 // meshes and one material: a stiffer or softer body moves ω_max, which the fit follows, but it was not measured.
 constexpr double kXpbdVolumeBias = 0.005;     // the bias xpbd_bias_dt aims for (0.5 % of the volume)
 constexpr double kXpbdBiasScale = 0.0048;     // bias at h ω_max = 1 on icosphere:3
 constexpr double kXpbdBiasPower = 1.25;
 constexpr double kXpbdBiasMeshPower = 0.43;
 constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
-// xpbd takes its linearised form (sim/integrators/xpbd.hpp: the springs and dampers explicit in the prediction, the
-// constraint pass on the increments) while h ≤ xpbd_linearised_dt: h ω_max ≤ kXpbdLinearisedPhaseLimit (N/642)^−p,
-// p = kXpbdLinearisedMeshPower, N the body's vertices (at least 642: coarser meshes keep the icosphere:3 limit;
-// icosphere:0 undamped, whose N would allow h ω_max 4.1, gained energy at 3.0 and lost a third of its volume). That form has no volume bias but a step limit of its
-// explicit part, lower on finer meshes. Measured on the bounce ball (k 1000 N/m, c 1 N·s/m, nRT 50 J, 1 kg, smooth
-// floor; ω_max with the contact): icosphere:3 (ω_max 2097 rad/s) stable over 1.2 s at h ω_max 1.94 (18 substeps per
-// 1/60 s), diverged at 2.18 (16); icosphere:5 (8442 rad/s) diverged within 0.03 s at 1.28 and 1.08 (110, 130),
-// ran 0.1 s at 0.94 (150) and the whole 1 s of the benchmark at 0.75 (188). The limit is 0.77 × (L3) and 0.8 × (L5)
-// of the last stable h ω_max found; a fit of two meshes and one material (the guard stops a run that diverges anyway,
-// and solver.retry halves the substep, which keeps the form).
-constexpr double kXpbdLinearisedPhaseLimit = 1.5;
-constexpr double kXpbdLinearisedMeshPower = 0.25;
-// The largest substep of the linearised form for one body of `vertices` vertices with fastest mode ω_max
-// (kUnlimited: no modes).
-double xpbd_linearised_dt(double omega_max, int vertices);
+// xpbd takes its carried form (sim/integrators/xpbd.hpp: the constraints' forces of the last substep applied in the
+// prediction, the pass solving for their change) while h ≤ xpbd_carried_dt: h ω_max ≤ kXpbdCarriedPhaseLimit. That
+// form has no volume bias but a stability limit of its explicit part. Measured on the bounce ball (k 1000 N/m,
+// c 1 N·s/m, nRT 50 J, 1 kg, smooth floor; ω_max with the contact; bench_xpbd_convergence, volume and centre of mass
+// against the rk45 1e-8 reference): icosphere:5 (ω_max 8442 rad/s, 1 s) diverged at h ω_max 4.7 (30 substeps per
+// 1/60 s), ran at 3.1 (45) with 4.1 % volume error at the impact, and at 2.3 and 1.9 (60, 75) with 1.3 and 0.46 %,
+// centre of mass 1.7 and 0.35 cm; icosphere:3 (ω_max 2097 rad/s, 3 s) ran at 2.9 (12) with 2.4 % in flight and at
+// 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. The limit takes 1.9: accurate on both meshes, 0.6 × the fastest step
+// that stayed stable (a fit of two meshes and one material; the guard stops a run that diverges anyway, and
+// solver.retry halves the substep, which keeps the form).
+constexpr double kXpbdCarriedPhaseLimit = 1.9;
+// The largest substep of the carried form for a body with fastest mode ω_max (kUnlimited: no modes).
+double xpbd_carried_dt(double omega_max);
 // The substep bound of (1) for one body of `vertices` vertices with fastest mode ω_max [s] (kUnlimited: no modes).
 double xpbd_bias_dt(double omega_max, int vertices);
 int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s);

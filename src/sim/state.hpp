@@ -22,6 +22,9 @@ struct IntegratorCarry {
   // Implicit Euler: the last step's velocity change, the conjugate-gradient solve's warm start [m/s per
   // vertex component, 3n entries]; empty at the start (a zero guess).
   Eigen::VectorXd velocity_change;
+  // xpbd's carried form: every body's edge and bending-link constraints' forces of the last substep, T = −Δλ/h²
+  // [N], body by body (its edges, then its links); empty at the start (none carried: zero).
+  std::vector<double> edge_tension_N;
   // rk45's step-size controller.
   double previous_error = 1e-4;  // err of the last accepted step (PI control)
   bool rejected_last = false;    // the last attempt was rejected: do not grow the step now
@@ -56,6 +59,7 @@ struct State {
   // next step evaluates what it needs afresh and the guard takes a new energy budget.
   void forget_carry() {
     carry.acceleration.clear();
+    carry.edge_tension_N.clear();
     coasting.clear();
     guard.budget_J.clear();
   }

@@ -90,6 +90,7 @@ std::string encode_state(const State& state) {
   w.scalar(state.last_dt_s);
   w.vectors(state.carry.acceleration);
   w.array(state.carry.velocity_change.data(), static_cast<std::size_t>(state.carry.velocity_change.size()));
+  w.array(state.carry.edge_tension_N.data(), state.carry.edge_tension_N.size());
   w.scalar(state.carry.previous_error);
   w.scalar<std::uint8_t>(state.carry.rejected_last ? 1 : 0);
   w.array(state.coasting.data(), state.coasting.size());
@@ -118,6 +119,9 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.carry.acceleration = r.vectors("carried acceleration", n);
   const std::vector<double> change = r.array<double>("carried velocity change", 3 * n);
   state.carry.velocity_change = Eigen::Map<const Eigen::VectorXd>(change.data(), static_cast<Eigen::Index>(change.size()));
+  std::size_t constraints = 0;
+  for (const Body& body : model.bodies) constraints += body.topology.edges.size() + body.topology.bending_links.size();
+  state.carry.edge_tension_N = r.array<double>("carried edge tensions", constraints);
   state.carry.previous_error = r.scalar<double>("step-size controller error");
   state.carry.rejected_last = r.scalar<std::uint8_t>("step-size controller flag") != 0;
   const auto coasting_count = r.scalar<std::uint64_t>("coasting vertices");

@@ -14,6 +14,7 @@
 #include "sim/body_collision.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/edge_colouring.hpp"
+#include "sim/stability.hpp"
 #include "sim/world.hpp"
 #include "support.hpp"
 
@@ -26,8 +27,8 @@ using integrator_tests::rms_position_difference;
 // XPBD's substep is exactly backward Euler for the spring-damper (xpbd.hpp): with the reduced mass
 // μ = m1 m2 / (m1 + m2) and the stretch s = x1 − x2 − L0, after a drift to s* = s + h ṡ,
 //   μ (s' − s*) = −h² k s' − h c (s' − s)   ⇒   s' = (μ s* + h c s) / (μ + h² k + h c).
-// Both forms: h ω = h·√(400/0.21) ≈ 2.2 at h = 0.05 s (classical, above xpbd_linearised_dt) and 1.3 at 0.03 s
-// (linearised, where the explicit spring force of the prediction cancels in the algebra).
+// Both forms: h ω = h·√(400/0.21) ≈ 2.2 at h = 0.05 s (classical, above xpbd_carried_dt) and 1.3 at 0.03 s
+// (carried, where the carried force's push cancels in the algebra: Δλ = Δλ_classical + h² T).
 void expect_one_spring_substep_is_backward_euler(double h) {
   const double m1 = 0.3, m2 = 0.7, k = 400.0, c = 2.0, rest = 1.0;
   sim::Body body;
@@ -62,8 +63,39 @@ TEST(Xpbd, OneSpringSubstepIsBackwardEuler) {
   expect_one_spring_substep_is_backward_euler(0.05);
 }
 
-TEST(Xpbd, OneSpringLinearisedSubstepIsBackwardEuler) {
+TEST(Xpbd, OneSpringCarriedSubstepIsBackwardEuler) {
   expect_one_spring_substep_is_backward_euler(0.03);
+}
+
+// A pressurised ball (icosphere:2, k 1000 N/m, c 2 N·s/m, nRT 50 J, 1 kg) without gravity or floor, released
+// from its rest shape: it inflates and settles at the volume where the springs balance the gas. The carried
+// form (xpbd.hpp) carries that load from substep to substep, so at h ω_max ≤ 1.8 it settles where 32 times the
+// substeps do; the classical form (h ω_max ≥ 2.1, above the switch at 1.9) settles inflated, because one
+// Gauss–Seidel pass per substep leaves the network short of the load (the bias of sim/stability.hpp). Measured
+// (ω_max 999 rad/s): carried at 10 substeps per 1/60 s within 5e-7 of 320 substeps, classical at 7 +1.57 %.
+constexpr const char* kFloatingBall = R"({ "fps": 60, "gravity": [0, 0, 0],
+  "bodies": [ { "mesh": "icosphere:2", "mass": 1.0, "stiffness": 1000.0, "damping": 2.0, "pressure": 50.0 } ] })";
+
+double settled_volume(int substeps) {  // per 1/60 s frame; returns the volume after 2 s [m³]
+  sim::World world = integrator_tests::make_world(kFloatingBall, sim::IntegratorKind::Xpbd);
+  integrator_tests::run_for(world, 2.0, frames::substep_dt(60, substeps));
+  return sim::diagnose(world.model, world.state, 0).volume_m3;
+}
+
+TEST(Xpbd, CarriedFormSettlesAtTheEquilibriumVolume) {
+  const sim::World world = integrator_tests::make_world(kFloatingBall, sim::IntegratorKind::Xpbd);
+  const double omega_max = sim::estimate_stability(world.model, world.state).bodies.at(0).omega_max();  // rad/s
+  const int carried_substeps = static_cast<int>(std::ceil(omega_max / (60.0 * 1.8)));
+  const int classical_substeps = static_cast<int>(std::floor(omega_max / (60.0 * 2.1)));
+  ASSERT_GE(classical_substeps, 1);
+  const double converged = settled_volume(32 * carried_substeps);
+  const double carried = settled_volume(carried_substeps), classical = settled_volume(classical_substeps);
+  std::printf("settled volume (omega_max %.0f rad/s): carried at %d substeps %.6f, classical at %d %.6f, at %d %.6f "
+              "m^3 (%.4f %%, %.4f %%)\n", omega_max, carried_substeps, carried, classical_substeps, classical,
+              32 * carried_substeps, converged, 100.0 * (carried / converged - 1.0),
+              100.0 * (classical / converged - 1.0));
+  EXPECT_LT(std::abs(carried / converged - 1.0), 5e-4) << "the carried form: within 0.05 % of the equilibrium";
+  EXPECT_GT(classical / converged - 1.0, 2e-3) << "the classical form: inflated (what the carried form removes)";
 }
 
 // Every edge once; no two edges of a colour share a vertex; at most 2Δ − 1 colours (the greedy bound).
@@ -111,11 +143,11 @@ sim::State breathing_state(sim::IntegratorKind integrator, double dt) {
 // As the substeps grow, xpbd converges to the solution of the other integrators: rk4 at 1e-4 s (its distance to
 // rk4 at 2e-4 s bounds its own error, far below xpbd's). Substeps 8 .. 2048 per 1/30 s frame (h = 4.2 .. 0.016 ms;
 // ω_max = 709 rad/s, so h ω_max runs from 3 down to 0.012). At 8 substeps xpbd takes its classical form (above
-// xpbd_linearised_dt), from 16 on the linearised one (sim/integrators/xpbd.hpp). Measured: 0.129 m at 8, then
-// 9.3e-5, 7.1e-5, 6.0e-5, 4.3e-5, 2.6e-5, 1.5e-5, 7.7e-6, 4.0e-6 m at 16 .. 2048, halvings gaining 0.38, 0.24,
-// 0.49, 0.71, 0.84, 0.92, 0.96: first order in the end (the dampers' terms), after a plateau where the error is
-// the phase of the weakly damped spring modes, which the linearised form keeps ringing like rk4 (the classical
-// form damped them like backward Euler: 0.037 m at 16 and 7.7e-4 m at 128 substeps, before the linearised form).
+// xpbd_carried_dt), from 16 on the carried one (sim/integrators/xpbd.hpp). Measured: 0.129 m at 8, then 1.17e-4,
+// 7.1e-5, 6.0e-5, 4.3e-5, 2.6e-5, 1.5e-5, 7.7e-6, 4.0e-6 m at 16 .. 2048, halvings gaining 0.72, 0.24, 0.49, 0.71,
+// 0.84, 0.92, 0.96: first order in the end (the dampers' terms), after a plateau where the error is the phase of
+// the weakly damped spring modes (the linearised form that the carried one replaced: 9.3e-5 at 16, the same from
+// 32 on; the classical form damped them like backward Euler: 0.037 m at 16 and 7.7e-4 m at 128 substeps).
 // A solver that converged to anything else would level off at the difference instead (order → 0).
 TEST(Xpbd, ConvergesToRk4AsTheSubstepsGrow) {
   const sim::State reference = breathing_state(sim::IntegratorKind::Rk4, 1e-4);
@@ -137,7 +169,7 @@ TEST(Xpbd, ConvergesToRk4AsTheSubstepsGrow) {
     EXPECT_GT(order, 0.8) << "halving " << k << ": at least first order";
     EXPECT_LT(order, 2.2) << "halving " << k;
   }
-  EXPECT_LT(errors[1], 1e-3) << "16 substeps per frame (the linearised form): within a millimetre of rk4";
+  EXPECT_LT(errors[1], 1e-3) << "16 substeps per frame (the carried form): within a millimetre of rk4";
   EXPECT_LT(errors.back(), 1e-5) << "2048 substeps per frame: within 10 µm of rk4";
   EXPECT_LT(uncertainty, 1e-3 * errors.back()) << "the reference is not converged enough";
 }

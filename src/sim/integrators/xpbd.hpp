@@ -26,38 +26,45 @@ namespace sim {
 //                after the edges (bodies without bending stiffness skip it)
 //   3. velocity  v = (x − x_prev)/h
 //
-// The linearised form, taken when h ≤ xpbd_linearised_dt (sim/stability.hpp; from ω_max of the body at the
-// initial state, springs, gas and contact, and its vertex count): step 1 also takes the springs' and dampers' forces at the start
-// of the substep, f_s(x, v), and step 2 corrects only what they got wrong, with C and ∇C·(x − x_prev) replaced by
-//                  C − C(x_prev)  and  ∇C·(x − x_prev) − h Ċ(x_prev, v_prev)
-// in the same Δλ. For one spring it is still exactly backward Euler (the explicit force cancels in the algebra);
-// for the network it removes the classical form's bias: at rest (x* = x) there is nothing left to correct, so
-// the one Gauss–Seidel pass cannot leave the network short of its equilibrium, and the pressurised ball flies
-// at the converged volume. The explicit part costs a stability limit like symplectic Euler's (h ω_max below
-// about 2 on icosphere:3, 1 on icosphere:5, measured), which the switch keeps away from; above it the classical form needs no limit.
+// The carried form, taken when h ≤ xpbd_carried_dt (sim/stability.hpp; from ω_max of the body at the initial
+// state, springs, gas and contact): every edge and link carries the force its constraint exerted in the last
+// substep, T_e = −Δλ/h² (a tension along the edge, in State::carry.edge_tension_N), step 1 also applies those
+// forces, f_i −= T_e n̂_e at the start of the substep, and step 2 solves only for the change, with C replaced by
+//                  C − T_e/k      (and, as always, ∇C·(x − x_prev) from the predicted x, which includes T's push)
+// after which T_e ← T_e − Δλ/h² (a constraint without a spring, k = 0, carries nothing: its damper's carried
+// force would have no C − T/k to cancel it and would count twice). This is a warm start carried across substeps: one Gauss–Seidel pass per
+// substep cannot carry a steady load (the gas's) across the network, so the classical form leaves a pressurised
+// ball short of its equilibrium (inflated); with the load carried there is nothing left to correct at rest
+// (x* = x: C − T_e/k = 0 when T_e = k C), and the pass only has to follow the load's changes. For one spring it is
+// still exactly backward Euler (the carried push cancels in the algebra: Δλ = Δλ_classical + h² T). Its explicit
+// part costs a stability limit (measured on the bounce ball: icosphere:5 ran at h ω_max 3.1 and diverged at
+// 4.7; icosphere:3 ran at 2.9), which the switch keeps away from; the classical form needs no limit.
+// (It replaced a linearised form that applied the springs' forces at the start of the substep, k C(x_prev) and
+// the damper's, explicitly: that one diverged on icosphere:5 at h ω_max 1.08 and needed 188 substeps per 1/60 s.)
 //
 // Why it is the same model: for h → 0 the correction is Δx_i = −h² w_i (k C + c Ċ) n̂ = h² f_i/m_i, the
-// spring-damper force of sim/forces.hpp, so the substeps converge to the same ODE as the other integrators,
-// at first order (the pass is one Gauss–Seidel sweep, symplectic Euler in the limit). At large h the springs
-// behave like backward Euler: no step limit from them; the explicit gas and gravity in step 1 keep
-// symplectic Euler's limit h < 2/ω_gas (sim/stability.hpp). Nothing is carried between substeps but x, v.
-// The linearised form converges to the same ODE (its corrections vanish faster as h → 0).
+// spring-damper force of sim/forces.hpp (in the carried form the carried part and the correction sum to it, to
+// first order: the carried force's direction is the start of the substep's), so the substeps converge to the
+// same ODE as the other integrators, at first order (one Gauss–Seidel sweep, symplectic Euler in the limit). At
+// large h the springs behave like backward Euler: no step limit from them; the explicit gas and gravity in
+// step 1 keep symplectic Euler's limit h < 2/ω_gas (sim/stability.hpp).
 class Xpbd final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
 
  private:
-  // The colourings and every body's fastest mode, on the first step.
+  // The colourings, every body's offsets into the carried tensions and its form's limit, on the first step.
   void prepare_once(const Model& model);
-  // Whether body b's substeps of h take the linearised form (h ≤ xpbd_linearised_dt).
-  bool linearised(std::size_t b, double h) const { return h <= linearised_dt_[b]; }
+  // Whether body b's substeps of h take the carried form (h ≤ xpbd_carried_dt).
+  bool carried(std::size_t b, double h) const { return h <= carried_dt_[b]; }
 
-  std::vector<EdgeColouring> colourings_;  // per body of the model, computed on the first step
+  std::vector<EdgeColouring> colourings_;       // per body of the model, computed on the first step
   std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
-  std::vector<double> linearised_dt_;      // per body: xpbd_linearised_dt at the initial state, contacts included [s]
-  std::vector<Vec3> previous_x_;           // scratch: x at the start of the substep
-  std::vector<Vec3> previous_v_;           // scratch: v at the start of the substep
-  std::vector<Vec3> force_;                // scratch: gravity + gas on every vertex [N]
+  std::vector<double> carried_dt_;              // per body: xpbd_carried_dt at the initial state, contacts included [s]
+  std::vector<std::size_t> first_tension_;      // per body: its edges' first entry in carry.edge_tension_N (links follow)
+  std::size_t tension_count_ = 0;               // every body's edges and links
+  std::vector<Vec3> previous_x_;                // scratch: x at the start of the substep
+  std::vector<Vec3> force_;                     // scratch: gravity + gas (+ carried tensions) on every vertex [N]
 };
 
 }  // namespace sim
