@@ -89,20 +89,9 @@ TEST(NewtonContactPotential, GradientMatchesFiniteDifferencesOfTheEnergy) {
   std::sort(checked.begin(), checked.end());
   checked.erase(std::unique(checked.begin(), checked.end()), checked.end());
   constexpr double kStep = 1e-7;  // m: small against the 4 cm skin
-  double worst = 0.0, scale = 0.0;
-  for (int i : checked) {
-    for (int c = 0; c < 3; ++c) {
-      std::vector<Vec3> plus = p.x, minus = p.x;
-      plus[static_cast<std::size_t>(i)][c] += kStep;
-      minus[static_cast<std::size_t>(i)][c] -= kStep;
-      double energy_scale = 0.0;
-      const double numeric = (p.potential.energy(p.world.model, plus, energy_scale) -
-                              p.potential.energy(p.world.model, minus, energy_scale)) / (2.0 * kStep);
-      const double analytic = p.gradient[p.hessian.dof(i) + c];
-      worst = std::max(worst, std::abs(numeric - analytic));
-      scale = std::max(scale, std::abs(analytic));
-    }
-  }
+  const integrator_tests::GradientMismatch m =
+      integrator_tests::gradient_mismatch(p.potential, p.world.model, p.hessian, p.x, p.gradient, checked, kStep);
+  const double worst = m.worst_N, scale = m.scale_N;
   std::printf("%zu vertices in contacts: max |dE/dx numeric - analytic| = %.3e N (largest component %.3e N)\n",
               checked.size(), worst, scale);
   EXPECT_LT(worst, 1e-5 * scale);

@@ -1,6 +1,7 @@
 // Integrator test helpers.
 #include "support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -115,6 +116,26 @@ ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s,
   sweep.slope = fitted_slope(log_tolerance, log_error);
   std::printf("rk45: d log(error) / d log(tolerance) = %.3f\n", sweep.slope);
   return sweep;
+}
+
+GradientMismatch gradient_mismatch(sim::IncrementalPotential& potential, const sim::Model& model,
+                                   const sim::BlockSystem& hessian, std::span<const softbody::Vec3> x,
+                                   const Eigen::VectorXd& gradient, std::span<const int> vertices, double step) {
+  GradientMismatch mismatch;
+  for (const int i : vertices) {
+    for (int c = 0; c < 3; ++c) {
+      std::vector<softbody::Vec3> plus(x.begin(), x.end()), minus(x.begin(), x.end());
+      plus[static_cast<std::size_t>(i)][c] += step;
+      minus[static_cast<std::size_t>(i)][c] -= step;
+      double energy_scale = 0.0;
+      const double numeric =
+          (potential.energy(model, plus, energy_scale) - potential.energy(model, minus, energy_scale)) / (2.0 * step);
+      const double analytic = gradient[hessian.dof(i) + c];
+      mismatch.worst_N = std::max(mismatch.worst_N, std::abs(numeric - analytic));
+      mismatch.scale_N = std::max(mismatch.scale_N, std::abs(analytic));
+    }
+  }
+  return mismatch;
 }
 
 double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
