@@ -12,7 +12,7 @@
 namespace analysis {
 
 std::vector<LimitBody> limit_bodies() {
-  return {{"bounce ball", "icosphere:3", 3000.0, 0.5, 30.0},
+  return {{"1 kg ball", "icosphere:3", 3000.0, 0.5, 30.0},
           {"stiff undamped", "icosphere:2", 5000.0, 0.0, 100.0},
           {"coarse damped", "icosphere:1", 1e4, 2.0, 30.0},
           {"fine ball", "icosphere:4", 3000.0, 0.5, 30.0}};
