@@ -72,6 +72,9 @@ INSTANTIATE_TEST_SUITE_P(
         // garbled in plain ASCII crashed it too.
         HostileMesh{"glb_json_not_utf8_segv.glb", "is a glTF file whose JSON does not parse"},
         HostileMesh{"glb_line_loop_without_position.glb", "meshes.0.primitives.0 has no POSITION attribute"},
+        // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
+        // reader read past the end of its line buffer (heap-buffer-overflow in strtol).
+        HostileMesh{"obj_face_only_line.obj", "with a face, point or line element before its first vertex"},
         // coordinates that are not numbers, or whose squares overflow (welding, volumes).
         // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).
         HostileMesh{"obj_nan_vertex.obj", "with coordinate nan (expected finite coordinates within +-1e+12)"},

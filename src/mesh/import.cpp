@@ -54,6 +54,25 @@ void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
 }
 
 // What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
+// An OBJ element that names vertices (f, p, l: assimp reads any line starting with those letters as one) before
+// the file has given a single vertex (v) names none that exists. Refused before assimp sees it: its OBJ reader
+// (libassimp5 5.2.5) reads past the end of its line buffer when such a face is the file's only line (found by
+// fuzz_mesh_obj: tests/data/hostile/obj_face_only_line.obj).
+void check_obj_vertices_come_first(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || first != 0) continue;  // assimp skips a line that starts with a blank
+    const char keyword = line[0];
+    if (keyword == 'v' && line.size() > 1 && (line[1] == ' ' || line[1] == '\t')) return;
+    if (keyword == 'f' || keyword == 'p' || keyword == 'l') {
+      throw InputError("is an OBJ file with a face, point or line element before its first vertex (expected 'v x y z' "
+                       "lines before the elements that name them)");
+    }
+  }
+}
+
 void check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
     throw InputError(words + " (expected a regular mesh file)");
@@ -81,6 +100,7 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
     if (read_u32_le(head, 4) == 2) check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20));  // the JSON chunk
   }
   if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
+  if (extension == ".obj") check_obj_vertices_come_first(file);
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)
