@@ -53,7 +53,6 @@ void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
   }
 }
 
-// What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
 // An OBJ element that names vertices (f, p, l: assimp reads any line starting with those letters as one) before
 // the file has given a single vertex (v) names none that exists. Refused before assimp sees it: its OBJ reader
 // (libassimp5 5.2.5) reads past the end of its line buffer when such a face is the file's only line (found by
@@ -62,9 +61,8 @@ void check_obj_vertices_come_first(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::string line;
   while (std::getline(in, line)) {
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || first != 0) continue;  // assimp skips a line that starts with a blank
-    const char keyword = line[0];
+    if (line.empty()) continue;
+    const char keyword = line[0];  // assimp goes by the first character: a line that starts with a blank is none
     if (keyword == 'v' && line.size() > 1 && (line[1] == ' ' || line[1] == '\t')) return;
     if (keyword == 'f' || keyword == 'p' || keyword == 'l') {
       throw InputError("is an OBJ file with a face, point or line element before its first vertex (expected 'v x y z' "
@@ -73,6 +71,7 @@ void check_obj_vertices_come_first(const std::filesystem::path& file) {
   }
 }
 
+// What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
 void check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
     throw InputError(words + " (expected a regular mesh file)");
