@@ -65,6 +65,12 @@ INSTANTIATE_TEST_SUITE_P(
         // then aborted in its triangulation).
         HostileMesh{"ply_text_row_split_over_two_lines.ply", "has vertex 6 with fewer values on its line than its header announces"},
         HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
+        // found by fuzz_mesh_ply_text: a lone CR inside vertex row 5 ("1 <CR>1 1 0 0 0"), which assimp reads as a line
+        // break: its rows shifted by one and its triangulation aborted (ai_assert, SIGABRT).
+        HostileMesh{"ply_text_carriage_return_inside_a_row.ply", "is a PLY file with the control character 0x0d in line 19 (in its body"},
+        // found by fuzz_mesh_ply_binary: NUL bytes inside the header line "property float z", which assimp's line reader
+        // ends at the first NUL: the same abort in its triangulation.
+        HostileMesh{"ply_binary_nul_inside_a_header_line.ply", "is a PLY file with the control character 0x00 in line 7 (in its header"},
         // found by fuzz_mesh_glb: a 2 kB GLB whose header and first chunk announce 4 GB (assimp allocated them).
         HostileMesh{"glb_announces_4gb.glb", "is a binary glTF (GLB) file whose header announces 4294965229 bytes"},
         // found by fuzz_mesh_glb: a primitive drawn as a line loop whose POSITION attribute name was garbled (and

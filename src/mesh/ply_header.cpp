@@ -1,8 +1,10 @@
 // PLY and OFF header checks, done on the file's first bytes before assimp sees the file.
 #include "mesh/ply_header.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -188,6 +190,27 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
   }
 }
 
+// Throws unless `text` (a PLY header, or an ASCII body) holds no control character but tabs and line ends (LF,
+// or CR LF). assimp's line reader also ends a line at a lone CR, a form feed or a NUL, where the walks above
+// see one line: a vertex row "1 <CR>1 1" is one row here and two to assimp, which then shifts every later row
+// and aborts in its triangulation (found by fuzz_mesh_ply_text).
+// `first_line` is the file's line number of text's first line.
+void check_text_characters(std::string_view text, long long first_line, const char* part) {
+  long long line = first_line;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') {
+      ++line;
+      continue;
+    }
+    if (c >= 0x20 || c == '\t' || (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) continue;
+    char code[8];
+    std::snprintf(code, sizeof code, "0x%02x", c);
+    throw InputError("is a PLY file with the control character " + std::string(code) + " in line " + std::to_string(line) +
+                     " (in its " + part + "; a PLY text line holds printable characters and tabs, and ends with LF or CR LF)");
+  }
+}
+
 }  // namespace
 
 bool looks_like_ply(std::string_view head) { return head.substr(0, 3) == "ply"; }
@@ -198,6 +221,8 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
                                                       std::to_string(head.size()) + " bytes");
   std::size_t header_bytes = head.find('\n', end);
   header_bytes = header_bytes == std::string_view::npos ? head.size() : header_bytes + 1;
+  const std::string_view header = head.substr(0, header_bytes);
+  check_text_characters(header, 1, "header");
   std::string format;
   std::vector<Element> elements;
   std::size_t line_start = 0;
@@ -270,6 +295,8 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
   if (needed > 0.0L) check_body_size(body, needed, announced);
   if (head.size() < file_bytes) throw InputError("is a PLY file that could not be read whole");
   if (format == "ascii") {
+    const auto header_lines = static_cast<long long>(std::count(header.begin(), header.end(), '\n'));
+    check_text_characters(head.substr(header_bytes), header_lines + 1, "body");
     check_ascii_body(head.substr(header_bytes), elements);
   } else {
     check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian");
