@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <optional>
 #include <iterator>
+#include <numeric>
 #include <string_view>
 #include <set>
 
@@ -320,6 +321,39 @@ std::vector<std::vector<std::size_t>> overlapping_groups(const std::vector<Surfa
   return groups;
 }
 
+// The same surface with its vertices in lexicographic order of their coordinates and its faces, each starting
+// at its smallest vertex (the winding kept), in lexicographic order. CGAL's corefinement orders its output by
+// where the heap put its internal boxes: the teapot, read from a file of another name or with a no-op --set,
+// came out of the union with its vertices in another order, and its proxy's remesh with another vertex count.
+// In this order the union's result depends on the surfaces alone (vertices at exactly the same point keep the
+// order they came in).
+SurfaceMesh in_canonical_order(const SurfaceMesh& surface) {
+  const mesh::TriMesh given = to_trimesh(surface);
+  std::vector<std::size_t> order(given.vertices.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const mesh::Vec3& p = given.vertices[a];
+    const mesh::Vec3& q = given.vertices[b];
+    return std::array<double, 3>{p.x(), p.y(), p.z()} < std::array<double, 3>{q.x(), q.y(), q.z()};
+  });
+  std::vector<int> rank(order.size());
+  mesh::TriMesh sorted;
+  sorted.vertices.reserve(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    rank[order[i]] = static_cast<int>(i);
+    sorted.vertices.push_back(given.vertices[order[i]]);
+  }
+  sorted.triangles.reserve(given.triangles.size());
+  for (const mesh::Triangle& t : given.triangles) {
+    mesh::Triangle renumbered{rank[static_cast<std::size_t>(t[0])], rank[static_cast<std::size_t>(t[1])],
+                              rank[static_cast<std::size_t>(t[2])]};
+    std::rotate(renumbered.begin(), std::min_element(renumbered.begin(), renumbered.end()), renumbered.end());
+    sorted.triangles.push_back(renumbered);
+  }
+  std::sort(sorted.triangles.begin(), sorted.triangles.end());
+  return to_surface_mesh(sorted);
+}
+
 // The Boolean union of the group's parts, one after the other (PMP::corefine_and_compute_union: the
 // surfaces cut along their intersection curves, the pieces inside another part dropped). Empty where it
 // cannot be computed: a part that intersects itself (corefinement needs each input free of self-crossings),
@@ -337,7 +371,7 @@ std::optional<SurfaceMesh> union_of(std::vector<SurfaceMesh>& parts, const std::
   }
   joined.collect_garbage();
   if (!CGAL::is_closed(joined)) return std::nullopt;
-  return joined;
+  return in_canonical_order(joined);
 }
 
 // Step 8 ("parts": "union", the default): closed parts that overlap, touch or lie inside one another become
