@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
+#include "mesh/fbx_check.hpp"
 #include "mesh/gltf_check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
@@ -78,6 +79,15 @@ INSTANTIATE_TEST_SUITE_P(
         // garbled in plain ASCII crashed it too.
         HostileMesh{"glb_json_not_utf8_segv.glb", "is a glTF file whose JSON does not parse"},
         HostileMesh{"glb_line_loop_without_position.glb", "meshes.0.primitives.0 has no POSITION attribute"},
+        // found by fuzz_mesh_glb: an indexed line loop whose indices lie far past its 36 vertices: assimp 5.2's glTF 2
+        // reader reads them unchecked (SEGV; the same primitive as triangles is refused by assimp itself).
+        HostileMesh{"glb_indexed_line_loop_out_of_range.glb", "meshes.0.primitives.0 is an indexed line loop (mode 2)"},
+        // found by fuzz_mesh_fbx: an ASCII FBX with the connection C: "OO", 1000003, 1000003 (an object its own
+        // parent): assimp 5.2's FBX converter recursed until the stack overflowed (SIGSEGV without sanitizers too).
+        HostileMesh{"fbx_object_connected_to_itself.fbx", "object connections form a cycle (object 1000003 is connected to itself through 1 link)"},
+        // the same cycle in a binary FBX (our seed with its last connection's parent made its child): the check
+        // reads binary records too.
+        HostileMesh{"fbx_binary_object_connected_to_itself.fbx", "object 1000002 is connected to itself through 1 link"},
         // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
         // reader read past the end of its line buffer (heap-buffer-overflow in strtol).
         HostileMesh{"obj_face_only_line.obj", "with a face, point or line element before its first vertex"},
@@ -145,6 +155,42 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
   EXPECT_NE(refusal("{\"asset\": ").find("does not parse"), std::string::npos);
   // glTF 1.0 keeps its keyed objects: not this check's business (assimp's glTF 1 reader takes it).
   EXPECT_NO_THROW(mesh::check_gltf_document(R"({"asset":{"version":"1.0"},"accessors":{"a":{}}})"));
+}
+
+// An ASCII FBX of nothing but properties and connections (what the check reads).
+std::string fbx_with_connections(const std::string& connections) {
+  return "; FBX 7.5.0 project file\nGlobalSettings:  {\n\tProperties70:  {\n\t\tP: \"UpAxis\", \"int\", \"\", \"\", 1\n"
+         "\t}\n}\nConnections:  {\n" + connections + "}\n";
+}
+
+std::string fbx_refusal(const std::string& text) {
+  try {
+    mesh::check_fbx_connections(text);
+  } catch (const softbody::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HostileMesh, FbxConnectionsMustNotCycleOrNestTooDeep) {
+  // A tree: accepted. (The empty strings before the connections must not end the scan.)
+  EXPECT_EQ(fbx_refusal(fbx_with_connections("\tC: \"OO\", 1, 0\n\tC: \"OO\", 2, 1\n\tC: \"OP\", 3, 1, \"Prop\"\n")), "");
+  // Two objects each other's parent, and the same cycle written over several lines.
+  EXPECT_NE(fbx_refusal(fbx_with_connections("\tC: \"OO\", 1, 0\n\tC: \"OO\", 2, 3\n\tC: \"OO\", 3, 2\n"))
+                .find("form a cycle (object 2 is connected to itself through 2 links)"),
+            std::string::npos);
+  EXPECT_NE(fbx_refusal(fbx_with_connections("C:\n\"OO\",\n7,\n7\n")).find("object 7 is connected to itself through 1 link"),
+            std::string::npos);
+  // A chain of kMostFbxConnectionLevels links is accepted, one more is refused.
+  auto chain = [](int links) {
+    std::string text;
+    for (int i = 1; i <= links; ++i) text += "\tC: \"OO\", " + std::to_string(i) + ", " + std::to_string(i - 1) + "\n";
+    return fbx_with_connections(text);
+  };
+  EXPECT_EQ(fbx_refusal(chain(mesh::kMostFbxConnectionLevels)), "");
+  EXPECT_NE(fbx_refusal(chain(mesh::kMostFbxConnectionLevels + 1)).find("nested more than 1000 levels deep"), std::string::npos);
+  // Connections outside the Connections section are not connections.
+  EXPECT_EQ(fbx_refusal("Objects:  {\n\tC: \"OO\", 5, 5\n}\nConnections:  {\n}\n"), "");
 }
 
 TEST(HostileMesh, PlyHeaderCountsMustFitTheFile) {

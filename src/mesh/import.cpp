@@ -16,6 +16,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
+#include "mesh/fbx_check.hpp"
 #include "mesh/gltf_check.hpp"
 #include "mesh/ply_header.hpp"
 
@@ -100,6 +101,9 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   }
   if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
   if (extension == ".obj") check_obj_vertices_come_first(file);
+  if (extension == ".fbx" || looks_like_binary_fbx(head) || head.find("FBXHeaderExtension") != std::string::npos) {
+    check_fbx_connections(head_of(file, bytes));
+  }
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)

@@ -1,0 +1,258 @@
+// FBX connection checks: the "Connections" section read from an ASCII or a binary FBX file, and its object graph
+// searched for cycles and for chains deeper than assimp's recursion can follow.
+#include "mesh/fbx_check.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "core/errors.hpp"
+
+namespace mesh {
+namespace {
+
+using softbody::InputError;
+
+struct Connection {
+  long long child = 0;   // the object connected...
+  long long parent = 0;  // ...to this one ("OO": object to object, "OP": object to a property of it)
+};
+
+// ---- ASCII FBX: tokens as assimp's tokenizer sees them (';' starts a comment, commas separate) ----
+
+class AsciiTokens {
+ public:
+  explicit AsciiTokens(std::string_view text) : text_(text) {}
+
+  // The next token ("Key:", "{", "}", a "quoted string" without its quotes (maybe empty), a number or word);
+  // false at the end of the text.
+  bool next(std::string_view& token) {
+    skip_blanks_and_comments();
+    if (at_ >= text_.size()) return false;
+    const std::size_t start = at_;
+    const char c = text_[at_];
+    if (c == '{' || c == '}') {
+      token = text_.substr(at_++, 1);
+    } else if (c == '"') {
+      const std::size_t close = std::min(text_.find('"', start + 1), text_.size());
+      at_ = close < text_.size() ? close + 1 : close;
+      token = text_.substr(start + 1, close - start - 1);
+    } else {
+      while (at_ < text_.size() && !is_separator(text_[at_])) ++at_;
+      if (at_ < text_.size() && text_[at_] == ':') ++at_;  // a key keeps its colon
+      token = text_.substr(start, at_ - start);
+    }
+    return true;
+  }
+
+ private:
+  static bool is_separator(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == '{' || c == '}' || c == '"' || c == ';' ||
+           c == ':';
+  }
+  void skip_blanks_and_comments() {
+    while (at_ < text_.size()) {
+      const char c = text_[at_];
+      if (c == ';') {
+        while (at_ < text_.size() && text_[at_] != '\n') ++at_;
+      } else if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
+        ++at_;
+      } else {
+        return;
+      }
+    }
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+};
+
+bool parse_id(std::string_view word, long long& id) {
+  if (word.empty() || word.size() > 24) return false;
+  const std::string text(word);
+  char* end = nullptr;
+  id = std::strtoll(text.c_str(), &end, 10);
+  return end == text.c_str() + text.size();
+}
+
+// Every `C: "TYPE", child, parent` inside the top-level `Connections: { ... }` of an ASCII file.
+std::vector<Connection> ascii_connections(std::string_view text) {
+  std::vector<Connection> connections;
+  AsciiTokens tokens(text);
+  int depth = 0;
+  bool in_connections = false;
+  std::string_view previous, token;
+  while (tokens.next(token)) {
+    if (token == "{") {
+      ++depth;
+      if (depth == 1 && previous == "Connections:") in_connections = true;
+    } else if (token == "}") {
+      if (depth == 1) in_connections = false;
+      if (depth > 0) --depth;
+    } else if (in_connections && depth == 1 && token == "C:") {
+      std::string_view type, child, parent;  // the type: "OO", "OP", ...
+      Connection c;
+      if (tokens.next(type) && tokens.next(child) && tokens.next(parent) && parse_id(child, c.child) &&
+          parse_id(parent, c.parent)) {
+        connections.push_back(c);
+      }
+    }
+    previous = token;
+  }
+  return connections;
+}
+
+// ---- Binary FBX: node records (Kaydara's layout, as assimp 5.2 reads it) ----
+
+constexpr std::string_view kBinaryMagic{"Kaydara FBX Binary  \0", 21};
+constexpr std::size_t kFirstRecord = 27;  // the magic, 0x1A 0x00, the uint32 version
+
+std::uint64_t read_le(std::string_view bytes, std::size_t at, std::size_t width) {
+  std::uint64_t value = 0;
+  for (std::size_t i = 0; i < width; ++i) value |= std::uint64_t{static_cast<unsigned char>(bytes[at + i])} << (8 * i);
+  return value;
+}
+
+// One node record's layout: where its properties and its nested records lie, and where it ends.
+struct Record {
+  std::size_t end = 0;         // 0: the null record that ends a list
+  std::uint64_t properties = 0;
+  std::size_t properties_at = 0, nested_at = 0;
+  std::string_view name;
+};
+
+// The record at `at`, or false where it runs outside [at, limit) (a file that cannot be followed).
+bool read_record(std::string_view bytes, std::size_t at, std::size_t limit, std::size_t width, Record& record) {
+  const std::size_t header = 3 * width + 1;
+  if (limit > bytes.size() || at > limit || limit - at < header) return false;
+  const std::uint64_t end = read_le(bytes, at, width);
+  record.properties = read_le(bytes, at + width, width);
+  const std::uint64_t property_bytes = read_le(bytes, at + 2 * width, width);
+  const std::size_t name_bytes = static_cast<unsigned char>(bytes[at + 3 * width]);
+  if (end == 0) {
+    record.end = 0;
+    return true;
+  }
+  if (end <= at || end > limit) return false;
+  record.end = static_cast<std::size_t>(end);
+  record.name = bytes.substr(at + header, std::min(name_bytes, record.end - (at + header)));
+  record.properties_at = at + header + name_bytes;
+  if (record.properties_at > record.end || property_bytes > record.end - record.properties_at) return false;
+  record.nested_at = record.properties_at + static_cast<std::size_t>(property_bytes);
+  return true;
+}
+
+// The properties of a "C" record: its type string, then two integer ids ('L', or 'I' in old files).
+bool connection_of(std::string_view bytes, const Record& record, Connection& c) {
+  std::size_t at = record.properties_at;
+  long long ids[2] = {0, 0};
+  int found = 0;
+  for (std::uint64_t p = 0; p < record.properties && at < record.nested_at && found < 2; ++p) {
+    const char type = bytes[at++];
+    const std::size_t left = record.nested_at - at;
+    if (type == 'S' || type == 'R') {
+      if (left < 4) return false;
+      const std::uint64_t length = read_le(bytes, at, 4);
+      if (length > left - 4) return false;
+      at += 4 + static_cast<std::size_t>(length);
+    } else if (type == 'L' || type == 'I') {
+      const std::size_t width = type == 'L' ? 8 : 4;
+      if (left < width) return false;
+      const std::uint64_t raw = read_le(bytes, at, width);
+      ids[found++] = type == 'L' ? static_cast<long long>(raw) : static_cast<long long>(static_cast<std::int32_t>(raw));
+      at += width;
+    } else {
+      return false;  // no other type in a connection
+    }
+  }
+  if (found < 2) return false;
+  c = {ids[0], ids[1]};
+  return true;
+}
+
+// Every "C" record nested in the top-level "Connections" record of a binary file; what cannot be followed ends
+// the search (assimp then refuses the file itself).
+std::vector<Connection> binary_connections(std::string_view bytes) {
+  std::vector<Connection> connections;
+  if (bytes.size() < kFirstRecord) return connections;
+  const std::size_t width = read_le(bytes, 23, 4) >= 7500 ? 8 : 4;
+  Record top;
+  for (std::size_t at = kFirstRecord; read_record(bytes, at, bytes.size(), width, top) && top.end != 0; at = top.end) {
+    if (top.name != "Connections") continue;
+    Record child;
+    for (std::size_t c = top.nested_at; read_record(bytes, c, top.end, width, child) && child.end != 0; c = child.end) {
+      Connection connection;
+      if (child.name == "C" && connection_of(bytes, child, connection)) connections.push_back(connection);
+    }
+  }
+  return connections;
+}
+
+// ---- The object graph ----
+
+// Throws if following child → parent links from any object comes back to it, or passes more than
+// kMostFbxConnectionLevels links. Iterative (a crafted chain must not overflow this stack either).
+void check_acyclic_and_shallow(const std::vector<Connection>& connections) {
+  std::unordered_map<long long, std::vector<long long>> parents;
+  for (const Connection& c : connections) parents[c.child].push_back(c.parent);
+  enum class Mark { Unseen, OnPath, Done };
+  std::unordered_map<long long, Mark> mark;
+  std::unordered_map<long long, int> levels;  // the longest chain of links above an object
+  struct Frame {
+    long long object;
+    std::size_t next_parent;
+  };
+  for (const Connection& start : connections) {
+    if (mark[start.child] != Mark::Unseen) continue;
+    std::vector<Frame> path{{start.child, 0}};
+    mark[start.child] = Mark::OnPath;
+    while (!path.empty()) {
+      Frame& frame = path.back();
+      const auto found = parents.find(frame.object);
+      if (found != parents.end() && frame.next_parent < found->second.size()) {
+        const long long parent = found->second[frame.next_parent++];
+        const Mark parent_mark = mark[parent];
+        if (parent_mark == Mark::OnPath) {
+          std::size_t first = path.size() - 1;
+          while (path[first].object != parent) --first;
+          const std::size_t links = path.size() - first;
+          throw InputError("is an FBX file whose object connections form a cycle (object " + std::to_string(parent) +
+                           " is connected to itself through " + std::to_string(links) + (links == 1 ? " link" : " links") +
+                           "), which assimp's reader cannot follow");
+        }
+        if (parent_mark == Mark::Unseen) {
+          mark[parent] = Mark::OnPath;
+          path.push_back({parent, 0});
+        }
+        continue;
+      }
+      int above = 0;
+      if (found != parents.end()) {
+        for (long long parent : found->second) above = std::max(above, levels[parent] + 1);
+      }
+      if (above > kMostFbxConnectionLevels) {
+        throw InputError("is an FBX file whose object connections are nested more than " +
+                         std::to_string(kMostFbxConnectionLevels) + " levels deep, more than assimp's reader can follow");
+      }
+      levels[frame.object] = above;
+      mark[frame.object] = Mark::Done;
+      path.pop_back();
+    }
+  }
+}
+
+}  // namespace
+
+bool looks_like_binary_fbx(std::string_view head) { return head.substr(0, kBinaryMagic.size()) == kBinaryMagic; }
+
+void check_fbx_connections(std::string_view file_text) {
+  check_acyclic_and_shallow(looks_like_binary_fbx(file_text) ? binary_connections(file_text) : ascii_connections(file_text));
+}
+
+}  // namespace mesh
