@@ -79,6 +79,12 @@ INSTANTIATE_TEST_SUITE_P(
         // garbled in plain ASCII crashed it too.
         HostileMesh{"glb_json_not_utf8_segv.glb", "is a glTF file whose JSON does not parse"},
         HostileMesh{"glb_line_loop_without_position.glb", "meshes.0.primitives.0 has no POSITION attribute"},
+        // found by fuzz_mesh_ply_binary: an element named "999...9vertex", whose digits assimp read as a count
+        // (an allocation of 103 GB: bad_alloc, or an out-of-memory abort under ASan).
+        HostileMesh{"ply_element_name_of_digits.ply", "(line 4: expected element NAME COUNT with a NAME that starts with a letter)"},
+        // found by fuzz_mesh_gltf: the number 222222222222222222222222e22222, beyond a double: nlohmann's
+        // out_of_range was not caught (std::terminate).
+        HostileMesh{"gltf_number_out_of_range.gltf", "is a glTF file whose JSON does not parse ([json.exception.out_of_range.406]"},
         // found by fuzz_mesh_glb: an indexed line loop whose indices lie far past its 36 vertices: assimp 5.2's glTF 2
         // reader reads them unchecked (SEGV; the same primitive as triangles is refused by assimp itself).
         HostileMesh{"glb_indexed_line_loop_out_of_range.glb", "meshes.0.primitives.0 is an indexed line loop (mode 2)"},
