@@ -91,9 +91,15 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx: an ASCII FBX with the connection C: "OO", 1000003, 1000003 (an object its own
         // parent): assimp 5.2's FBX converter recursed until the stack overflowed (SIGSEGV without sanitizers too).
         HostileMesh{"fbx_object_connected_to_itself.fbx", "object connections form a cycle (object 1000003 is connected to itself through 1 link)"},
-        // the same cycle in a binary FBX (our seed with its last connection's parent made its child): the check
-        // reads binary records too.
+        // a cycle in a binary FBX (our binary seed with its last connection's parent made its child; assimp happens to
+        // survive this one, but no valid file has a cycle): the check reads binary records too.
         HostileMesh{"fbx_binary_object_connected_to_itself.fbx", "object 1000002 is connected to itself through 1 link"},
+        // found by fuzz_mesh_fbx after 398,575 executions: a binary FBX whose records' offsets and lengths are
+        // garbled; assimp 5.2's binary tokenizer aborted on an ai_assert (begin <= cursor).
+        HostileMesh{"fbx_binary_record_offsets_garbled.fbx", "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
+        // found by fuzz_mesh_ply_binary after 138,588 executions: a face index (246) past the 8 vertices, which
+        // assimp's PLY reader used before its own validation (a heap corruption: ASan's allocator CHECK failed).
+        HostileMesh{"ply_binary_index_past_the_vertices_heap.ply", "has face 11 with the vertex index 246, not one of the 8 vertices its header announces"},
         // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
         // reader read past the end of its line buffer (heap-buffer-overflow in strtol).
         HostileMesh{"obj_face_only_line.obj", "with a face, point or line element before its first vertex"},

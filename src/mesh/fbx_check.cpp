@@ -176,8 +176,92 @@ bool connection_of(std::string_view bytes, const Record& record, Connection& c) 
   return true;
 }
 
+// The bytes of one property of type `type` at `at` (its type code already read), or 0 where it runs past `limit`
+// or the type is unknown. Arrays (f d l i b) hold a length, an encoding (0 raw, 1 zlib) and their byte count.
+std::size_t property_bytes_at(std::string_view bytes, std::size_t at, std::size_t limit, char type) {
+  const std::size_t left = limit - at;
+  std::size_t size = 0;
+  switch (type) {
+    case 'C': size = 1; break;
+    case 'Y': size = 2; break;
+    case 'I': case 'F': size = 4; break;
+    case 'D': case 'L': size = 8; break;
+    case 'S': case 'R':
+      if (left < 4) return 0;
+      size = 4 + static_cast<std::size_t>(std::min<std::uint64_t>(read_le(bytes, at, 4), left));
+      break;
+    case 'f': case 'd': case 'l': case 'i': case 'b':
+      if (left < 12 || read_le(bytes, at + 4, 4) > 1) return 0;
+      size = 12 + static_cast<std::size_t>(std::min<std::uint64_t>(read_le(bytes, at + 8, 4), left));
+      break;
+    default: return 0;
+  }
+  return size <= left ? size : 0;
+}
+
+// Throws unless every record of a binary file can be followed as assimp's tokenizer follows it: each ends after
+// it starts and within its parent, its properties (known types, their lengths) fill exactly its property
+// bytes, and its nested records are followed by a null record that ends exactly where it ends. (Found by
+// fuzz_mesh_fbx: a record whose offsets ran backwards made assimp abort on an ai_assert in its binary
+// tokenizer.) Iterative: nesting cannot overflow this stack.
+void check_binary_records(std::string_view bytes, std::size_t width) {
+  const std::size_t header = 3 * width + 1;  // also the size of a null record
+  auto refuse = [](std::size_t at, const std::string& what) {
+    throw InputError("is a binary FBX file whose record at byte " + std::to_string(at) + " " + what +
+                     " (assimp's reader cannot follow it safely)");
+  };
+  struct List {
+    std::size_t at, stop;  // nested records from `at` up to `stop`, then a null record
+  };
+  std::vector<List> open;
+  // One record at `at`, which must end by `limit`: checked, its nested list opened; returns where it ends.
+  auto enter = [&](std::size_t at, std::size_t limit) {
+    if (limit - at < header) refuse(at, "is cut short");
+    const std::uint64_t end = read_le(bytes, at, width);
+    const std::uint64_t properties = read_le(bytes, at + width, width);
+    const std::uint64_t property_bytes = read_le(bytes, at + 2 * width, width);
+    const std::size_t name_bytes = static_cast<unsigned char>(bytes[at + 3 * width]);
+    if (end <= at || end > limit) refuse(at, "ends at byte " + std::to_string(end) + ", outside its parent");
+    const std::size_t properties_at = at + header + name_bytes;
+    if (properties_at > end || property_bytes > end - properties_at) refuse(at, "has more property bytes than it holds");
+    const std::size_t nested_at = properties_at + static_cast<std::size_t>(property_bytes);
+    std::size_t p = properties_at;
+    for (std::uint64_t k = 0; k < properties; ++k) {
+      if (p >= nested_at) refuse(at, "has fewer property bytes than its properties need");
+      const std::size_t size = property_bytes_at(bytes, p + 1, nested_at, bytes[p]);
+      if (size == 0) refuse(at, "has a property of an unknown type or beyond its bytes");
+      p += 1 + size;
+    }
+    if (p != nested_at) refuse(at, "has property bytes that its properties do not fill");
+    if (nested_at < end) {
+      if (end - nested_at < header) refuse(at, "has no room for the null record after its nested records");
+      open.push_back({nested_at, static_cast<std::size_t>(end) - header});
+    }
+    return static_cast<std::size_t>(end);
+  };
+  for (std::size_t at = kFirstRecord; bytes.size() - at >= header && read_le(bytes, at, width) != 0;) {
+    at = enter(at, bytes.size());
+    while (!open.empty()) {
+      const std::size_t list = open.size() - 1;
+      if (open[list].at < open[list].stop) {
+        const std::size_t child = open[list].at;
+        if (read_le(bytes, child, width) == 0) refuse(child, "is a null record before the end of its list");
+        const std::size_t child_end = enter(child, open[list].stop);
+        open[list].at = child_end;  // by index: enter may have grown `open`
+        continue;
+      }
+      const std::size_t stop = open[list].stop;
+      if (open[list].at != stop) refuse(stop, "is overrun by the record before it");
+      for (std::size_t b = stop; b < stop + header; ++b) {
+        if (bytes[b] != 0) refuse(stop, "should be a null record");
+      }
+      open.pop_back();
+    }
+  }
+}
+
 // Every "C" record nested in the top-level "Connections" record of a binary file; what cannot be followed ends
-// the search (assimp then refuses the file itself).
+// the search (check_binary_records refuses such a file first).
 std::vector<Connection> binary_connections(std::string_view bytes) {
   std::vector<Connection> connections;
   if (bytes.size() < kFirstRecord) return connections;
@@ -252,7 +336,13 @@ void check_acyclic_and_shallow(const std::vector<Connection>& connections) {
 bool looks_like_binary_fbx(std::string_view head) { return head.substr(0, kBinaryMagic.size()) == kBinaryMagic; }
 
 void check_fbx_connections(std::string_view file_text) {
-  check_acyclic_and_shallow(looks_like_binary_fbx(file_text) ? binary_connections(file_text) : ascii_connections(file_text));
+  if (!looks_like_binary_fbx(file_text)) {
+    check_acyclic_and_shallow(ascii_connections(file_text));
+    return;
+  }
+  if (file_text.size() < kFirstRecord) throw InputError("is a binary FBX file cut short inside its header");
+  check_binary_records(file_text, read_le(file_text, 23, 4) >= 7500 ? 8 : 4);
+  check_acyclic_and_shallow(binary_connections(file_text));
 }
 
 }  // namespace mesh

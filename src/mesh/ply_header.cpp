@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -40,22 +43,23 @@ long long count_of(std::string_view word) {
   return n;
 }
 
-// Bytes of a PLY scalar type, 0 for an unknown name; `integer` says whether it may count a list.
-int type_bytes(std::string_view type, bool* integer) {
+// Bytes of a PLY scalar type, 0 for an unknown name; `kind` says what it holds: 'i' a signed integer, 'u' an
+// unsigned one (either may count a list), 'f' a floating-point number.
+int type_bytes(std::string_view type, char* kind) {
   struct Type {
     std::string_view name;
     int bytes;
-    bool integer;
+    char kind;
   };
-  static constexpr std::array<Type, 16> kTypes{{{"char", 1, true},    {"uchar", 1, true},   {"short", 2, true},
-                                                {"ushort", 2, true},  {"int", 4, true},     {"uint", 4, true},
-                                                {"float", 4, false},  {"double", 8, false}, {"int8", 1, true},
-                                                {"uint8", 1, true},   {"int16", 2, true},   {"uint16", 2, true},
-                                                {"int32", 4, true},   {"uint32", 4, true},  {"float32", 4, false},
-                                                {"float64", 8, false}}};
+  static constexpr std::array<Type, 16> kTypes{{{"char", 1, 'i'},    {"uchar", 1, 'u'},   {"short", 2, 'i'},
+                                                {"ushort", 2, 'u'},  {"int", 4, 'i'},     {"uint", 4, 'u'},
+                                                {"float", 4, 'f'},   {"double", 8, 'f'},  {"int8", 1, 'i'},
+                                                {"uint8", 1, 'u'},   {"int16", 2, 'i'},   {"uint16", 2, 'u'},
+                                                {"int32", 4, 'i'},   {"uint32", 4, 'u'},  {"float32", 4, 'f'},
+                                                {"float64", 8, 'f'}}};
   for (const Type& t : kTypes) {
     if (t.name == type) {
-      if (integer) *integer = t.integer;
+      if (kind) *kind = t.kind;
       return t.bytes;
     }
   }
@@ -66,6 +70,7 @@ struct Property {
   int bytes = 0;        // a scalar's bytes, or a list item's
   int count_bytes = 0;  // a list's count: 1, 2 or 4 bytes; 0 for a scalar
   bool vertex_indices = false;  // a face's vertex_index (or vertex_indices) list
+  char item_kind = 'u';         // a list item's kind (type_bytes)
 };
 
 struct Element {
@@ -83,9 +88,39 @@ unsigned long long list_count(const unsigned char* p, int bytes, bool big_endian
   return n;
 }
 
+// A binary list item as a double (exact for integers of up to 32 bits).
+double item_value(const unsigned char* p, int bytes, char kind, bool big_endian) {
+  const unsigned long long raw = list_count(p, bytes, big_endian);  // its bytes as an unsigned integer
+  if (kind == 'u') return static_cast<double>(raw);
+  if (kind == 'i') {
+    const unsigned long long sign = 1ULL << (8 * bytes - 1);
+    return static_cast<double>(static_cast<long long>(raw ^ sign) - static_cast<long long>(sign));
+  }
+  if (bytes == 4) {
+    float f;
+    const auto bits = static_cast<std::uint32_t>(raw);
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  }
+  double d;
+  std::memcpy(&d, &raw, sizeof d);
+  return d;
+}
+
+// Throws unless `index`, item `item` of face `row`'s vertex list, names one of the `vertices` the header
+// announces. assimp's PLY reader used such indices before its own validation ran (found by
+// fuzz_mesh_ply_binary: an index past the vertices corrupted the heap, an ASan CHECK failure).
+void check_vertex_index(double index, long long row, long long vertices) {
+  if (index >= 0.0 && index < static_cast<double>(vertices) && index == std::floor(index)) return;
+  char text[160];
+  std::snprintf(text, sizeof text, "has face %lld with the vertex index %.17g, not one of the %lld vertices its header announces",
+                row, index, vertices);
+  throw InputError(text);
+}
+
 // Walks a binary body row by row: every list's count must fit in the bytes that remain (assimp reads past
-// the end of the file otherwise).
-void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian) {
+// the end of the file otherwise), and every face's vertex index must name a vertex.
+void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian, long long vertices) {
   std::size_t at = 0;
   for (const Element& e : elements) {
     for (long long row = 0; row < e.count; ++row) {
@@ -110,6 +145,12 @@ void check_binary_body(std::string_view body, const std::vector<Element>& elemen
         if (n > (body.size() - at) / static_cast<std::size_t>(p.bytes)) {
           throw InputError("has " + e.name + " " + std::to_string(row) + " with a list of " + std::to_string(n) +
                            " items, more than the rest of the file holds");
+        }
+        if (p.vertex_indices) {
+          for (unsigned long long i = 0; i < n; ++i) {
+            const auto* item = reinterpret_cast<const unsigned char*>(body.data() + at + i * static_cast<std::size_t>(p.bytes));
+            check_vertex_index(item_value(item, p.bytes, p.item_kind, big_endian), row, vertices);
+          }
         }
         at += static_cast<std::size_t>(n) * static_cast<std::size_t>(p.bytes);
       }
@@ -156,9 +197,9 @@ bool is_number_word(std::string_view word) {
 
 // Walks an ASCII body line by line, as assimp reads it (one element per line): every line holds exactly the
 // values its element announces, every value a number, every list count a whole number, every face of at
-// least 3 vertices. (A row split over two lines, or a face count that is not a number, made assimp's
+// least 3 vertices, each of which it names. (A row split over two lines, or a face count that is not a number, made assimp's
 // triangulation abort on an ai_assert.)
-void check_ascii_body(std::string_view body, const std::vector<Element>& elements) {
+void check_ascii_body(std::string_view body, const std::vector<Element>& elements, long long vertices) {
   std::size_t at = 0;
   for (const Element& e : elements) {
     for (long long row = 0; row < e.count; ++row) {
@@ -182,7 +223,9 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
         if (p.vertex_indices && n < 3) bad("a face of " + std::to_string(n) + " vertices (expected 3 or more)");
         if (n > static_cast<long long>(words.size() - w)) bad("a list of " + std::to_string(n) + " items, more than its line holds");
         for (long long i = 0; i < n; ++i) {
-          if (!is_number_word(words[w++])) bad("a list item that is not a number");
+          const std::string_view item = words[w++];
+          if (!is_number_word(item)) bad("a list item that is not a number");
+          if (p.vertex_indices) check_vertex_index(std::strtod(std::string(item).c_str(), nullptr), row, vertices);
         }
       }
       if (w != words.size()) bad("more values on its line than its header announces");
@@ -254,16 +297,16 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
     } else if (words[0] == "property") {
       if (elements.empty()) bad("a property before any element");
       Element& element = elements.back();
-      bool integer = false;
+      char count_kind = 'f', item_kind = 'f';
       if (words.size() == 5 && words[1] == "list") {
-        const int count_bytes = type_bytes(words[2], &integer);
-        if (count_bytes == 0 || !integer) bad("expected property list COUNT_TYPE ITEM_TYPE NAME with an integer COUNT_TYPE");
-        const int item_bytes = type_bytes(words[3], nullptr);
+        const int count_bytes = type_bytes(words[2], &count_kind);
+        if (count_bytes == 0 || count_kind == 'f') bad("expected property list COUNT_TYPE ITEM_TYPE NAME with an integer COUNT_TYPE");
+        const int item_bytes = type_bytes(words[3], &item_kind);
         if (item_bytes == 0) bad("unknown item type \"" + std::string(words[3]) + "\"");
         element.row_min_bytes += count_bytes;
-        element.layout.push_back({item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices"});
+        element.layout.push_back({item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices", item_kind});
       } else if (words.size() == 3) {
-        const int bytes = type_bytes(words[1], &integer);
+        const int bytes = type_bytes(words[1], nullptr);
         if (bytes == 0) bad("unknown property type \"" + std::string(words[1]) + "\"");
         element.row_min_bytes += bytes;
         element.layout.push_back({bytes, 0, false});
@@ -298,12 +341,16 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
   const std::uintmax_t body = file_bytes > header_bytes ? file_bytes - header_bytes : 0;
   if (needed > 0.0L) check_body_size(body, needed, announced);
   if (head.size() < file_bytes) throw InputError("is a PLY file that could not be read whole");
+  long long vertices = 0;  // the vertex element's count: what a face's indices may name
+  for (const Element& e : elements) {
+    if (e.name == "vertex") vertices = e.count;
+  }
   if (format == "ascii") {
     const auto header_lines = static_cast<long long>(std::count(header.begin(), header.end(), '\n'));
     check_text_characters(head.substr(header_bytes), header_lines + 1, "body");
-    check_ascii_body(head.substr(header_bytes), elements);
+    check_ascii_body(head.substr(header_bytes), elements, vertices);
   } else {
-    check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian");
+    check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian", vertices);
   }
 }
 
