@@ -46,6 +46,11 @@ std::uint32_t read_u32_le(std::string_view bytes, std::size_t at) {
 // 4 GB) is refused here.
 void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
   if (head.size() < 20) throw InputError("is a binary glTF (GLB) file shorter than its 20-byte header");
+  // Only glTF 2's GLB: a .glb without the magic, or of another version, went to assimp's other glTF reader,
+  // which read past the end of its buffer (found by fuzz_mesh_glb: a 45-byte file, heap-buffer-overflow).
+  if (head.substr(0, 4) != "glTF" || read_u32_le(head, 4) != 2) {
+    throw InputError("is not a binary glTF 2 file (expected the magic \"glTF\" and version 2 in its first 8 bytes)");
+  }
   const std::uint32_t total = read_u32_le(head, 8), chunk = read_u32_le(head, 12);
   if (total > file_bytes || std::uintmax_t{chunk} + 20 > file_bytes) {
     throw InputError("is a binary glTF (GLB) file whose header announces " + std::to_string(total) +
@@ -94,10 +99,10 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   if (head.rfind("glTF", 0) == 0 || extension == ".glb") {
     check_glb_header(head, bytes);
     constexpr std::uint32_t kJsonChunk = 0x4E4F534A;  // "JSON" read as a little-endian uint32 (glTF 2.0 §4.4.3)
-    if (read_u32_le(head, 4) == 2 && read_u32_le(head, 16) != kJsonChunk) {
+    if (read_u32_le(head, 16) != kJsonChunk) {
       throw InputError("is a binary glTF 2 (GLB) file whose first chunk is not its JSON chunk");
     }
-    if (read_u32_le(head, 4) == 2) check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20));  // the JSON chunk
+    check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20));  // the JSON chunk
   }
   if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
   if (extension == ".obj") check_obj_vertices_come_first(file);
