@@ -100,8 +100,10 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx after 398,575 executions: a binary FBX whose records' offsets and lengths are
         // garbled; assimp 5.2's binary tokenizer aborted on an ai_assert (begin <= cursor).
         HostileMesh{"fbx_binary_record_offsets_garbled.fbx", "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
-        // found by fuzz_mesh_ply_binary after 138,588 executions: a face index (246) past the 8 vertices, which
-        // assimp's PLY reader used before its own validation (a heap corruption: ASan's allocator CHECK failed).
+        // the last input of a fuzz_mesh_ply_binary run that ended on a corrupted heap (ASan's allocator CHECK failed,
+        // after 138,588 executions): a face index (246) past the 8 vertices. Alone it corrupts nothing (assimp's
+        // validation refuses it), so the corruption came from an earlier input of that run and is not found; such
+        // an index is refused before assimp reads the file all the same.
         HostileMesh{"ply_binary_index_past_the_vertices_heap.ply", "has face 11 with the vertex index 246, not one of the 8 vertices its header announces"},
         // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
         // reader read past the end of its line buffer (heap-buffer-overflow in strtol).

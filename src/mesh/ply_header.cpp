@@ -107,9 +107,10 @@ double item_value(const unsigned char* p, int bytes, char kind, bool big_endian)
   return d;
 }
 
-// Throws unless `index`, item `item` of face `row`'s vertex list, names one of the `vertices` the header
-// announces. assimp's PLY reader used such indices before its own validation ran (found by
-// fuzz_mesh_ply_binary: an index past the vertices corrupted the heap, an ASan CHECK failure).
+// Throws unless `index`, an item of face `row`'s vertex list, names one of the `vertices` the header announces:
+// every format's indices are checked after assimp reads the file, a PLY's before too, so that assimp's PLY
+// reader never holds one past its vertices (a fuzz_mesh_ply_binary run that ended on a corrupted heap had
+// such a face as its last input; alone it corrupts nothing, and the cause is not found).
 void check_vertex_index(double index, long long row, long long vertices) {
   if (index >= 0.0 && index < static_cast<double>(vertices) && index == std::floor(index)) return;
   char text[160];
