@@ -100,6 +100,9 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx after 398,575 executions: a binary FBX whose records' offsets and lengths are
         // garbled; assimp 5.2's binary tokenizer aborted on an ai_assert (begin <= cursor).
         HostileMesh{"fbx_binary_record_offsets_garbled.fbx", "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
+        // found by fuzz_mesh_fbx after 201,669 executions: a Model with a time (KTime) property, on which assimp
+        // 5.2's FBX converter aborts (ai_assert(false) in FBXConverter.cpp:888, also without sanitizers).
+        HostileMesh{"fbx_model_time_property.fbx", "with a Model whose property \"TimeSpanStart\" is a time (KTime)"},
         // the last input of a fuzz_mesh_ply_binary run that ended on a corrupted heap (ASan's allocator CHECK failed,
         // after 138,588 executions): a face index (246) past the 8 vertices. Alone it corrupts nothing (assimp's
         // validation refuses it), so the corruption came from an earlier input of that run and is not found; such
@@ -206,6 +209,12 @@ TEST(HostileMesh, FbxConnectionsMustNotCycleOrNestTooDeep) {
   };
   EXPECT_EQ(fbx_refusal(chain(mesh::kMostFbxConnectionLevels)), "");
   EXPECT_NE(fbx_refusal(chain(mesh::kMostFbxConnectionLevels + 1)).find("nested more than 1000 levels deep"), std::string::npos);
+  // A time property on a Model is refused; the same in GlobalSettings (every exporter writes TimeSpanStart there) is not.
+  const std::string model_time = "Objects:  {\n\tModel: 1, \"Model::a\", \"Mesh\" {\n\t\tProperties70:  {\n"
+                                 "\t\t\tP: \"Stop\", \"KTime\", \"Time\", \"\", 5\n\t\t}\n\t}\n}\n";
+  EXPECT_NE(fbx_refusal(model_time).find("a Model whose property \"Stop\" is a time (KTime)"), std::string::npos);
+  EXPECT_EQ(fbx_refusal(fbx_with_connections("").replace(fbx_with_connections("").find("\"UpAxis\", \"int\""), 13,
+                                                         "\"Stop\", \"KTime\"")), "");
   // Connections outside the Connections section are not connections.
   EXPECT_EQ(fbx_refusal("Objects:  {\n\tC: \"OO\", 5, 5\n}\nConnections:  {\n}\n"), "");
 }

@@ -81,6 +81,34 @@ bool parse_id(std::string_view word, long long& id) {
   return end == text.c_str() + text.size();
 }
 
+// assimp 5.2's FBX converter copies a Model's properties into its node's metadata and aborts on an
+// ai_assert(false) at a time (KTime) property, which it has no metadata type for (found by fuzz_mesh_fbx).
+[[noreturn]] void refuse_model_time_property(std::string_view name) {
+  throw InputError("is an FBX file with a Model whose property \"" + std::string(name.substr(0, 40)) +
+                   "\" is a time (KTime), which assimp's reader cannot convert (it aborts)");
+}
+
+// Throws at a `P: "name", "KTime", ...` inside `Objects: { Model: ... { Properties70: { ... } } }`.
+void check_ascii_model_properties(std::string_view text) {
+  AsciiTokens tokens(text);
+  std::vector<std::string_view> blocks;  // the key that opened each enclosing { }
+  std::string_view key, token;
+  while (tokens.next(token)) {
+    if (token == "{") {
+      blocks.push_back(key);
+    } else if (token == "}") {
+      if (!blocks.empty()) blocks.pop_back();
+    } else if (!token.empty() && token.back() == ':' && (token.size() < 2 || token[0] != '"')) {
+      key = token;
+      if (token == "P:" && blocks.size() == 3 && blocks[0] == "Objects:" && blocks[1] == "Model:" &&
+          blocks[2] == "Properties70:") {
+        std::string_view name, type;
+        if (tokens.next(name) && tokens.next(type) && type == "KTime") refuse_model_time_property(name);
+      }
+    }
+  }
+}
+
 // Every `C: "TYPE", child, parent` inside the top-level `Connections: { ... }` of an ASCII file.
 std::vector<Connection> ascii_connections(std::string_view text) {
   std::vector<Connection> connections;
@@ -278,6 +306,43 @@ std::vector<Connection> binary_connections(std::string_view bytes) {
   return connections;
 }
 
+// The first two string properties of a record (a P record's name and type), empty where it has none.
+std::pair<std::string_view, std::string_view> first_two_strings(std::string_view bytes, const Record& record) {
+  std::string_view found[2];
+  std::size_t at = record.properties_at;
+  for (int k = 0; k < 2 && at + 5 <= record.nested_at && (bytes[at] == 'S' || bytes[at] == 'R'); ++k) {
+    const std::uint64_t length = read_le(bytes, at + 1, 4);
+    if (length > record.nested_at - at - 5) break;
+    found[k] = bytes.substr(at + 5, static_cast<std::size_t>(length));
+    at += 5 + static_cast<std::size_t>(length);
+  }
+  return {found[0], found[1]};
+}
+
+// The binary form of check_ascii_model_properties: Objects / Model / Properties70 / P records.
+void check_binary_model_properties(std::string_view bytes, std::size_t width) {
+  auto each_child = [&](const Record& parent, auto&& use) {
+    Record child;
+    for (std::size_t c = parent.nested_at; read_record(bytes, c, parent.end, width, child) && child.end != 0; c = child.end) {
+      use(child);
+    }
+  };
+  Record top;
+  for (std::size_t at = kFirstRecord; read_record(bytes, at, bytes.size(), width, top) && top.end != 0; at = top.end) {
+    if (top.name != "Objects") continue;
+    each_child(top, [&](const Record& model) {
+      if (model.name != "Model") return;
+      each_child(model, [&](const Record& table) {
+        if (table.name != "Properties70") return;
+        each_child(table, [&](const Record& property) {
+          const auto [name, type] = first_two_strings(bytes, property);
+          if (property.name == "P" && type == "KTime") refuse_model_time_property(name);
+        });
+      });
+    });
+  }
+}
+
 // ---- The object graph ----
 
 // Throws if following child → parent links from any object comes back to it, or passes more than
@@ -337,11 +402,14 @@ bool looks_like_binary_fbx(std::string_view head) { return head.substr(0, kBinar
 
 void check_fbx_connections(std::string_view file_text) {
   if (!looks_like_binary_fbx(file_text)) {
+    check_ascii_model_properties(file_text);
     check_acyclic_and_shallow(ascii_connections(file_text));
     return;
   }
   if (file_text.size() < kFirstRecord) throw InputError("is a binary FBX file cut short inside its header");
-  check_binary_records(file_text, read_le(file_text, 23, 4) >= 7500 ? 8 : 4);
+  const std::size_t width = read_le(file_text, 23, 4) >= 7500 ? 8 : 4;
+  check_binary_records(file_text, width);
+  check_binary_model_properties(file_text, width);
   check_acyclic_and_shallow(binary_connections(file_text));
 }
 
