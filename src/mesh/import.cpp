@@ -107,7 +107,7 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
   if (extension == ".obj") check_obj_vertices_come_first(file);
   if (extension == ".fbx" || looks_like_binary_fbx(head) || head.find("FBXHeaderExtension") != std::string::npos) {
-    check_fbx_connections(head_of(file, bytes));
+    check_fbx_file(head_of(file, bytes));
   }
 }
 

@@ -187,12 +187,13 @@ std::size_t end_header_line(std::string_view head) {
 }
 
 // A number as PLY text holds it: an optional sign, digits, '.', an exponent (and inf/nan, which are refused
-// later as coordinates).
-bool is_number_word(std::string_view word) {
+// later as coordinates); its value in `value` when given.
+bool is_number_word(std::string_view word, double* value = nullptr) {
   if (word.empty() || word.size() > 64) return false;
   const std::string text(word);
   char* end = nullptr;
-  std::strtod(text.c_str(), &end);
+  const double number = std::strtod(text.c_str(), &end);
+  if (value) *value = number;
   return end == text.c_str() + text.size();
 }
 
@@ -225,8 +226,9 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
         if (n > static_cast<long long>(words.size() - w)) bad("a list of " + std::to_string(n) + " items, more than its line holds");
         for (long long i = 0; i < n; ++i) {
           const std::string_view item = words[w++];
-          if (!is_number_word(item)) bad("a list item that is not a number");
-          if (p.vertex_indices) check_vertex_index(std::strtod(std::string(item).c_str(), nullptr), row, vertices);
+          double value = 0.0;
+          if (!is_number_word(item, &value)) bad("a list item that is not a number");
+          if (p.vertex_indices) check_vertex_index(value, row, vertices);
         }
       }
       if (w != words.size()) bad("more values on its line than its header announces");
