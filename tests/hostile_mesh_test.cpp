@@ -100,6 +100,10 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx after 398,575 executions: a binary FBX whose records' offsets and lengths are
         // garbled; assimp 5.2's binary tokenizer aborted on an ai_assert (begin <= cursor).
         HostileMesh{"fbx_binary_record_offsets_garbled.fbx", "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
+        // found by fuzz_mesh_fbx after 194,662 executions: a binary FBX whose magic reads "Kaydara FBX Binary$ ": the
+        // check took it for ASCII, assimp (which tests 18 bytes) for binary, and its tokenizer aborted on an ai_assert
+        // (begin <= cursor).
+        HostileMesh{"fbx_binary_magic_altered.fbx", "is a binary FBX file whose record at byte 348 has more property bytes than it holds"},
         // found by fuzz_mesh_fbx after 201,669 executions: a Model with a time (KTime) property, on which assimp
         // 5.2's FBX converter aborts (ai_assert(false) in FBXConverter.cpp:888, also without sanitizers).
         HostileMesh{"fbx_model_time_property.fbx", "with a Model whose property \"TimeSpanStart\" is a time (KTime)"},

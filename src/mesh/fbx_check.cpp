@@ -137,7 +137,10 @@ std::vector<Connection> read_ascii(std::string_view text) {
 
 // ---- Binary FBX: node records (Kaydara's layout, as assimp 5.2 reads it) ----
 
-constexpr std::string_view kBinaryMagic{"Kaydara FBX Binary  \0", 21};
+// assimp takes a file for binary when it starts with these 18 bytes (FBXImporter.cpp), whatever the 3 after them
+// (found by fuzz_mesh_fbx: a file starting "Kaydara FBX Binary$ " passed the check as ASCII, then aborted assimp's
+// binary tokenizer); the full magic is these and "  \0".
+constexpr std::string_view kBinaryMagic{"Kaydara FBX Binary"};
 constexpr std::size_t kFirstRecord = 27;  // the magic, 0x1A 0x00, the uint32 version
 
 std::uint64_t read_le(std::string_view bytes, std::size_t at, std::size_t width) {
