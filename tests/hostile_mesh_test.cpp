@@ -107,6 +107,11 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx after 201,669 executions: a Model with a time (KTime) property, on which assimp
         // 5.2's FBX converter aborts (ai_assert(false) in FBXConverter.cpp:888, also without sanitizers).
         HostileMesh{"fbx_model_time_property.fbx", "with a Model whose property \"TimeSpanStart\" is a time (KTime)"},
+        // the heap overwrite behind the fuzz_mesh_ply_binary runs that ended on a corrupted heap, found with assimp
+        // built with ASan (scripts/build-assimp-asan): assimp 5.2 sizes its vertex and face arrays by the first
+        // "vertex" and "face" elements and writes a second one's rows past their end (text and binary alike).
+        HostileMesh{"ply_two_vertex_elements.ply", "line 7: a second element of vertices or faces (\"vertex\" after \"vertex\")"},
+        HostileMesh{"ply_binary_two_face_elements.ply", "a second element of vertices or faces (\"face\" after \"face\")"},
         // the last input of a fuzz_mesh_ply_binary run that ended on a corrupted heap (ASan's allocator CHECK failed,
         // after 138,588 executions): a face index (246) past the 8 vertices. Alone it corrupts nothing (assimp's
         // validation refuses it), so the corruption came from an earlier input of that run and is not found; such

@@ -119,6 +119,11 @@ void check_vertex_index(double index, long long row, long long vertices) {
   throw InputError(text);
 }
 
+// The element names assimp 5.2 reads into its mesh's one vertex array ("vertex") or one face array ("face",
+// "tristrips").
+bool is_face_list(std::string_view name) { return name == "face" || name == "tristrips"; }
+bool is_assimp_array(std::string_view name) { return name == "vertex" || is_face_list(name); }
+
 // Walks a binary body row by row: every list's count must fit in the bytes that remain (assimp reads past
 // the end of the file otherwise), and every face's vertex index must name a vertex.
 void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian, long long vertices) {
@@ -296,6 +301,18 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
       // 99999999999vertex 0" made it allocate 103 GB).
       const auto first = static_cast<unsigned char>(words[1][0]);
       if (!std::isalpha(first) && first != '_') bad("expected element NAME COUNT with a NAME that starts with a letter");
+      // assimp keeps one vertex array and one face array, sized by the first "vertex" and the first "face" or
+      // "tristrips" element, and writes a later one's rows past their end (a heap overwrite: the fuzzers' heap
+      // corruption, shown by an assimp built with ASan, scripts/build-assimp-asan).
+      const auto same_storage = [&](const Element& e) {
+        return e.name == words[1] || (is_face_list(e.name) && is_face_list(words[1]));
+      };
+      if (is_assimp_array(words[1])) {
+        if (const auto before = std::find_if(elements.begin(), elements.end(), same_storage); before != elements.end()) {
+          bad("a second element of vertices or faces (\"" + std::string(words[1]) + "\" after \"" + before->name +
+              "\"): a PLY file has one of each");
+        }
+      }
       elements.push_back({std::string(words[1]), count_of(words[2]), 0, 0, {}});
     } else if (words[0] == "property") {
       if (elements.empty()) bad("a property before any element");
