@@ -370,6 +370,15 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
     check_text_characters(head.substr(header_bytes), header_lines + 1, "body");
     check_ascii_body(head.substr(header_bytes), elements, vertices);
   } else {
+    // assimp 5.2 drops a line feed that starts the binary data, meant for the LF of an "end_header" CR LF, also
+    // after a plain LF, and reads every value one byte off (found by fuzz_mesh_ply_binary: a face list then
+    // aborted its triangulation on an ai_assert). A real file whose first byte of data is 0x0A would be misread.
+    const bool ends_with_cr_lf = header_bytes >= 2 && head[header_bytes - 2] == '\r';
+    if (!ends_with_cr_lf && header_bytes < head.size() && head[header_bytes] == '\n') {
+      throw InputError("is a binary PLY file whose data starts with the byte 0x0A after \"end_header\" and a line feed, "
+                       "which assimp 5.2 drops, reading every value one byte off (end the header with CR LF, or "
+                       "convert the file to ASCII PLY or OBJ)");
+    }
     check_binary_body(head.substr(header_bytes), elements, format == "binary_big_endian", vertices);
   }
 }
