@@ -107,9 +107,9 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_fbx after 201,669 executions: a Model with a time (KTime) property, on which assimp
         // 5.2's FBX converter aborts (ai_assert(false) in FBXConverter.cpp:888, also without sanitizers).
         HostileMesh{"fbx_model_time_property.fbx", "with a Model whose property \"TimeSpanStart\" is a time (KTime)"},
-        // the heap overwrite behind the fuzz_mesh_ply_binary runs that ended on a corrupted heap, found with assimp
-        // built with ASan (scripts/build-assimp-asan): assimp 5.2 sizes its vertex and face arrays by the first
-        // "vertex" and "face" elements and writes a second one's rows past their end (text and binary alike).
+        // a heap overwrite shown by assimp built with ASan (scripts/build-assimp-asan), most likely the one behind the
+        // fuzz_mesh_ply_binary runs that ended on a corrupted heap: assimp 5.2 sizes its vertex and face arrays by
+        // the first "vertex" and "face" elements and writes a second one's rows past their end (text and binary alike).
         HostileMesh{"ply_two_vertex_elements.ply", "line 7: a second element of vertices or faces (\"vertex\" after \"vertex\")"},
         HostileMesh{"ply_binary_two_face_elements.ply", "a second element of vertices or faces (\"face\" after \"face\")"},
         // found by fuzz_mesh_ply_binary (with assimp built with ASan) after 177,049 executions: binary data that
@@ -118,8 +118,8 @@ INSTANTIATE_TEST_SUITE_P(
         HostileMesh{"ply_binary_data_starts_with_line_feed.ply", "whose data starts with the byte 0x0A after \"end_header\" and a line feed"},
         // the last input of a fuzz_mesh_ply_binary run that ended on a corrupted heap (ASan's allocator CHECK failed,
         // after 138,588 executions): a face index (246) past the 8 vertices. Alone it corrupts nothing (assimp's
-        // validation refuses it), so the corruption came from an earlier input of that run and is not found; such
-        // an index is refused before assimp reads the file all the same.
+        // validation refuses it), so the corruption came from an earlier input of that run (most likely a second
+        // vertex or face element, above); such an index is refused before assimp reads the file all the same.
         HostileMesh{"ply_binary_index_past_the_vertices_heap.ply", "has face 11 with the vertex index 246, not one of the 8 vertices its header announces"},
         // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
         // reader read past the end of its line buffer (heap-buffer-overflow in strtol).

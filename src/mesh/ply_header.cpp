@@ -119,10 +119,12 @@ void check_vertex_index(double index, long long row, long long vertices) {
   throw InputError(text);
 }
 
-// The element names assimp 5.2 reads into its mesh's one vertex array ("vertex") or one face array ("face",
-// "tristrips").
-bool is_face_list(std::string_view name) { return name == "face" || name == "tristrips"; }
-bool is_assimp_array(std::string_view name) { return name == "vertex" || is_face_list(name); }
+// Which of assimp 5.2's two mesh arrays an element fills: "vertex", "face" (for "face" and "tristrips"), or none ("").
+std::string_view assimp_array_of(std::string_view element) {
+  if (element == "vertex") return "vertex";
+  if (element == "face" || element == "tristrips") return "face";
+  return "";
+}
 
 // Walks a binary body row by row: every list's count must fit in the bytes that remain (assimp reads past
 // the end of the file otherwise), and every face's vertex index must name a vertex.
@@ -301,14 +303,12 @@ void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const Me
       // 99999999999vertex 0" made it allocate 103 GB).
       const auto first = static_cast<unsigned char>(words[1][0]);
       if (!std::isalpha(first) && first != '_') bad("expected element NAME COUNT with a NAME that starts with a letter");
-      // assimp keeps one vertex array and one face array, sized by the first "vertex" and the first "face" or
-      // "tristrips" element, and writes a later one's rows past their end (a heap overwrite: the fuzzers' heap
-      // corruption, shown by an assimp built with ASan, scripts/build-assimp-asan).
-      const auto same_storage = [&](const Element& e) {
-        return e.name == words[1] || (is_face_list(e.name) && is_face_list(words[1]));
-      };
-      if (is_assimp_array(words[1])) {
-        if (const auto before = std::find_if(elements.begin(), elements.end(), same_storage); before != elements.end()) {
+      // assimp keeps one vertex array and one face array, sized by the first element that fills each, and writes
+      // a later one's rows past their end (a heap overwrite, shown by an assimp built with ASan,
+      // scripts/build-assimp-asan; most likely the fuzzers' earlier heap corruption).
+      if (const std::string_view array = assimp_array_of(words[1]); !array.empty()) {
+        const auto same_array = [&](const Element& e) { return assimp_array_of(e.name) == array; };
+        if (const auto before = std::find_if(elements.begin(), elements.end(), same_array); before != elements.end()) {
           bad("a second element of vertices or faces (\"" + std::string(words[1]) + "\" after \"" + before->name +
               "\"): a PLY file has one of each");
         }
