@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -78,7 +79,8 @@ void check_obj_vertices_come_first(const std::filesystem::path& file) {
 }
 
 // What must hold before assimp opens the file (its readers trust sizes and counts that headers announce).
-void check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
+// Returns the bytes assimp must read instead of the file, where the file alone would be misread (empty: the file).
+std::string check_before_reading(const std::filesystem::path& file, const MeshLimits& limits) {
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
     throw InputError(words + " (expected a regular mesh file)");
   }
@@ -94,7 +96,14 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   // By content or by name: assimp picks its reader by either (and loops on a .ply that has no PLY header).
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (looks_like_ply(head) || extension == ".ply") check_ply_header(head_of(file, bytes), bytes, limits);  // body too
+  std::string bytes_for_assimp;
+  if (looks_like_ply(head) || extension == ".ply") {
+    std::string whole = head_of(file, bytes);
+    if (const std::size_t at = check_ply_header(whole, bytes, limits); at != std::string::npos) {
+      whole.insert(at, 1, '\n');  // the line feed assimp drops (see check_ply_header)
+      bytes_for_assimp = std::move(whole);
+    }
+  }
   if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
   if (head.rfind("glTF", 0) == 0 || extension == ".glb") {
     check_glb_header(head, bytes);
@@ -109,6 +118,7 @@ void check_before_reading(const std::filesystem::path& file, const MeshLimits& l
   if (extension == ".fbx" || looks_like_binary_fbx(head) || head.find("FBXHeaderExtension") != std::string::npos) {
     check_fbx_file(head_of(file, bytes));
   }
+  return bytes_for_assimp;
 }
 
 // (No vertex number in the message: assimp renumbers the vertices of some formats, OBJ among them.)
@@ -137,7 +147,7 @@ CornerUvs corner_uvs_of(const aiMesh& part, const aiFace& face) {
 }  // namespace
 
 TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& limits) {
-  check_before_reading(file, limits);
+  const std::string bytes_for_assimp = check_before_reading(file, limits);
   Assimp::Importer importer;
   // Points and lines carry no surface: drop them. Normals and materials are not needed; the first UV channel is
   // kept per corner (assimp splits a vertex on a UV seam into one per side, and the weld joins them again).
@@ -145,7 +155,9 @@ TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& li
   // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
   // (triangulation reads the vertices a polygon's indices name).
   const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
-  const aiScene* scene = importer.ReadFile(file.string(), flags);
+  const aiScene* scene = bytes_for_assimp.empty() ? importer.ReadFile(file.string(), flags)
+                                                  : importer.ReadFileFromMemory(bytes_for_assimp.data(), bytes_for_assimp.size(),
+                                                                                flags, "ply");
   if (scene == nullptr) throw InputError("cannot be read as a mesh: " + std::string(importer.GetErrorString()));
   TriMesh mesh;
   long long vertices = 0, triangles = 0;

@@ -3,6 +3,7 @@
 // checked here first.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -21,7 +22,11 @@ bool looks_like_ply(std::string_view head);
 // with a decimal count and at least one property of a known type, list counts of an integer type, an
 // end_header line; vertex and face counts within `limits`; and a body (file_bytes minus the header) large
 // enough to hold what the header announces.
-void check_ply_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits);
+// Returns where assimp must be given one extra line feed (std::string_view::npos: nowhere): right after the
+// header of a binary file whose header ends with a plain LF and whose data starts with the byte 0x0A. assimp 5.2
+// drops a 0x0A that starts binary data (meant for the LF of an "end_header" CR LF) and would read every value
+// one byte off; with one more LF there, it drops that one and reads the data as written.
+std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits);
 
 // True when `head` starts an OFF file ("OFF", "COFF", "NOFF", ... then whitespace).
 bool looks_like_off(std::string_view head);
