@@ -363,6 +363,7 @@ sim::BodyContact read_collisions(ObjectReader& top) {
       "contact", collisions.contact, {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
   collisions.material.restitution = r.number("restitution", collisions.material.restitution, kUnitInterval);
   collisions.material.friction = r.number("friction", collisions.material.friction, kNonNegative);
+  collisions.push_speed_m_per_s = r.number("push_speed", collisions.push_speed_m_per_s, kPositive);
   read_smooth_contact(r, collisions.smooth);
   r.reject_unknown();
   return collisions;

@@ -128,24 +128,27 @@ struct Contact {
   Vec3 weights;                  // barycentric weights of the closest point
   Vec3 normal;                   // the surface's outward unit normal
   double depth;                  // how far the vertex must move along the normal to sit `thickness` outside
-  double max_push;               // the most it is moved in one step
 };
 
-// Applies one contact: positions moved apart along the normal and a normal (restitution) plus tangential
-// (Coulomb) impulse, both split between the vertex and the triangle's corners by inverse mass and
-// barycentric weight. The vertex gets +J, the corners −w_k J, so momentum is conserved exactly.
+// Applies one contact: the vertex moved out along the normal (by its whole depth, or within the push limit and
+// `edge_cap_m`: sim::PushLimit) and a normal (restitution) plus tangential (Coulomb) impulse, both split between
+// the vertex and the triangle's corners by inverse mass and barycentric weight. The vertex gets +J, the corners
+// −w_k J, so momentum is conserved exactly.
 void apply_contact(const Contact& c, std::span<const double> inverse_mass, State& state,
-                   const ContactMaterial& material) {
+                   const ContactMaterial& material, const PushLimit& push, double edge_cap_m) {
   const double inv_p = inverse_mass[c.vertex];
   double denominator = inv_p;  // 1 / effective mass of the relative normal motion
   for (int k = 0; k < 3; ++k) denominator += c.weights[k] * c.weights[k] * inverse_mass[c.corners[k]];
 
-  state.x[c.vertex] += std::min(c.depth, c.max_push) * c.normal;
-
   Vec3 surface_velocity = Vec3::Zero();
   for (int k = 0; k < 3; ++k) surface_velocity += c.weights[k] * state.v[c.corners[k]];
   const Vec3 relative = state.v[c.vertex] - surface_velocity;
-  const double normal_speed = relative.dot(c.normal);
+  const double normal_speed = relative.dot(c.normal);  // < 0: approaching
+
+  // This step's travel into the surface, (−v_n) h, and the push speed's share of what was there before [m].
+  const double allowed = (std::max(-normal_speed, 0.0) + push.push_speed_m_per_s) * push.step_s;
+  state.x[c.vertex] += (push.whole_depth ? c.depth : std::min({c.depth, edge_cap_m, allowed})) * c.normal;
+
   if (normal_speed >= 0.0) return;  // separating already
   const double target = separating_speed(normal_speed, material);
   const double normal_impulse = (target - normal_speed) / denominator;  // kg·m/s
@@ -216,7 +219,7 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
 
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
-                                                     const ContactMaterial& material, bool full_push) {
+                                                     const ContactMaterial& material, const PushLimit& push) {
   const double edge = surface.rest.mean_edge_m;
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
   const Vec3* x_surface = state.x.data() + surface.first_vertex;
@@ -229,8 +232,8 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     if (height >= thickness) return;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
-                          best.weights, normal, thickness - height, full_push ? thickness - height : 0.1 * search};
-    apply_contact(contact, inverse_mass, state, material);
+                          best.weights, normal, thickness - height};
+    apply_contact(contact, inverse_mass, state, material, push, 0.1 * search);
     ++contacts;
   });
   return contacts;
@@ -313,11 +316,11 @@ int BodyCollider::for_each_touching_pair(const std::vector<Body>& bodies, Visit 
 }
 
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-                          const ContactMaterial& material, bool full_push) {
+                          const ContactMaterial& material, const PushLimit& push) {
   if (bodies.size() < 2) return 0;
   compute_boxes(bodies, state.x);
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
-    return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material, full_push);
+    return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material, push);
   });
 }
 

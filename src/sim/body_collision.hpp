@@ -18,14 +18,26 @@
 
 namespace sim {
 
+// How far the impulse model moves a vertex out of another body after a step of `step_s`. With `whole_depth`
+// (position-based integrators, whose contacts are constraints of each substep): all of it. Otherwise at most a
+// twentieth of the surface's mean edge, and at most the depth that step carried it in (its approach speed,
+// relative to the triangle, times the step) plus `push_speed_m_per_s` times the step of any depth it had before
+// (an overlap it started with, or one that contacts left). A push moves a vertex without a force, against its
+// springs and gas: the twentieth of an edge alone (about 150 m/s at the explicit steps of 1 cm edges) pushed an
+// old overlap out so fast that bodies started pressed together flew apart (issue 17's teapot lid).
+struct PushLimit {
+  double step_s = 0.0;
+  double push_speed_m_per_s = 0.1;
+  bool whole_depth = false;
+};
+
 class BodyCollider {
  public:
   // Resolves the contacts of every pair of bodies; returns how many vertex–triangle contacts it resolved.
-  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass). A vertex is pushed out by at
-  // most a twentieth of the surface's mean edge per call, or, with `full_push` (position-based integrators,
-  // whose next substep derives velocities from positions), by its whole depth.
+  // `inverse_mass`: per vertex of `state`, all bodies (the model's inverse_mass); `push`: how far a vertex is
+  // moved out in this call.
   int resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
-              const ContactMaterial& material, bool full_push = false);
+              const ContactMaterial& material, const PushLimit& push);
 
   // The smooth model: for every vertex of each body within the contact's skin δ of the nearest triangle of
   // another body (or inside it, up to half an edge deep), a penalty spring-damper on the penetration
@@ -71,7 +83,7 @@ class BodyCollider {
   template <class Visit>
   void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
-                                         State& state, const ContactMaterial& material, bool full_push);
+                                         State& state, const ContactMaterial& material, const PushLimit& push);
   // The frame of `vertex` against its nearest triangle `best` of `surface`.
   static SmoothFrame smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best, double search);
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,

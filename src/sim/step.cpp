@@ -26,12 +26,12 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
   return 0.0;
 }
 
-// Phase 2: impulses between bodies (a single body does no search; the smooth contact is a force inside
-// phase 1). Returns the contacts resolved.
-int resolve_body_contacts(const Model& model, State& state, Workspace& workspace) {
+// Phase 2: impulses between bodies after a step of h (a single body does no search; the smooth contact is a
+// force inside phase 1). Returns the contacts resolved.
+int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
-  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material,
-                                    /*full_push=*/integrator_info(model.solver.integrator).position_based);
+  const PushLimit push{h, model.body_contact.push_speed_m_per_s, integrator_info(model.solver.integrator).position_based};
+  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material, push);
 }
 
 // Phase 3: the floor's contact model, after every step of h (xpbd: every substep). Returns the vertices it
@@ -75,7 +75,7 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
 // Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
 void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
-  const int touched = resolve_body_contacts(model, state, workspace) + resolve_floor(model, state, workspace, h);
+  const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h);
   if (touched > 0) state.carry.acceleration.clear();
 }
 
