@@ -94,7 +94,7 @@ TEST(BodyCollision, AnInitialOverlapIsPushedOutWithoutAddingEnergy) {
   const auto [gained, apart] = run(R"({ "restitution": 0.0, "friction": 0.0 })");
   EXPECT_LT(gained, 0.0) << "J: the default push speed (0.1 m/s) adds less than the impulses take";
   EXPECT_GT(apart, 2.2) << "m between the centres: the unit balls no longer overlap";
-  const auto [gained_fast, apart_fast] = run(R"({ "restitution": 0.0, "friction": 0.0, "push_speed": 1e9 })");
+  const double gained_fast = run(R"({ "restitution": 0.0, "friction": 0.0, "push_speed": 1e9 })").first;
   EXPECT_GT(gained_fast, 1.0) << "J: pushes limited only by a twentieth of the edge per step (the old rule) add energy";
 }
 

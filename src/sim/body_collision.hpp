@@ -25,9 +25,10 @@ namespace sim {
 // (an overlap it started with, or one that contacts left). A push moves a vertex without a force, against its
 // springs and gas: the twentieth of an edge alone (about 150 m/s at the explicit steps of 1 cm edges) pushed an
 // old overlap out so fast that bodies started pressed together flew apart (issue 17's teapot lid).
+// Built from the model for each step (sim/step.cpp): collisions.push_speed's default lives in sim::BodyContact.
 struct PushLimit {
   double step_s = 0.0;
-  double push_speed_m_per_s = 0.1;
+  double push_speed_m_per_s = 0.0;
   bool whole_depth = false;
 };
 
