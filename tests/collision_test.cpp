@@ -72,7 +72,7 @@ TEST(BodyCollision, NoVertexEndsInsideAnotherBody) {
 // Two balls started 10 cm into each other, with no gravity, floor, damping, restitution or friction: only the
 // contact moves them apart. A push moves a vertex without a force, against its springs and gas, so it adds
 // energy about in proportion to its speed (measured over this 1 s: +1.347 J with the old limit alone, a twentieth
-// of the mean edge per step; at push speeds of 1, 0.3, 0.1 and 0.03 m/s: +0.306, +0.107, -0.008, -0.043 J). At the
+// of the mean edge per step; at push speeds of 1, 0.3, 0.1 and 0.03 m/s: +0.301, +0.108, -0.005, -0.042 J). At the
 // default push speed the impulses take more than the pushes add, and the balls come apart all the same.
 TEST(BodyCollision, AnInitialOverlapIsPushedOutWithoutAddingEnergy) {
   const auto run = [](const std::string& collisions) {

@@ -130,12 +130,13 @@ struct Contact {
   double depth;                  // how far the vertex must move along the normal to sit `thickness` outside
 };
 
-// Applies one contact: the vertex moved out along the normal (by its whole depth, or within the push limit and
-// `edge_cap_m`: sim::PushLimit) and a normal (restitution) plus tangential (Coulomb) impulse, both split between
+// Applies one contact: the vertex moved out along the normal (within the push limit, sim::PushLimit, and for an
+// edge-capped push `edge_cap_m`; `step_velocity`: every vertex's velocity before this call) and a normal (restitution) plus tangential (Coulomb) impulse, both split between
 // the vertex and the triangle's corners by inverse mass and barycentric weight. The vertex gets +J, the corners
 // −w_k J, so momentum is conserved exactly.
 void apply_contact(const Contact& c, std::span<const double> inverse_mass, State& state,
-                   const ContactMaterial& material, const PushLimit& push, double edge_cap_m) {
+                   std::span<const Vec3> step_velocity, const ContactMaterial& material, const PushLimit& push,
+                   double edge_cap_m) {
   const double inv_p = inverse_mass[c.vertex];
   double denominator = inv_p;  // 1 / effective mass of the relative normal motion
   for (int k = 0; k < 3; ++k) denominator += c.weights[k] * c.weights[k] * inverse_mass[c.corners[k]];
@@ -145,9 +146,13 @@ void apply_contact(const Contact& c, std::span<const double> inverse_mass, State
   const Vec3 relative = state.v[c.vertex] - surface_velocity;
   const double normal_speed = relative.dot(c.normal);  // < 0: approaching
 
-  // This step's travel into the surface, (−v_n) h, and the push speed's share of what was there before [m].
-  const double allowed = (std::max(-normal_speed, 0.0) + push.push_speed_m_per_s) * push.step_s;
-  state.x[c.vertex] += (push.whole_depth ? c.depth : std::min({c.depth, edge_cap_m, allowed})) * c.normal;
+  // This step's travel into the surface, (−v_n) h with the velocities before this call's impulses (those of
+  // earlier contacts change v, not the step's travel), and the push speed's share of what was there before [m].
+  Vec3 surface_step_velocity = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) surface_step_velocity += c.weights[k] * step_velocity[c.corners[k]];
+  const double step_normal_speed = (step_velocity[c.vertex] - surface_step_velocity).dot(c.normal);
+  const double allowed = (std::max(-step_normal_speed, 0.0) + push.push_speed_m_per_s) * push.step_s;
+  state.x[c.vertex] += std::min({c.depth, allowed, push.edge_capped ? edge_cap_m : c.depth}) * c.normal;
 
   if (normal_speed >= 0.0) return;  // separating already
   const double target = separating_speed(normal_speed, material);
@@ -233,7 +238,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
                           best.weights, normal, thickness - height};
-    apply_contact(contact, inverse_mass, state, material, push, 0.1 * search);
+    apply_contact(contact, inverse_mass, state, step_velocity_, material, push, 0.1 * search);
     ++contacts;
   });
   return contacts;
@@ -319,6 +324,7 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
                           const ContactMaterial& material, const PushLimit& push) {
   if (bodies.size() < 2) return 0;
   compute_boxes(bodies, state.x);
+  step_velocity_ = state.v;
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
     return resolve_vertices_against_triangles(moving, surface, inverse_mass, state, material, push);
   });

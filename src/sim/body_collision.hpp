@@ -18,18 +18,20 @@
 
 namespace sim {
 
-// How far the impulse model moves a vertex out of another body after a step of `step_s`. With `whole_depth`
-// (position-based integrators, whose contacts are constraints of each substep): all of it. Otherwise at most a
-// twentieth of the surface's mean edge, and at most the depth that step carried it in (its approach speed,
-// relative to the triangle, times the step) plus `push_speed_m_per_s` times the step of any depth it had before
-// (an overlap it started with, or one that contacts left). A push moves a vertex without a force, against its
-// springs and gas: the twentieth of an edge alone (about 150 m/s at the explicit steps of 1 cm edges) pushed an
-// old overlap out so fast that bodies started pressed together flew apart (issue 17's teapot lid).
+// How far the impulse model moves a vertex out of another body after a step (or an xpbd substep) of `step_s`:
+// at most the depth that step carried it in (its approach speed relative to the triangle, with the velocities
+// before this call's impulses, times the step) plus `push_speed_m_per_s` times the step of any depth it had
+// before (an overlap it started with, or one that contacts left). With `edge_capped` (velocity-based
+// integrators) also at most a twentieth of the surface's mean edge. Position-based integrators resolve their
+// contacts in every substep as constraints, so they push out all of a substep's travel, however fast.
+// A push moves a vertex without a force, against its springs and gas: the twentieth of an edge alone (about
+// 150 m/s at the explicit steps of 1 cm edges), or xpbd's old push of the whole depth, pushed an old overlap
+// out so fast that bodies started pressed together flew apart (issue 17's teapot lid).
 // Built from the model for each step (sim/step.cpp): collisions.push_speed's default lives in sim::BodyContact.
 struct PushLimit {
   double step_s = 0.0;
   double push_speed_m_per_s = 0.0;
-  bool whole_depth = false;
+  bool edge_capped = true;
 };
 
 class BodyCollider {
@@ -97,6 +99,7 @@ class BodyCollider {
   int cell_index(int cx, int cy, int cz) const { return (cx * grid_cells_.y() + cy) * grid_cells_.z() + cz; }
 
   std::vector<Box> boxes_;          // per body, this step
+  std::vector<Vec3> step_velocity_; // every vertex's velocity before this call's impulses: its travel is v h
   std::size_t moving_index_ = 0;    // the body whose vertices are tested
   std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
   // The grid over the pair's overlap region, dense and compressed (counting sort): cell c holds the surface

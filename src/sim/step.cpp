@@ -30,7 +30,7 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // force inside phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
-  const PushLimit push{h, model.body_contact.push_speed_m_per_s, integrator_info(model.solver.integrator).position_based};
+  const PushLimit push{h, model.body_contact.push_speed_m_per_s, !integrator_info(model.solver.integrator).position_based};
   return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material, push);
 }
 

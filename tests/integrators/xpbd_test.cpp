@@ -230,11 +230,11 @@ double deepest_inside(const sim::World& world) {
 }
 
 // A small ball (icosphere:2, radius 0.5 m) thrown down at 5 m/s onto a ball resting on the floor (icosphere:3,
-// radius 1 m): the body contact runs in every substep and pushes a vertex out by its whole depth. Checked at
-// every frame of 1/60 s for 1 s. Measured: no vertex inside at 2, 4 and 10 substeps; at 1 substep (8 cm per
-// step, more than the search's half edge of 7.5 cm) the small ball passes through (no continuous collision).
-// Before the whole-depth push (a twentieth of an edge per step) it sank 1.7 cm at 4 substeps and passed
-// through at 2.
+// radius 1 m): the body contact runs in every substep and pushes a vertex out by all of that substep's travel
+// into the other body (sim::PushLimit). Checked at every frame of 1/60 s for 1 s. Measured: no vertex inside at
+// 2, 4 and 10 substeps; at 1 substep (8 cm per step, more than the search's half edge of 7.5 cm) the small ball
+// passes through (no continuous collision). With the push also capped at a twentieth of an edge per substep
+// (the velocity-based integrators' cap) it sank 1.7 cm at 4 substeps and passed through at 2.
 TEST(Xpbd, BallAt5MetresPerSecondDoesNotSinkIntoAnotherBody) {
   constexpr const char* kDropOnBall = R"({
     "fps": 60,
