@@ -1,11 +1,13 @@
 // softbody's command line: dispatches to the subcommands and maps errors to exit statuses.
 #include <map>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
 #include "app/exit_status.hpp"
 #include "core/errors.hpp"
+#include "setup/build_fingerprint.hpp"
 
 namespace {
 
@@ -22,7 +24,8 @@ constexpr const char* kFooter =
 int main(int argc, char** argv) {
   CLI::App cli("softbody: pressure-model soft bodies (Matyka & Ollila 2003), simulated and rendered off-screen");
   cli.footer(kFooter);
-  cli.set_version_flag("--version", std::string("softbody ") + SOFTBODY_VERSION);
+  cli.set_version_flag("--version", std::string("softbody ") + SOFTBODY_VERSION + " (build " +
+                                        std::string(setup::build_fingerprint()).substr(0, 16) + ")");
   cli.require_subcommand(1);
   std::map<std::string, app::Action> actions;
   actions["simulate"] = app::register_simulate(cli);

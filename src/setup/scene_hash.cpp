@@ -8,6 +8,7 @@
 #include <xxhash.h>
 
 #include "core/errors.hpp"
+#include "setup/build_fingerprint.hpp"
 
 namespace setup {
 
@@ -16,6 +17,8 @@ std::uint64_t simulation_hash(const scene::Scene& scene) {
   XXH3_64bits_reset(state);
   const std::string version = SOFTBODY_VERSION;
   XXH3_64bits_update(state, version.data(), version.size() + 1);  // the terminating zero separates the parts
+  const std::string build = build_fingerprint();
+  XXH3_64bits_update(state, build.data(), build.size() + 1);
   XXH3_64bits_update(state, scene.simulation_json.data(), scene.simulation_json.size() + 1);
   for (const scene::Body& body : scene.bodies) {
     if (body.mesh_file.empty()) continue;

@@ -8,7 +8,7 @@
 
 namespace setup {
 
-// XXH3-64 over the program's version, the scene's simulation JSON (scene::Scene::simulation_json: every
+// XXH3-64 over the program's version and build (setup::build_fingerprint), the scene's simulation JSON (scene::Scene::simulation_json: every
 // key but name, render, camera, light and output, with --set applied) and the bytes of every mesh file it
 // loads. Two scenes with the same hash simulate the same states. Throws softbody::InputError when a mesh
 // file cannot be read.
