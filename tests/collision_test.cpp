@@ -1,5 +1,7 @@
 // Body–body contact: momentum conserved in a head-on collision, no vertex left inside another body.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -96,6 +98,40 @@ TEST(BodyCollision, AnInitialOverlapIsPushedOutWithoutAddingEnergy) {
   EXPECT_GT(apart, 2.2) << "m between the centres: the unit balls no longer overlap";
   const double gained_fast = run(R"({ "restitution": 0.0, "friction": 0.0, "push_speed": 1e9 })").first;
   EXPECT_GT(gained_fast, 1.0) << "J: pushes limited only by a twentieth of the edge per step (the old rule) add energy";
+}
+
+// Two balls meeting head-on at 1 m/s each with the smooth body contact, elastic (restitution 1: no dashpot), no
+// friction, damping or gravity: the contact springs are conservative, so the total energy, with their stored
+// energy (BodyDiagnostics::contact_J, Σ m ω² δ² R(d/δ) of each body's vertices in the other), stays what it was
+// through the collision. Measured at dt 1e-5 s, every 10 ms: within 1.8 mJ of the start (symplectic Euler's
+// oscillating error on the internal modes) while the contact springs hold up to 0.067 J; before they were
+// counted the total dipped by that much.
+TEST(BodyCollision, SmoothContactEnergyIsCountedAndConservedThroughAnElasticCollision) {
+  sim::World world = testing_support::world_from_text(R"({
+    "gravity": [0, 0, 0],
+    "solver": { "integrator": "symplectic" },
+    "collisions": { "contact": "smooth", "restitution": 1.0, "friction": 0.0 },
+    "bodies": [
+      { "mesh": "icosphere:2", "position": [-1.2, 0, 0], "velocity": [1, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 },
+      { "mesh": "icosphere:2", "position": [1.2, 0, 0], "velocity": [-1, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 } ] })");
+  const auto total = [&world](double& contact) {
+    const sim::BodyDiagnostics a = sim::diagnose(world.model, world.state, 0), b = sim::diagnose(world.model, world.state, 1);
+    contact = a.contact_J + b.contact_J;
+    return a.total_J() + b.total_J();
+  };
+  double contact = 0.0, most_stored = 0.0, worst = 0.0;
+  const double start = total(contact);
+  EXPECT_EQ(contact, 0.0) << "J: apart at the start";
+  for (int k = 0; k < 60; ++k) {  // 0.6 s: they meet at about 0.2 s and part by 0.4 s
+    testing_support::run_steps(world, 1000, 1e-5);
+    const double now = total(contact);
+    most_stored = std::max(most_stored, contact);
+    worst = std::max(worst, std::abs(now - start));
+  }
+  std::printf("largest contact energy %.4f J, largest change of the total %.2e J\n", most_stored, worst);
+  EXPECT_GT(most_stored, 0.03) << "J: the contact springs hold energy while the balls are pressed together";
+  EXPECT_LT(worst, 0.005) << "J: the total, contact springs included, is conserved";
+  EXPECT_GT(sim::diagnose(world.model, world.state, 1).com_velocity_m_per_s.x(), 0.8) << "m/s: they bounce back";
 }
 
 TEST(BodyCollision, WindingNumberIsOneInsideZeroOutside) {

@@ -340,6 +340,23 @@ int BodyCollider::add_smooth_forces(const std::vector<Body>& bodies, std::span<c
   });
 }
 
+double BodyCollider::smooth_energy(const std::vector<Body>& bodies, std::span<const double> mass_kg,
+                                   std::span<const Vec3> x, const SmoothResponse& contact, std::size_t moving) {
+  if (bodies.size() < 2) return 0.0;
+  compute_boxes(bodies, x);
+  double energy = 0.0;
+  for_each_touching_pair(bodies, [&](const Body& moving_body, const Body& surface) {
+    if (moving_index_ != moving) return 0;
+    const double search = kSearchFraction * surface.rest.mean_edge_m;
+    for_each_nearest(moving_body, surface, x, search, [&](int vertex, const Nearest& best) {
+      const double depth = contact.smoothing_m - smooth_frame(surface, x, vertex, best, search).signed_distance_m;
+      if (depth > 0.0) energy += mass_kg[vertex] * smooth_energy_per_mass(contact, depth);  // m ω² δ² R(d/δ)
+    });
+    return 0;
+  });
+  return energy;
+}
+
 void BodyCollider::find_smooth_frames(const std::vector<Body>& bodies, std::span<const Vec3> x,
                                       std::vector<SmoothFrame>& frames) {
   frames.clear();

@@ -52,6 +52,12 @@ class BodyCollider {
   int add_smooth_forces(const std::vector<Body>& bodies, std::span<const double> mass_kg, std::span<const Vec3> x,
                         std::span<const Vec3> v, const SmoothResponse& contact, std::span<Vec3> force);
 
+  // The smooth model's contact springs' potential energy of the vertices of body `moving` against every other
+  // body: Σ m ω² δ² R(d/δ) over its vertices at penetration d > 0 (the same search and depth as
+  // add_smooth_forces, whose spring part is minus its gradient) [J].
+  double smooth_energy(const std::vector<Body>& bodies, std::span<const double> mass_kg, std::span<const Vec3> x,
+                       const SmoothResponse& contact, std::size_t moving);
+
   // Where the smooth model looks (the same search as add_smooth_forces): one vertex near another body's surface.
   struct SmoothFrame {
     int vertex = 0;                   // world index

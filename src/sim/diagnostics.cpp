@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "sim/body_collision.hpp"
 #include "sim/energy.hpp"
 #include "sim/forces.hpp"
 #include "sim/smooth_contact.hpp"
@@ -32,6 +33,12 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
   BodyDiagnostics d = diagnose(body, model.of(body, state.x), model.of(body, state.v), model.gravity_m_per_s2);
   if (model.floor && model.floor->contact == FloorContact::Smooth) {
     d.contact_J = smooth_floor_energy(resolve_smooth_floor(*model.floor), body.masses.kg, model.of(body, state.x));
+  }
+  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+    BodyCollider collider;  // a search per call: diagnostics run per frame, not per step
+    d.contact_J += collider.smooth_energy(model.bodies, model.mass_kg, state.x,
+                                          resolve_smooth_response(model.body_contact.smooth, model.body_contact.material),
+                                          index);
   }
   return d;
 }

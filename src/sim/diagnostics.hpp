@@ -15,7 +15,8 @@ struct BodyDiagnostics {
   double gravitational_J = 0.0;            // −Σ m g·x (zero at y = 0 for g along −y)
   double spring_J = 0.0;                   // Σ ½ k (|d| − L0)², the bending links' ½ k_b (|d| − ℓ0)² with it
   double gas_J = 0.0;                      // −nRT ln(V / V0)
-  double contact_J = 0.0;                  // the smooth floor contact's springs (0 with the other contacts)
+  double contact_J = 0.0;                  // the smooth contacts' springs: the floor's, and this body's vertices'
+                                           // in other bodies (0 with the other contacts)
   double min_y_m = 0.0;                    // lowest vertex
   double total_J() const { return kinetic_J + gravitational_J + spring_J + gas_J + contact_J; }
 };
