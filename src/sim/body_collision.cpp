@@ -244,14 +244,82 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
   return contacts;
 }
 
+const BodyCollider::Adjacency& BodyCollider::adjacency(std::size_t body_index, const Body& body) {
+  if (adjacency_.size() <= body_index) adjacency_.resize(body_index + 1);
+  Adjacency& a = adjacency_[body_index];
+  const std::vector<Triangle>& faces = body.topology.faces;
+  if (a.across.size() == faces.size()) return a;
+  // Each edge's two sides: (lower vertex, higher vertex, face, corner opposite), sorted so that a closed
+  // manifold's two sides of an edge are neighbours.
+  std::vector<std::array<int, 4>> sides;
+  sides.reserve(3 * faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int u = faces[f][(k + 1) % 3], w = faces[f][(k + 2) % 3];
+      sides.push_back({std::min(u, w), std::max(u, w), static_cast<int>(f), k});
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  a.across.assign(faces.size(), {-1, -1, -1});
+  for (std::size_t s = 0; s + 1 < sides.size(); ++s) {
+    if (sides[s][0] != sides[s + 1][0] || sides[s][1] != sides[s + 1][1]) continue;
+    a.across[static_cast<std::size_t>(sides[s][2])][static_cast<std::size_t>(sides[s][3])] = sides[s + 1][2];
+    a.across[static_cast<std::size_t>(sides[s + 1][2])][static_cast<std::size_t>(sides[s + 1][3])] = sides[s][2];
+    ++s;
+  }
+  a.vertex_face_start.assign(static_cast<std::size_t>(body.vertex_count) + 1, 0);
+  for (const Triangle& t : faces) {
+    for (const int v : t) ++a.vertex_face_start[static_cast<std::size_t>(v) + 1];
+  }
+  for (std::size_t v = 1; v < a.vertex_face_start.size(); ++v) a.vertex_face_start[v] += a.vertex_face_start[v - 1];
+  a.vertex_faces.resize(3 * faces.size());
+  std::vector<int> next(a.vertex_face_start.begin(), a.vertex_face_start.end() - 1);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (const int v : faces[f]) a.vertex_faces[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = static_cast<int>(f);
+  }
+  return a;
+}
+
+namespace {
+
+// The unit normal of triangle t (counter-clockwise seen from outside).
+Vec3 face_normal(const Vec3* x, const Triangle& t) { return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized(); }
+
+}  // namespace
+
+Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights) {
+  const std::vector<Triangle>& faces = surface.topology.faces;
+  const Triangle& t = faces[static_cast<std::size_t>(face)];
+  const int zeros = (weights[0] == 0.0) + (weights[1] == 0.0) + (weights[2] == 0.0);
+  if (zeros == 0) return face_normal(x_surface, t);
+  const Adjacency& a = adjacency(surface_index_, surface);
+  if (zeros == 1) {  // on the edge opposite the corner of weight 0
+    const int k = weights[0] == 0.0 ? 0 : weights[1] == 0.0 ? 1 : 2;
+    const int other = a.across[static_cast<std::size_t>(face)][static_cast<std::size_t>(k)];
+    const Vec3 n = face_normal(x_surface, t);
+    return other < 0 ? n : Vec3(n + face_normal(x_surface, faces[static_cast<std::size_t>(other)]));
+  }
+  const int corner = t[weights[0] != 0.0 ? 0 : weights[1] != 0.0 ? 1 : 2];  // at the corner of weight 1
+  Vec3 sum = Vec3::Zero();
+  const auto v = static_cast<std::size_t>(corner);
+  for (int i = a.vertex_face_start[v]; i < a.vertex_face_start[v + 1]; ++i) {
+    const Triangle& f = faces[static_cast<std::size_t>(a.vertex_faces[static_cast<std::size_t>(i)])];
+    const int c = f[0] == corner ? 0 : f[1] == corner ? 1 : 2;
+    const Vec3 e1 = x_surface[f[(c + 1) % 3]] - x_surface[corner], e2 = x_surface[f[(c + 2) % 3]] - x_surface[corner];
+    const double angle = std::atan2(e1.cross(e2).norm(), e1.dot(e2));  // the face's angle at the corner [rad]
+    sum += angle * face_normal(x_surface, f);
+  }
+  return sum;
+}
+
 BodyCollider::SmoothFrame BodyCollider::smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex,
                                                      const Nearest& best, double search) {
   const Vec3* x_surface = x.data() + surface.first_vertex;
   const Triangle& t = surface.topology.faces[best.triangle];
-  const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
   const Vec3 offset = x[vertex] - best.point;
   const double distance = offset.norm();
-  const double side = offset.dot(normal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
+  const Vec3 pseudonormal = surface_pseudonormal(surface, x_surface, best.triangle, best.weights);
+  const double side = offset.dot(pseudonormal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
   SmoothFrame frame;
   frame.vertex = vertex;
   frame.corners = {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]};
@@ -259,7 +327,7 @@ BodyCollider::SmoothFrame BodyCollider::smooth_frame(const Body& surface, std::s
   frame.signed_distance_m = side * distance;
   // Along the offset from the closest point (continuous where the nearest triangle changes on a convex
   // surface); the face normal where the vertex sits on the surface.
-  frame.direction = distance > 1e-9 * search ? Vec3(side / distance * offset) : normal;
+  frame.direction = distance > 1e-9 * search ? Vec3(side / distance * offset) : face_normal(x_surface, t);
   return frame;
 }
 

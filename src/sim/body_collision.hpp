@@ -93,8 +93,23 @@ class BodyCollider {
   void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material, const PushLimit& push);
-  // The frame of `vertex` against its nearest triangle `best` of `surface`.
-  static SmoothFrame smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best, double search);
+  // The frame of `vertex` against its nearest triangle `best` of `surface` (the body at surface_index_), its side
+  // from the closest point's angle-weighted pseudonormal (surface_pseudonormal).
+  SmoothFrame smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best, double search);
+  // The outward direction whose sign test tells inside from outside at the closest point of triangle `face` with
+  // barycentric `weights` (Bærentzen & Aanæs 2005, angle-weighted pseudonormals): on the face, its normal; on an
+  // edge, the sum of the two faces' normals; at a corner, Σ α_f n_f over the faces around it (α_f: the face's
+  // angle there). A face normal alone gives the wrong side next to a saddle-shaped corner or a concave edge.
+  // Not unit length. `x_surface`: the surface body's positions.
+  Vec3 surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights);
+  // Per body (built on first use; the topology is fixed): the face across each face's edge k (the edge opposite
+  // corner k), and each vertex's faces (compressed rows).
+  struct Adjacency {
+    std::vector<std::array<int, 3>> across;
+    std::vector<int> vertex_face_start, vertex_faces;
+  };
+  const Adjacency& adjacency(std::size_t body_index, const Body& body);
+  std::vector<Adjacency> adjacency_;
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                              std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                              std::span<Vec3> force);
