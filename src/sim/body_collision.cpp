@@ -22,6 +22,9 @@ struct ClosestPoint {
   Vec3 weights;  // barycentric weights of the triangle's corners
 };
 
+// The unit normal of triangle t (counter-clockwise seen from outside).
+Vec3 face_normal(const Vec3* x, const Triangle& t) { return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized(); }
+
 // Closest point of triangle (a, b, c) to p, by the Voronoi region p falls in (vertex, edge or face).
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
@@ -232,8 +235,20 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
   for_each_nearest(moving, surface, state.x, search, [&](int vertex, const Nearest& best) {
     const Vec3 p = state.x[vertex];
     const Triangle& t = surface.topology.faces[best.triangle];
-    const Vec3 normal = (x_surface[t[1]] - x_surface[t[0]]).cross(x_surface[t[2]] - x_surface[t[0]]).normalized();
-    const double height = (p - best.point).dot(normal);  // < 0: inside the surface body
+    Vec3 normal = face_normal(x_surface, t);
+    const Vec3 offset = p - best.point;
+    double height = offset.dot(normal);  // < 0: inside the surface body
+    // Nearest to an edge or a corner: the height is the distance to it, on the side its pseudonormal tells (the
+    // face's plane says neither: next to a sharp edge a vertex outside is behind it), and the push is along
+    // the offset.
+    const bool on_face = best.weights[0] != 0.0 && best.weights[1] != 0.0 && best.weights[2] != 0.0;
+    if (!on_face) {
+      const double distance = offset.norm();
+      const double side =
+          offset.dot(surface_pseudonormal(surface, x_surface, best.triangle, best.weights)) < 0.0 ? -1.0 : 1.0;
+      height = side * distance;
+      if (distance > 1e-9 * search) normal = (side / distance) * offset;
+    }
     if (height >= thickness) return;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
@@ -279,13 +294,6 @@ const BodyCollider::Adjacency& BodyCollider::adjacency(std::size_t body_index, c
   }
   return a;
 }
-
-namespace {
-
-// The unit normal of triangle t (counter-clockwise seen from outside).
-Vec3 face_normal(const Vec3* x, const Triangle& t) { return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized(); }
-
-}  // namespace
 
 Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights) {
   const std::vector<Triangle>& faces = surface.topology.faces;
