@@ -1,7 +1,8 @@
 // Contact between bodies: the vertices of each body against the triangles of every other body whose
 // bounding box overlaps it. Broad phase: bounding boxes, then a uniform grid of triangles (a dense cell
 // table over the pair's overlap region, counting-sorted, rebuilt each step without allocating). Narrow
-// phase: closest point on the nearest triangle, each triangle tested once per vertex.
+// phase: closest point on the nearest triangle, each triangle tested once per vertex; inside or outside by the
+// angle-weighted pseudonormal at that point (surface_pseudonormal).
 // The impulse model is applied after each step, like the floor; the smooth model adds penalty forces inside
 // the force evaluation (sim::Dynamics). A single body costs nothing (no search at all).
 #pragma once
@@ -99,7 +100,8 @@ class BodyCollider {
   // The outward direction whose sign test tells inside from outside at the closest point of triangle `face` with
   // barycentric `weights` (Bærentzen & Aanæs 2005, angle-weighted pseudonormals): on the face, its normal; on an
   // edge, the sum of the two faces' normals; at a corner, Σ α_f n_f over the faces around it (α_f: the face's
-  // angle there). A face normal alone gives the wrong side next to a saddle-shaped corner or a concave edge.
+  // angle there). A face normal alone gives the wrong side next to a sharp edge or corner (a point in front of
+  // an edge is as near to both faces; on the far face's side it is behind the near face's plane).
   // Not unit length. `x_surface`: the surface body's positions.
   Vec3 surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights);
   // Per body (built on first use; the topology is fixed): the face across each face's edge k (the edge opposite
