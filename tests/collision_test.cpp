@@ -137,6 +137,16 @@ TEST(BodyCollision, SmoothContactEnergyIsCountedAndConservedThroughAnElasticColl
   EXPECT_GT(sim::diagnose(world.model, world.state, 1).com_velocity_m_per_s.x(), 0.8) << "m/s: they bounce back";
 }
 
+// A thin tetrahedron ABCD (a blade) in a scratch folder of that name: its faces ABC and ABD meet at the edge AB,
+// along x, at 11.4°, opening towards +z. Returns the OBJ's path.
+std::filesystem::path write_blade(const std::string& folder) {
+  const std::filesystem::path blade = testing_support::scratch_dir(folder) / "blade.obj";
+  std::ofstream out(blade);
+  out << "v -1 0 0\nv 1 0 0\nv 0 0.1 1\nv 0 -0.1 1\n"  // A B C D
+      << "f 1 4 2\nf 1 2 3\nf 1 3 4\nf 2 4 3\n";      // outward: ABD, ABC, ACD, BDC
+  return blade;
+}
+
 // The smooth contact's inside/outside test next to a sharp edge: a thin tetrahedron whose faces ABC and ABD meet
 // at the edge AB at 11.4° (a blade, as the split teapot's lid rim), and a small ball (icosphere:2, radius 5 cm)
 // centred 3 cm in front of that edge, so that its vertices surround it, some inside the blade. Each frame's side
@@ -146,12 +156,7 @@ TEST(BodyCollision, SmoothContactEnergyIsCountedAndConservedThroughAnElasticColl
 // with a spring as deep as the search (the split teapot gained 0.4 J in 0.1 s). The angle-weighted
 // pseudonormal of the edge or corner (Bærentzen & Aanæs 2005) gets every side right.
 TEST(BodyCollision, SmoothContactTellsInsideFromOutsideNextToASharpEdge) {
-  const std::filesystem::path blade = testing_support::scratch_dir("sharp_edge") / "blade.obj";
-  {
-    std::ofstream out(blade);
-    out << "v -1 0 0\nv 1 0 0\nv 0 0.1 1\nv 0 -0.1 1\n"  // A B C D
-        << "f 1 4 2\nf 1 2 3\nf 1 3 4\nf 2 4 3\n";      // outward: ABD, ABC, ACD, BDC
-  }
+  const std::filesystem::path blade = write_blade("sharp_edge");
   sim::World world = testing_support::world_from_text(R"({
     "collisions": { "contact": "smooth" },
     "bodies": [ { "mesh": ")" + blade.string() + R"(" },
@@ -179,12 +184,7 @@ TEST(BodyCollision, SmoothContactTellsInsideFromOutsideNextToASharpEdge) {
 // side nearer to its plane than the thickness though 3 cm or more from the edge (measured: 112 contacts). The
 // distance to the edge or corner, on the side of its pseudonormal, leaves them all alone.
 TEST(BodyCollision, ImpulseContactLeavesAVertexInFrontOfASharpEdgeAlone) {
-  const std::filesystem::path blade = testing_support::scratch_dir("sharp_edge_impulse") / "blade.obj";
-  {
-    std::ofstream out(blade);
-    out << "v -1 0 0\nv 1 0 0\nv 0 0.1 1\nv 0 -0.1 1\n"
-        << "f 1 4 2\nf 1 2 3\nf 1 3 4\nf 2 4 3\n";
-  }
+  const std::filesystem::path blade = write_blade("sharp_edge_impulse");
   sim::World world = testing_support::world_from_text(R"({
     "bodies": [ { "mesh": ")" + blade.string() + R"(" },
                 { "mesh": "icosphere:2", "scale": 0.05, "position": [0, 0, -0.08] } ] })");

@@ -119,8 +119,8 @@ sim::State read_cached_state(const std::filesystem::path& dir, int frame, std::u
   const auto header_checksum = get<std::uint64_t>(bytes, offset);
   if (header_checksum != XXH3_64bits(bytes.data(), kCheckedHeaderBytes)) throw refuse("corrupt header (checksum)");
   if (hash != scene_hash) {
-    throw refuse("made from another scene or by another build of softbody (scene hash " + hex(hash) + ", this scene's " + hex(scene_hash) +
-                 "): simulate this scene with --cache");
+    throw refuse("made from another scene or by another build of softbody (scene hash " + hex(hash) +
+                 ", this scene's " + hex(scene_hash) + "): simulate this scene with --cache");
   }
   if (file_frame != frame) throw refuse("holds frame " + std::to_string(file_frame) + ", expected " + std::to_string(frame));
   if (bodies != model.bodies.size() || vertices != model.vertex_count()) {
@@ -170,9 +170,10 @@ CacheManifest read_manifest(const std::filesystem::path& dir, std::uint64_t scen
   }
   if (manifest.every < 1 || manifest.last_frame < 0) throw softbody::InputError(path.string() + ": unreadable manifest");
   if (manifest.scene_hash != scene_hash) {
-    throw softbody::InputError(path.string() + ": a cache of another scene or of another build of softbody (scene hash " + hex(manifest.scene_hash) +
-                               ", this scene's " + hex(scene_hash) + "): simulate this scene with --cache " +
-                               dir.string());
+    throw softbody::InputError(path.string() +
+                               ": a cache of another scene or of another build of softbody (scene hash " +
+                               hex(manifest.scene_hash) + ", this scene's " + hex(scene_hash) +
+                               "): simulate this scene with --cache " + dir.string());
   }
   return manifest;
 }

@@ -134,8 +134,9 @@ struct Contact {
 };
 
 // Applies one contact: the vertex moved out along the normal (within the push limit, sim::PushLimit, and for an
-// edge-capped push `edge_cap_m`; `step_velocity`: every vertex's velocity before this call) and a normal (restitution) plus tangential (Coulomb) impulse, both split between
-// the vertex and the triangle's corners by inverse mass and barycentric weight. The vertex gets +J, the corners
+// edge-capped push `edge_cap_m`; `step_velocity`: every vertex's velocity before this call) and a normal
+// (restitution) plus tangential (Coulomb) impulse, both split between the vertex and the triangle's corners by
+// inverse mass and barycentric weight. The vertex gets +J, the corners
 // −w_k J, so momentum is conserved exactly.
 void apply_contact(const Contact& c, std::span<const double> inverse_mass, State& state,
                    std::span<const Vec3> step_velocity, const ContactMaterial& material, const PushLimit& push,
@@ -236,18 +237,14 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     const Vec3 p = state.x[vertex];
     const Triangle& t = surface.topology.faces[best.triangle];
     Vec3 normal = face_normal(x_surface, t);
-    const Vec3 offset = p - best.point;
-    double height = offset.dot(normal);  // < 0: inside the surface body
-    // Nearest to an edge or a corner: the height is the distance to it, on the side its pseudonormal tells (the
-    // face's plane says neither: next to a sharp edge a vertex outside is behind it), and the push is along
-    // the offset.
+    double height = (p - best.point).dot(normal);  // < 0: inside the surface body
+    // Nearest to an edge or a corner: the signed distance to it, on the side its pseudonormal tells, and the push
+    // along the offset (the face's plane says neither: next to a sharp edge a vertex outside is behind it).
     const bool on_face = best.weights[0] != 0.0 && best.weights[1] != 0.0 && best.weights[2] != 0.0;
     if (!on_face) {
-      const double distance = offset.norm();
-      const double side =
-          offset.dot(surface_pseudonormal(surface, x_surface, best.triangle, best.weights)) < 0.0 ? -1.0 : 1.0;
-      height = side * distance;
-      if (distance > 1e-9 * search) normal = (side / distance) * offset;
+      const SmoothFrame frame = contact_frame(surface, state.x, vertex, best, search);
+      height = frame.signed_distance_m;
+      normal = frame.direction;
     }
     if (height >= thickness) return;
     const Contact contact{vertex,
@@ -290,7 +287,9 @@ const BodyCollider::Adjacency& BodyCollider::adjacency(std::size_t body_index, c
   a.vertex_faces.resize(3 * faces.size());
   std::vector<int> next(a.vertex_face_start.begin(), a.vertex_face_start.end() - 1);
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (const int v : faces[f]) a.vertex_faces[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = static_cast<int>(f);
+    for (const int v : faces[f]) {
+      a.vertex_faces[static_cast<std::size_t>(next[static_cast<std::size_t>(v)]++)] = static_cast<int>(f);
+    }
   }
   return a;
 }
@@ -320,8 +319,8 @@ Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surfa
   return sum;
 }
 
-BodyCollider::SmoothFrame BodyCollider::smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex,
-                                                     const Nearest& best, double search) {
+BodyCollider::SmoothFrame BodyCollider::contact_frame(const Body& surface, std::span<const Vec3> x,
+                                                      int vertex, const Nearest& best, double search) {
   const Vec3* x_surface = x.data() + surface.first_vertex;
   const Triangle& t = surface.topology.faces[best.triangle];
   const Vec3 offset = x[vertex] - best.point;
@@ -347,7 +346,7 @@ int BodyCollider::add_smooth_pair_forces(const Body& moving, const Body& surface
   const double eps2 = contact.slip_speed_m_per_s * contact.slip_speed_m_per_s;
   int contacts = 0;
   for_each_nearest(moving, surface, x, search, [&](int vertex, const Nearest& best) {
-    const SmoothFrame frame = smooth_frame(surface, x, vertex, best, search);
+    const SmoothFrame frame = contact_frame(surface, x, vertex, best, search);
     const double depth = skin - frame.signed_distance_m;
     if (depth <= 0.0) return;
     const Vec3& direction = frame.direction;
@@ -425,7 +424,7 @@ double BodyCollider::smooth_energy(const std::vector<Body>& bodies, std::span<co
     if (moving_index_ != moving) return 0;
     const double search = kSearchFraction * surface.rest.mean_edge_m;
     for_each_nearest(moving_body, surface, x, search, [&](int vertex, const Nearest& best) {
-      const double depth = contact.smoothing_m - smooth_frame(surface, x, vertex, best, search).signed_distance_m;
+      const double depth = contact.smoothing_m - contact_frame(surface, x, vertex, best, search).signed_distance_m;
       if (depth > 0.0) energy += mass_kg[vertex] * smooth_energy_per_mass(contact, depth);  // m ω² δ² R(d/δ)
     });
     return 0;
@@ -441,7 +440,7 @@ void BodyCollider::find_smooth_frames(const std::vector<Body>& bodies, std::span
   for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
     const double search = kSearchFraction * surface.rest.mean_edge_m;
     for_each_nearest(moving, surface, x, search, [&](int vertex, const Nearest& best) {
-      frames.push_back(smooth_frame(surface, x, vertex, best, search));
+      frames.push_back(contact_frame(surface, x, vertex, best, search));
     });
     return 0;
   });

@@ -95,8 +95,10 @@ class BodyCollider {
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material, const PushLimit& push);
   // The frame of `vertex` against its nearest triangle `best` of `surface` (the body at surface_index_), its side
-  // from the closest point's angle-weighted pseudonormal (surface_pseudonormal).
-  SmoothFrame smooth_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best, double search);
+  // from the closest point's angle-weighted pseudonormal (surface_pseudonormal): the smooth model's, and the
+  // impulse model's where the closest point is on an edge or a corner.
+  SmoothFrame contact_frame(const Body& surface, std::span<const Vec3> x, int vertex, const Nearest& best,
+                            double search);
   // The outward direction whose sign test tells inside from outside at the closest point of triangle `face` with
   // barycentric `weights` (Bærentzen & Aanæs 2005, angle-weighted pseudonormals): on the face, its normal; on an
   // edge, the sum of the two faces' normals; at a corner, Σ α_f n_f over the faces around it (α_f: the face's

@@ -36,9 +36,8 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
   }
   if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
     BodyCollider collider;  // a search per call: diagnostics run per frame, not per step
-    d.contact_J += collider.smooth_energy(model.bodies, model.mass_kg, state.x,
-                                          resolve_smooth_response(model.body_contact.smooth, model.body_contact.material),
-                                          index);
+    const SmoothResponse contact = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
+    d.contact_J += collider.smooth_energy(model.bodies, model.mass_kg, state.x, contact, index);
   }
   return d;
 }

@@ -116,9 +116,9 @@ struct BodyContact {
   SmoothContact smooth{0.0005};
   // The impulse model's push out of a penetration that a step did not itself cause [m/s] (sim::PushLimit): a
   // vertex found inside another body (or within the contact's thickness of it) is moved out by this step's
-  // approach plus at most this speed times the step. A push moves a vertex without
-  // a force, against its springs and gas, so it adds energy about in proportion to its speed. 0.1 m/s takes a
-  // 1 cm overlap out in 0.1 s and, on two balls started 10 cm into each other, adds less than the impulses take.
+  // approach plus at most this speed times the step. A push moves a vertex without a force, against its springs
+  // and gas, so it adds energy about in proportion to its speed. 0.1 m/s takes a 1 cm overlap out in 0.1 s and,
+  // on two balls started 10 cm into each other, adds less than the impulses take.
   double push_speed_m_per_s = 0.1;
 };
 
