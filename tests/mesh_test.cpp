@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -142,6 +144,48 @@ TEST(Mesh, BinaryPlyWhoseDataStartsWithALineFeedReadsAsWritten) {
     const mesh::LoadedMesh loaded = mesh::load_closed_mesh("cube.ply", file, "ctx");
     EXPECT_EQ(loaded.mesh.triangles.size(), 12u);
     EXPECT_EQ(mesh::signed_volume(loaded.mesh), 8.0);
+  }
+}
+
+// The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1) as PLY triangle strips: "0 2 1 3" gives (0,2,1) and
+// (1,2,3), "1 3 0 2" gives (1,3,0) and (0,3,2): its four outward faces. The ASCII file holds both in one row, a -1
+// between them; the binary one (big-endian, int items) one strip per row, the second led by a repeated vertex (two
+// triangles with a repeated vertex, left out, which keep the strip's alternation). assimp 5.2 reads the Igea scan's strips as one triangle.
+TEST(Mesh, PlyTriangleStripsReadAsTheirTriangles) {
+  const std::filesystem::path dir = testing_support::scratch_dir("ply_strips");
+  const std::string vertex_header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string ascii = "ply\nformat ascii 1.0\n" + vertex_header +
+                            "element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n0 0 1\n9 0 2 1 3 -1 1 3 0 2\n";
+  std::string binary = "ply\nformat binary_big_endian 1.0\n" + vertex_header +
+                       "element tristrips 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto append_big_endian = [&binary](std::uint32_t bits) {
+    for (int shift = 24; shift >= 0; shift -= 8) binary.push_back(static_cast<char>((bits >> shift) & 0xFF));
+  };
+  const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const auto& corner : corners) {
+    for (const float c : corner) append_big_endian(std::bit_cast<std::uint32_t>(c));
+  }
+  for (const std::vector<int>& strip : {std::vector<int>{0, 2, 1, 3}, std::vector<int>{1, 1, 1, 3, 0, 2}}) {
+    binary.push_back(static_cast<char>(strip.size()));
+    for (const int v : strip) append_big_endian(static_cast<std::uint32_t>(v));
+  }
+  for (const auto& [name, text] : {std::pair{"ascii.ply", ascii}, std::pair{"binary.ply", binary}}) {
+    const std::filesystem::path file = dir / name;
+    std::ofstream(file, std::ios::binary) << text;
+    const mesh::LoadedMesh loaded = mesh::load_closed_mesh(name, file, "ctx");
+    EXPECT_EQ(loaded.mesh.vertices.size(), 4u) << name;
+    EXPECT_EQ(loaded.mesh.triangles.size(), 4u) << name;
+    EXPECT_DOUBLE_EQ(mesh::signed_volume(loaded.mesh), 1.0 / 6.0) << name;
+  }
+  mesh::MeshLimits three_triangles;
+  three_triangles.max_triangles = 3;
+  try {
+    mesh::load_closed_mesh("ascii.ply", dir / "ascii.ply", "ctx", three_triangles);
+    ADD_FAILURE() << "four triangles passed a limit of three";
+  } catch (const softbody::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 3 triangles, the limit (raise it with the scene key limits.max_triangles)"),
+              std::string::npos) << e.what();
   }
 }
 

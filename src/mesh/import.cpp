@@ -20,6 +20,7 @@
 #include "mesh/fbx_check.hpp"
 #include "mesh/gltf_check.hpp"
 #include "mesh/ply_header.hpp"
+#include "mesh/ply_strips.hpp"
 
 namespace mesh {
 namespace {
@@ -99,8 +100,13 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
   std::string bytes_for_assimp;
   if (looks_like_ply(head) || extension == ".ply") {
     std::string whole = head_of(file, bytes);
-    if (const std::size_t at = check_ply_header(whole, bytes, limits); at != std::string::npos) {
+    std::string faces = faces_from_strips(whole, limits.max_triangles);  // assimp misreads triangle strips: it is given faces instead
+    const bool strips = !faces.empty();
+    if (strips) whole = std::move(faces);
+    if (const std::size_t at = check_ply_header(whole, whole.size(), limits); at != std::string::npos) {
       whole.insert(at, 1, '\n');  // the line feed assimp drops (see check_ply_header)
+      bytes_for_assimp = std::move(whole);
+    } else if (strips) {
       bytes_for_assimp = std::move(whole);
     }
   }

@@ -68,7 +68,8 @@ std::string repair_action(MeshDefect defect) {
 
 }  // namespace
 
-std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file) {
+std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file,
+                        const std::vector<std::string>& repair_notes) {
   const std::string action = repair_action(defect);
   if (action.empty()) return "";
   if (!repair.enabled) {
@@ -77,7 +78,10 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
   }
   if (defect == MeshDefect::Open && !repair.holes) return "; repair.holes is false: set it to true to " + action;
   if (defect == MeshDefect::Degenerate && !repair.degenerate) return "; repair.degenerate is false: set it to true to " + action;
-  return "; still so after \"repair\" (see its notes)";
+  if (repair_notes.empty()) return "; still so after \"repair\", which changed nothing";
+  std::string done = "; still so after \"repair\", which did: ";
+  for (std::size_t i = 0; i < repair_notes.size(); ++i) done += (i ? "; " : "") + repair_notes[i];
+  return done;
 }
 
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
@@ -100,7 +104,7 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
       validate_closed(loaded.mesh, loaded.notes);
     } catch (const MeshDefectError& e) {
       if (file.empty()) throw;
-      throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file));
+      throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file, loaded.notes));
     }
     if (!file.empty()) note_suspicious_shapes(loaded.mesh, repair, loaded.notes);
     phase_done("checking");

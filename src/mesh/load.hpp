@@ -28,7 +28,9 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
                             const softbody::AfterPhase& after_phase = {});
 
 // The words appended to a validation error of a file: which repair fixes `defect` ("" where none does).
-// With `repair.enabled` the mesh was repaired already: the words say which step was off, or that repair was not enough.
-std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file);
+// With `repair.enabled` the mesh was repaired already: the words say which step was off, or that repair was not
+// enough and what it did (`repair_notes`: its notes, which are printed only for a mesh that loads).
+std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const std::filesystem::path& file,
+                        const std::vector<std::string>& repair_notes = {});
 
 }  // namespace mesh
