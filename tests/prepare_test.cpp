@@ -147,6 +147,36 @@ TEST(Prepare, ResolutionRemeshesTheRepairedMeshToAboutThatManyVertices) {
   EXPECT_NEAR(mesh::signed_volume(back.mesh), 4.0 / 3.0 * 3.14159265358979 * 0.98, 0.1) << "about the unit sphere's";
 }
 
+// The remesh carries the file's UVs (geometry::transfer_corner_uvs): with the planar map (u, v) = (x, y), which
+// has no seam, every corner of the remesh gets about its own (x, y), interpolated on the nearest file triangle.
+TEST(Prepare, ResolutionCarriesTheFilesUvsOntoTheRemesh) {
+  const auto dir = scratch_dir("prepare_resolution_uvs");
+  mesh::TriMesh mapped = mesh::icosphere(3);  // closed: no filled hole, whose new triangles have no (x, y) to keep
+  for (const mesh::Triangle& t : mapped.triangles) {
+    mesh::CornerUvs uvs;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const mesh::Vec3& p = mapped.vertices[static_cast<std::size_t>(t[k])];
+      uvs[k] = {p.x(), p.y()};
+    }
+    mapped.corner_uvs.push_back(uvs);
+  }
+  const std::filesystem::path in = dir / "mapped.obj", out = dir / "proxy.obj";
+  output::write_file_atomically(in, output::trimesh_to_obj(mapped, "a sphere with (u, v) = (x, y)"));
+  const auto result = run_softbody("prepare " + in.string() + " " + out.string() + " --resolution 300");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  const mesh::TriMesh back = mesh::load_closed_mesh("proxy.obj", out, "ctx").mesh;
+  ASSERT_TRUE(back.has_uvs());
+  ASSERT_EQ(back.corner_uvs.size(), back.triangles.size());
+  double worst = 0.0;
+  for (std::size_t f = 0; f < back.triangles.size(); ++f) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const mesh::Vec3& p = back.vertices[static_cast<std::size_t>(back.triangles[f][k])];
+      worst = std::max({worst, std::abs(back.corner_uvs[f][k][0] - p.x()), std::abs(back.corner_uvs[f][k][1] - p.y())});
+    }
+  }
+  EXPECT_LT(worst, 0.02) << "the remesh's vertices lie on the file's triangles, up to the curvature between them";
+}
+
 TEST(Prepare, HelpListsTheCommand) {
   const auto top = run_softbody("--help");
   EXPECT_NE(top.output.find("prepare"), std::string::npos);

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "geometry/remesh.hpp"
+#include "geometry/uv_transfer.hpp"
 #include "core/errors.hpp"
 #include "frames/stop_request.hpp"
 #include "mesh/check.hpp"
@@ -56,6 +57,7 @@ int run_prepare(const PrepareOptions& options) {
   mesh::TriMesh result = prepared.mesh;
   if (options.resolution) {
     result = geometry::remesh_to_vertex_count(prepared.mesh, *options.resolution);
+    result.corner_uvs = geometry::transfer_corner_uvs(prepared.mesh, result);  // none where the file had none
     frames::throw_if_stop_requested_after("remeshing " + options.input + " to about " +
                                           std::to_string(*options.resolution) + " vertices");
     std::cerr << "note: remeshed isotropically from " << prepared.mesh.vertices.size() << " to " << result.vertices.size()
