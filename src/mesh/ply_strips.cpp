@@ -87,10 +87,8 @@ std::optional<Header> parse_header(std::string_view whole) {
     } else if (words[0] == "element" && words.size() == 3) {
       Element e;
       e.name = words[1];
-      char* stop = nullptr;
-      const std::string count(words[2]);
-      e.count = std::strtoll(count.c_str(), &stop, 10);
-      if (*stop != '\0' || e.count < 0) return std::nullopt;
+      if (words[2].size() > 18 || words[2].find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+      e.count = std::stoll(std::string(words[2]));  // at most 18 digits: no overflow
       e.header_line = line;
       e.header_end = at;
       header.elements.push_back(e);
@@ -207,11 +205,16 @@ void append_integer(std::string& out, long long value, int bytes, bool big_endia
 std::string faces_from_strips(std::string_view whole, long long max_triangles) {
   const std::optional<Header> header = parse_header(whole);
   if (!header) return "";
-  std::size_t strips = header->elements.size();
+  std::size_t strips = header->elements.size(), strip_elements = 0;
   for (std::size_t e = 0; e < header->elements.size(); ++e) {
-    if (header->elements[e].name == "tristrips") strips = e;
+    // A row without properties reads nothing: its count would bound no loop by the file's size.
+    if (header->elements[e].properties.empty() && header->elements[e].count > 0) return "";
+    if (header->elements[e].name == "tristrips") {
+      strips = e;
+      ++strip_elements;
+    }
   }
-  if (strips == header->elements.size()) return "";
+  if (strip_elements != 1) return "";  // none, or more than one (which check_ply_header refuses)
   const Element& strip_element = header->elements[strips];
   if (strip_element.properties.size() != 1 || strip_element.properties[0].count_bytes == 0 ||
       strip_element.properties[0].is_float) {
