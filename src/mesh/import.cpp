@@ -100,7 +100,8 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
   std::string bytes_for_assimp;
   if (looks_like_ply(head) || extension == ".ply") {
     std::string whole = head_of(file, bytes);
-    std::string faces = faces_from_strips(whole, limits.max_triangles);  // assimp misreads triangle strips: it is given faces instead
+    // assimp misreads triangle strips: it is given the file with faces instead (whose header is checked)
+    std::string faces = faces_from_strips(whole, limits.max_triangles);
     const bool strips = !faces.empty();
     if (strips) whole = std::move(faces);
     if (const std::size_t at = check_ply_header(whole, whole.size(), limits); at != std::string::npos) {

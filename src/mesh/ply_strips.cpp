@@ -14,8 +14,8 @@ namespace mesh {
 namespace {
 
 struct Property {
-  int bytes = 0;        // a scalar's bytes, or a list item's
-  int count_bytes = 0;  // a list's count: its bytes; 0 for a scalar
+  int bytes = 0;           // a scalar's bytes, or a list item's
+  int count_bytes = 0;     // a list's count: its bytes; 0 for a scalar
   bool is_signed = false;  // a list item's type is a signed integer
   bool is_float = false;   // a list item's (or a list count's) type is floating-point: not walked
 };
@@ -52,10 +52,22 @@ int type_bytes(std::string_view type, bool* is_signed, bool* is_float) {
     int bytes;
     char kind;  // 'i' signed, 'u' unsigned, 'f' floating-point
   };
-  static constexpr std::array<Type, 16> kTypes{{{"char", 1, 'i'},   {"uchar", 1, 'u'},  {"short", 2, 'i'},   {"ushort", 2, 'u'},
-                                                {"int", 4, 'i'},    {"uint", 4, 'u'},   {"float", 4, 'f'},   {"double", 8, 'f'},
-                                                {"int8", 1, 'i'},   {"uint8", 1, 'u'},  {"int16", 2, 'i'},   {"uint16", 2, 'u'},
-                                                {"int32", 4, 'i'},  {"uint32", 4, 'u'}, {"float32", 4, 'f'}, {"float64", 8, 'f'}}};
+  static constexpr std::array<Type, 16> kTypes{{{"char", 1, 'i'},
+                                                {"uchar", 1, 'u'},
+                                                {"short", 2, 'i'},
+                                                {"ushort", 2, 'u'},
+                                                {"int", 4, 'i'},
+                                                {"uint", 4, 'u'},
+                                                {"float", 4, 'f'},
+                                                {"double", 8, 'f'},
+                                                {"int8", 1, 'i'},
+                                                {"uint8", 1, 'u'},
+                                                {"int16", 2, 'i'},
+                                                {"uint16", 2, 'u'},
+                                                {"int32", 4, 'i'},
+                                                {"uint32", 4, 'u'},
+                                                {"float32", 4, 'f'},
+                                                {"float64", 8, 'f'}}};
   for (const Type& t : kTypes) {
     if (t.name != type) continue;
     *is_signed = t.kind == 'i';
@@ -87,7 +99,8 @@ std::optional<Header> parse_header(std::string_view whole) {
     } else if (words[0] == "element" && words.size() == 3) {
       Element e;
       e.name = words[1];
-      if (words[2].size() > 18 || words[2].find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+      if (words[2].size() > 18 || words[2].find_first_not_of("0123456789") != std::string_view::npos)
+        return std::nullopt;
       e.count = std::stoll(std::string(words[2]));  // at most 18 digits: no overflow
       e.header_line = line;
       e.header_end = at;
@@ -161,7 +174,9 @@ class BodyReader {
       }
       const std::optional<long long> n = integer(p.count_bytes, false);
       if (!n || *n < 0) return false;
-      if (!header_.ascii && static_cast<unsigned long long>(*n) > (body_.size() - at_) / static_cast<std::size_t>(p.bytes)) return false;
+      if (!header_.ascii &&
+          static_cast<unsigned long long>(*n) > (body_.size() - at_) / static_cast<std::size_t>(p.bytes))
+        return false;
       for (long long i = 0; i < *n; ++i) {
         if (!skip(p.bytes)) return false;
       }
@@ -244,7 +259,8 @@ std::string faces_from_strips(std::string_view whole, long long max_triangles) {
       } else {
         strip.push_back(*index);
       }
-      if (static_cast<long long>(triangles.size() + strip.size()) > max_triangles + 2) {  // a strip of n: n − 2 triangles
+      if (static_cast<long long>(triangles.size() + strip.size()) >
+          max_triangles + 2) {  // a strip of n: n − 2 triangles
         throw softbody::InputError("holds triangle strips of more than " + std::to_string(max_triangles) +
                                    " triangles, the limit (raise it with the scene key limits.max_triangles)");
       }
@@ -260,7 +276,8 @@ std::string faces_from_strips(std::string_view whole, long long max_triangles) {
   out += body.substr(0, strips_start);
   if (header->ascii) {
     if (!out.empty() && out.back() != '\n') out += '\n';
-    for (const auto& [a, b, c] : triangles) out += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+    for (const auto& [a, b, c] : triangles)
+      out += "3 " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
   } else {
     for (const auto& t : triangles) {
       out.push_back(3);
