@@ -61,8 +61,7 @@ TEST(Determinism, XpbdStateHashMatchesCheckedInValue) {
   EXPECT_EQ(actual, kExpected) << "actual hash 0x" << std::hex << actual;
 }
 
-// A body of 10242 vertices (icosphere:5), above sim::kParallelMinVertices: its force passes (xpbd: its coloured
-// constraint pass) run on two threads.
+// A body of 10242 vertices (icosphere:5), above sim::kParallelMinVertices: its force passes run on two threads.
 sim::World large_body_world(int threads, sim::IntegratorKind integrator) {
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json");
   s.bodies.at(0).mesh = "icosphere:5";

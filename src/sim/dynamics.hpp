@@ -20,7 +20,7 @@ namespace sim {
 // solver.threads allows: the edges (springs, dampers) on one while the faces (the gas's area sums and
 // volume) run on the other, then the last per-vertex pass in two vertex ranges. Each sum is the one the
 // single-threaded pass computes, in the same order, so the result is the same bit for bit. Smaller bodies
-// do not pay for the hand-over. xpbd runs each colour of its constraint pass in two halves (runner_for).
+// do not pay for the hand-over.
 inline constexpr int kParallelMinVertices = 4096;
 inline constexpr int kMostForceThreads = 2;
 
@@ -68,12 +68,6 @@ class Dynamics {
   // One forward or symplectic Euler step of `state` by dt, the update applied in the force evaluation's
   // last per-vertex pass (the same arithmetic as accelerations() and then the update: one pass fewer).
   void first_order_step(State& state, double dt, FirstOrderUpdate update);
-  // The runner that a body of `vertex_count` vertices runs its passes on with two threads, or nullptr where
-  // it runs them on one (solver.threads 1, or fewer than kParallelMinVertices vertices).
-  PartRunner* runner_for(std::size_t vertex_count) const {
-    return scratch_.threads > 1 && vertex_count >= static_cast<std::size_t>(kParallelMinVertices) ? scratch_.runner.get()
-                                                                                                 : nullptr;
-  }
 
  private:
   // Evaluates every body's forces (partial sums in `partial`) and then, in one pass per body, hands each

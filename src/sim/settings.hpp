@@ -134,8 +134,8 @@ struct Solver {
   bool retry = false;    // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
-  int threads = 0;  // threads for the force passes (xpbd: the constraint pass) of large bodies; 0: one per
-                    // core. Results do not depend on it (sim::kParallelMinVertices)
+  int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
+                    // on it (sim::kParallelMinVertices)
 };
 
 }  // namespace sim

@@ -4,24 +4,23 @@
 
 #include <cmath>
 
-#include "sim/dynamics.hpp"
 #include "sim/stability.hpp"
 
 namespace sim {
 namespace {
 
-// Constraints colouring.edges[begin, end) of one pass over distance constraints C = |x_i − x_j| − L0 (see
-// xpbd.hpp for Δλ): the edges' with k, c, or the bending links' with k_b, c_b. x: the body's positions,
-// previous: the same at the start of the substep, w: inverse masses [1/kg], tension: the constraints' carried
-// forces T [N], updated to this pass's. Carried (the prediction applied T), the pass solves for the change:
-// C − T/k; classical, for all of it.
-void solve_distance_range(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double k, double c,
-                          std::span<const int> coloured, double h, bool carried, std::span<Vec3> x,
-                          std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
+// One pass over distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ): the edges'
+// with k, c, or the bending links' with k_b, c_b. x: the body's positions, previous: the same at the start of
+// the substep, w: inverse masses [1/kg], tension: the constraints' carried forces T [N], updated to this pass's.
+// Carried (the prediction applied T), the pass solves for the change: C − T/k; classical, for all of it.
+void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double k, double c,
+                     const EdgeColouring& colouring, double h, bool carried, std::span<Vec3> x,
+                     std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
+  if (k == 0.0 && c == 0.0) return;
   carried = carried && k != 0.0;  // a damper alone carries nothing (its force would count twice: xpbd.hpp)
   const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
   const double inverse_k = k == 0.0 ? 0.0 : 1.0 / k, inverse_h2 = 1.0 / (h * h);
-  for (const int e : coloured) {
+  for (const int e : colouring.edges) {
     const auto edge = static_cast<std::size_t>(e);
     const auto [i, j] = edges[edge];
     const Vec3 d = x[i] - x[j];
@@ -35,30 +34,6 @@ void solve_distance_range(std::span<const std::array<int, 2>> edges, std::span<c
     x[i] += (w[i] * lambda) * n;
     x[j] -= (w[j] * lambda) * n;
     tension[edge] = carried_tension - lambda * inverse_h2;  // the constraint's force this substep [N]
-  }
-}
-
-// The whole pass in colour order. With a runner (a large body, two threads), each colour's constraints in two
-// halves side by side: no two of one colour share a vertex, so every constraint sees what it sees in the
-// sequential pass and the result is the same bit for bit; the colours one after another.
-void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double k, double c,
-                     const EdgeColouring& colouring, double h, bool carried, std::span<Vec3> x,
-                     std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension,
-                     PartRunner* runner) {
-  if (k == 0.0 && c == 0.0) return;
-  const std::span<const int> all(colouring.edges);
-  if (runner == nullptr) {
-    solve_distance_range(edges, rest, k, c, all, h, carried, x, previous, w, tension);
-    return;
-  }
-  for (int colour = 0; colour < colouring.colours(); ++colour) {
-    const auto begin = static_cast<std::size_t>(colouring.colour_start[static_cast<std::size_t>(colour)]);
-    const auto end = static_cast<std::size_t>(colouring.colour_start[static_cast<std::size_t>(colour) + 1]);
-    const std::size_t middle = begin + (end - begin) / 2;
-    runner->run(2, [&](int part) {
-      const std::span<const int> half = part == 0 ? all.subspan(begin, middle - begin) : all.subspan(middle, end - middle);
-      solve_distance_range(edges, rest, k, c, half, h, carried, x, previous, w, tension);
-    });
   }
 }
 
@@ -133,14 +108,13 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
     const std::span<const double> w(model.inverse_mass.data() + first, count);
     const std::size_t edges = body.topology.edges.size();
     const std::span<double> body_tension(tension.data() + first_tension_[b], edges + body.topology.bending_links.size());
-    PartRunner* runner = dynamics.runner_for(count);
     solve_distances(body.topology.edges, body.rest.edge_length_m, body.params.stiffness_N_per_m,
                     body.params.damping_N_s_per_m, colourings_[b], h, carried(b, h), x, previous, w,
-                    body_tension.first(edges), runner);
+                    body_tension.first(edges));
     if (body.params.bending_N_per_m == 0.0) continue;
     solve_distances(body.topology.bending_links, body.rest.bending_length_m, body.params.bending_N_per_m,
                     body.params.bending_damping_N_s_per_m, link_colourings_[b], h, carried(b, h), x, previous, w,
-                    body_tension.subspan(edges), runner);
+                    body_tension.subspan(edges));
   }
   // 3. Velocities from the positions.
   const double inverse_h = 1.0 / h;

@@ -15,9 +15,7 @@ namespace sim {
 // solver.substeps of them (sim::Solver), and sim::step runs the contacts after each one.
 //
 //   1. predict   v ← v + h (f_gravity + f_gas)/m,  x ← x + h v      x* = x + h v + h² f/m, the gas explicit
-//   2. edges     one pass over every edge constraint C = |x_i − x_j| − L0, colour by colour (EdgeColouring;
-//                a body of at least kParallelMinVertices runs each colour in two halves on two threads, the same
-//                bits: no two edges of a colour share a vertex):
+//   2. edges     one pass over every edge constraint C = |x_i − x_j| − L0, colour by colour (EdgeColouring):
 //                with compliance α = 1/k, damping β = c (the Rayleigh dissipation ½ β Ċ² of the dashpot c along
 //                the edge) and γ = α β / h (XPBD Eq. 26, λ = 0 at the start of the single iteration):
 //                  Δλ = (−C − γ ∇C·(x − x_prev)) / ((1 + γ) (w_i + w_j) + α/h²)
