@@ -1,7 +1,7 @@
 # Wall time per simulated second against error for the issue-13 bounce (bench/run_large_steps.sh): one panel per
 # icosphere level, one point (or line over steps) per integrator and floor contact, Bullet's btSoftBody in black.
 set datafile separator ','
-set terminal pngcairo size 1500,600 enhanced font 'Sans,10'
+set terminal pngcairo size 1800,600 enhanced font 'Sans,10'
 set output 'large_steps_bounce.png'
 set logscale xy
 set format x '10^{%L}'
@@ -19,12 +19,12 @@ csv = 'large_steps_bounce.csv'
 ok(level, program, contact) = (column(1) == level && strcol(3) eq program && strcol(5) eq contact && strcol(17) eq 'ok')
 duration(level) = system(sprintf("awk -F, '$1==%d && $3 ~ /^reference rk45/ {print $2; exit}' %s", level, csv))
 levels = system(sprintf("tail -n +2 %s | cut -d, -f1 | sort -nu | tr '\\n' ' '", csv))
-set xrange [1e-5:3]
+set xrange [1e-5:10]
 set yrange [1e-3:1e3]
 set multiplot layout 1,words(levels) title "bounce (k 1000 N/m, c 1 N s/m, nRT 50 J, 1 kg): error against rk45 at tolerance 1e-8 (smooth floor); CPU time on one thread of this shared 2-core machine"
 do for [l = 1:words(levels)] {
   level = word(levels, l)
-  if (l == words(levels)) { set key outside right top vertical font ',9' } else { unset key }
+  if (l == 1) { set key inside left bottom vertical font ',8' } else { unset key }  # level 3 has room there
   set title sprintf('icosphere:%s, first %s s', level, duration(level + 0))
   set xlabel 'RMS vertex error over the frames [m]'
   set ylabel 'CPU s per simulated s'
