@@ -13,24 +13,14 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "mesh/ply_format.hpp"
 
 namespace mesh {
 namespace {
 
 using softbody::InputError;
-
-// The header's lines: `head` split at '\n' (a '\r' before it dropped), into whitespace-separated words.
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
+using ply::type_bytes;
+using ply::words_of;
 
 // A decimal count of at most 18 digits, or -1.
 long long count_of(std::string_view word) {
@@ -41,29 +31,6 @@ long long count_of(std::string_view word) {
     n = 10 * n + (c - '0');
   }
   return n;
-}
-
-// Bytes of a PLY scalar type, 0 for an unknown name; `kind` says what it holds: 'i' a signed integer, 'u' an
-// unsigned one (either may count a list), 'f' a floating-point number.
-int type_bytes(std::string_view type, char* kind) {
-  struct Type {
-    std::string_view name;
-    int bytes;
-    char kind;
-  };
-  static constexpr std::array<Type, 16> kTypes{{{"char", 1, 'i'},    {"uchar", 1, 'u'},   {"short", 2, 'i'},
-                                                {"ushort", 2, 'u'},  {"int", 4, 'i'},     {"uint", 4, 'u'},
-                                                {"float", 4, 'f'},   {"double", 8, 'f'},  {"int8", 1, 'i'},
-                                                {"uint8", 1, 'u'},   {"int16", 2, 'i'},   {"uint16", 2, 'u'},
-                                                {"int32", 4, 'i'},   {"uint32", 4, 'u'},  {"float32", 4, 'f'},
-                                                {"float64", 8, 'f'}}};
-  for (const Type& t : kTypes) {
-    if (t.name == type) {
-      if (kind) *kind = t.kind;
-      return t.bytes;
-    }
-  }
-  return 0;
 }
 
 struct Property {
@@ -83,9 +50,7 @@ struct Element {
 
 // An unsigned list count of `bytes` bytes at `p` (a negative signed count reads as huge: refused as such).
 unsigned long long list_count(const unsigned char* p, int bytes, bool big_endian) {
-  unsigned long long n = 0;
-  for (int i = 0; i < bytes; ++i) n = (n << 8) | p[big_endian ? i : bytes - 1 - i];
-  return n;
+  return ply::unsigned_at(p, bytes, big_endian);
 }
 
 // A binary list item as a double (exact for integers of up to 32 bits).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "mesh/ply_format.hpp"
 
 namespace mesh {
 namespace {
@@ -33,48 +34,13 @@ struct Header {
   std::size_t body = 0;  // the first byte after "end_header" and its line end
 };
 
-std::vector<std::string_view> words_of(std::string_view line) {
-  std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
 // Bytes of a PLY scalar type (0: unknown); `is_signed` / `is_float` say what it holds.
 int type_bytes(std::string_view type, bool* is_signed, bool* is_float) {
-  struct Type {
-    std::string_view name;
-    int bytes;
-    char kind;  // 'i' signed, 'u' unsigned, 'f' floating-point
-  };
-  static constexpr std::array<Type, 16> kTypes{{{"char", 1, 'i'},
-                                                {"uchar", 1, 'u'},
-                                                {"short", 2, 'i'},
-                                                {"ushort", 2, 'u'},
-                                                {"int", 4, 'i'},
-                                                {"uint", 4, 'u'},
-                                                {"float", 4, 'f'},
-                                                {"double", 8, 'f'},
-                                                {"int8", 1, 'i'},
-                                                {"uint8", 1, 'u'},
-                                                {"int16", 2, 'i'},
-                                                {"uint16", 2, 'u'},
-                                                {"int32", 4, 'i'},
-                                                {"uint32", 4, 'u'},
-                                                {"float32", 4, 'f'},
-                                                {"float64", 8, 'f'}}};
-  for (const Type& t : kTypes) {
-    if (t.name != type) continue;
-    *is_signed = t.kind == 'i';
-    *is_float = t.kind == 'f';
-    return t.bytes;
-  }
-  return 0;
+  char kind = 'u';
+  const int bytes = ply::type_bytes(type, &kind);
+  *is_signed = kind == 'i';
+  *is_float = kind == 'f';
+  return bytes;
 }
 
 std::optional<Header> parse_header(std::string_view whole) {
@@ -84,7 +50,7 @@ std::optional<Header> parse_header(std::string_view whole) {
   while (at < whole.size()) {
     const std::size_t end = whole.find('\n', at);
     if (end == std::string_view::npos) return std::nullopt;
-    const std::vector<std::string_view> words = words_of(whole.substr(at, end - at));
+    const std::vector<std::string_view> words = ply::words_of(whole.substr(at, end - at));
     const std::size_t line = at;
     at = end + 1;
     if (words.empty()) continue;
@@ -127,8 +93,7 @@ std::optional<Header> parse_header(std::string_view whole) {
 
 // An integer of `bytes` bytes at `p` in the file's byte order.
 long long integer_at(const unsigned char* p, int bytes, bool is_signed, bool big_endian) {
-  unsigned long long raw = 0;
-  for (int i = 0; i < bytes; ++i) raw = (raw << 8) | p[big_endian ? i : bytes - 1 - i];
+  const unsigned long long raw = ply::unsigned_at(p, bytes, big_endian);
   if (!is_signed) return static_cast<long long>(raw);
   const unsigned long long sign = 1ULL << (8 * bytes - 1);
   return static_cast<long long>(raw ^ sign) - static_cast<long long>(sign);
