@@ -76,7 +76,9 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   prepare_once(model);
   const double h = dt;
   std::vector<double>& tension = state.carry.edge_tension_N;
-  if (tension.size() != tension_count_) tension.assign(tension_count_, 0.0);  // none carried yet: no force
+  const bool first_substep = tension.size() != tension_count_;  // of the run (or after State::forget_carry)
+  if (first_substep) tension.assign(tension_count_, 0.0);          // none carried yet: no force
+  const double kick = first_substep ? 0.5 * h : h;  // the leapfrog start: v_{1/2} = v_0 + ½ h a_0 (xpbd.hpp)
   previous_x_ = state.x;
   // 1. Predict with the forces that are not constraints (carried bodies: and their constraints' last forces).
   dynamics.gravity_and_gas_forces(state, force_);
@@ -96,7 +98,7 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
     }
   }
   for (std::size_t i = 0; i < state.x.size(); ++i) {
-    state.v[i] += (h * model.inverse_mass[i]) * force_[i];
+    state.v[i] += (kick * model.inverse_mass[i]) * force_[i];
     state.x[i] += h * state.v[i];
   }
   // 2. The edge constraints, body by body.

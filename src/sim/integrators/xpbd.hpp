@@ -26,6 +26,12 @@ namespace sim {
 //                after the edges (bodies without bending stiffness skip it)
 //   3. velocity  v = (x − x_prev)/h
 //
+// The velocities are those of the half substeps, (x − x_prev)/h, as in the leapfrog form of symplectic Euler:
+// the first substep of a run (nothing carried yet: the start, a state whose carry was forgotten) kicks by h/2,
+// v_{1/2} = v_0 + ½ h a_0, and the others by h. The positions are then exact for a constant force (gravity: a
+// falling centre of mass) instead of leading by ½ g h t as a whole first kick makes them (tests/integrators/
+// free_fall_test.cpp); the velocity written out at a frame is the last half substep's, ½ h a behind.
+//
 // The carried form, taken when h ≤ xpbd_carried_dt (sim/stability.hpp; from ω_max of the body at the initial
 // state, springs, gas and contact): every edge and link carries the force its constraint exerted in the last
 // substep, T_e = −Δλ/h² (a tension along the edge, in State::carry.edge_tension_N), step 1 also applies those
