@@ -7,11 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bounce_run.hpp"
+#include "reference_cache.hpp"
 #include "setup/build_world.hpp"
 #include "sim/stability.hpp"
 #include "trajectory_error.hpp"
@@ -35,6 +36,7 @@ struct Options {
   double repeat_below_s = 5.0;
   bool header = true;
   bool reference = true;  // false: no rk45 reference (level 6: over 15 CPU min), the error columns empty
+  std::string reference_cache;  // a file holding the reference run (read if it holds one, else written)
 };
 
 // One CSV row's description of a run.
@@ -110,12 +112,25 @@ sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double 
   return dt <= sim::stable_dt(integrator, estimate.bodies.at(0)) ? sim::FloorContact::Smooth : sim::FloorContact::Friction;
 }
 
+// The reference cache of `level`: the option's path with "%d" replaced by the level (several levels, one option).
+std::string cache_path(const std::string& pattern, int level) {
+  const std::size_t at = pattern.find("%d");
+  return at == std::string::npos ? pattern : pattern.substr(0, at) + std::to_string(level) + pattern.substr(at + 2);
+}
+
 void run_level(int level, const Options& o) {
   BounceSetup reference_setup;
   reference_setup.level = level;
   reference_setup.integrator = sim::IntegratorKind::Rk45;
   reference_setup.tolerance = o.reference_tolerances.at(0);
-  const BounceRecord reference = o.reference ? bench::record_bounce(reference_setup, o.duration_s) : BounceRecord{};
+  BounceRecord reference;
+  if (o.reference) {
+    const std::string cache = cache_path(o.reference_cache, level);
+    std::optional<BounceRecord> cached;
+    if (!cache.empty()) cached = bench::load_record(cache);
+    reference = cached ? *cached : bench::record_bounce(reference_setup, o.duration_s);
+    if (!cache.empty() && !cached) bench::save_record(reference, cache);
+  }
   const BounceRecord* compared = o.reference ? &reference : nullptr;
   if (o.reference) {
     print_row(level, o, {"reference rk45", "ours", "smooth", tolerance_label(reference_setup.tolerance)}, reference, 1,
@@ -160,6 +175,7 @@ void run_level(int level, const Options& o) {
     }
   }
   for (const int rate : o.bullet_rates) {
+    if (rate <= 0) continue;  // --bullet-rates 0 (or ''): no Bullet run
     int runs = 0;
     const BounceRecord r = timed(o, [&] { return bench::record_bullet_bounce(level, 1.0 / rate, o.duration_s); }, runs);
     print_row(level, o, {"bullet btSoftBody", "bullet (own model)", "bullet SDF_RS", "1/" + std::to_string(rate) + " s"},
@@ -184,7 +200,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"smooth", "friction"}));
   cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
       ->delimiter(',');
-  cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second")
+  cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second (0: no Bullet run)")
       ->delimiter(',');
   cli.add_option("--reference-tolerances", o.reference_tolerances,
                  "rk45 tolerances of the reference (the first) and of its checks")
@@ -194,6 +210,10 @@ int main(int argc, char** argv) {
   cli.add_option("--repeat-below", o.repeat_below_s, "wall seconds");
   cli.add_flag("!--no-header", o.header, "no CSV header line (to append)");
   cli.add_flag("!--no-reference", o.reference, "no rk45 reference run: timings only, the error columns empty");
+  cli.add_option("--reference-cache", o.reference_cache,
+                 "file with the reference run (%d: the level), read if it holds one, else written after computing it "
+                 "(its row then repeats the times of the run that wrote it; same duration and tolerance are the "
+                 "caller's business); bench_xpbd_convergence writes the same records");
   CLI11_PARSE(cli, argc, argv);
   for (const std::string& name : o.integrators) {
     if (!sim::integrator_named(name)) {
