@@ -150,8 +150,9 @@ constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
 // against the rk45 1e-8 reference): icosphere:5 (ω_max 8442 rad/s, 1 s) diverged at h ω_max 4.7 (30 substeps per
 // 1/60 s), ran at 3.1 (45) with 4.1 % volume error at the impact, and at 2.3 and 1.9 (60, 75) with 1.3 and 0.46 %,
 // centre of mass 1.7 and 0.35 cm; icosphere:3 (ω_max 2097 rad/s, 3 s) ran at 2.9 (12) with 2.4 % in flight and at
-// 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. The limit takes 1.9: accurate on both meshes, 0.6 × the fastest step
-// that stayed stable (a fit of two meshes and one material; the guard stops a run that diverges anyway, and
+// 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. (Those runs started with a whole first kick; with the leapfrog
+// start, xpbd.hpp, icosphere:5 at 75 has 1.1 % at the impact and 1.3 cm: README, "The leapfrog start".) The
+// limit takes 1.9: about 1 % on both meshes, 0.6 × the fastest step that stayed stable (a fit of two meshes and one material; the guard stops a run that diverges anyway, and
 // solver.retry halves the substep, which keeps the form).
 constexpr double kXpbdCarriedPhaseLimit = 1.9;
 // The largest substep of the carried form for a body with fastest mode ω_max (kUnlimited: no modes).
