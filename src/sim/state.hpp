@@ -23,7 +23,8 @@ struct IntegratorCarry {
   // vertex component, 3n entries]; empty at the start (a zero guess).
   Eigen::VectorXd velocity_change;
   // xpbd's carried form: every body's edge and bending-link constraints' forces of the last substep, T = −Δλ/h²
-  // [N], body by body (its edges, then its links); empty at the start (none carried: zero).
+  // [N], body by body (its edges, then its links); empty at the start (none carried: zero; the next substep is then
+  // a run's first, which kicks by h/2: sim/integrators/xpbd.hpp).
   std::vector<double> edge_tension_N;
   // rk45's step-size controller.
   double previous_error = 1e-4;  // err of the last accepted step (PI control)
