@@ -123,14 +123,9 @@ void run_level(int level, const Options& o) {
   reference_setup.level = level;
   reference_setup.integrator = sim::IntegratorKind::Rk45;
   reference_setup.tolerance = o.reference_tolerances.at(0);
-  BounceRecord reference;
-  if (o.reference) {
-    const std::string cache = cache_path(o.reference_cache, level);
-    std::optional<BounceRecord> cached;
-    if (!cache.empty()) cached = bench::load_record(cache);
-    reference = cached ? *cached : bench::record_bounce(reference_setup, o.duration_s);
-    if (!cache.empty() && !cached) bench::save_record(reference, cache);
-  }
+  const BounceRecord reference =
+      o.reference ? bench::load_or_record(reference_setup, o.duration_s, cache_path(o.reference_cache, level))
+                  : BounceRecord{};
   const BounceRecord* compared = o.reference ? &reference : nullptr;
   if (o.reference) {
     print_row(level, o, {"reference rk45", "ours", "smooth", tolerance_label(reference_setup.tolerance)}, reference, 1,

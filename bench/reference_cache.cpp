@@ -56,4 +56,13 @@ void save_record(const BounceRecord& record, const std::string& path) {
   }
 }
 
+BounceRecord load_or_record(const BounceSetup& setup, double duration_s, const std::string& path) {
+  if (!path.empty()) {
+    if (std::optional<BounceRecord> cached = load_record(path)) return *cached;
+  }
+  BounceRecord record = record_bounce(setup, duration_s);
+  if (!path.empty()) save_record(record, path);
+  return record;
+}
+
 }  // namespace bench

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,10 +100,7 @@ int main(int argc, char** argv) {
     reference_setup.integrator = *sim::integrator_named(integrator);
     reference_setup.dt_s = bench::kBounceSampleInterval_s / against_substeps;
   }
-  std::optional<BounceRecord> cached;
-  if (!reference_cache.empty()) cached = bench::load_record(reference_cache);
-  const BounceRecord reference = cached ? *cached : bench::record_bounce(reference_setup, duration_s);
-  if (!reference_cache.empty() && !cached) bench::save_record(reference, reference_cache);
+  const BounceRecord reference = bench::load_or_record(reference_setup, duration_s, reference_cache);
   const std::size_t touch = first_touch(reference), leave = end_of_squash(reference, touch);
   if (against_substeps > 0) std::printf("# against %s at %d steps per 1/60 s, not rk45\n", integrator.c_str(), against_substeps);
   std::printf("# %s, level %d, %.4g s; reference rk45 %.0e; phases: flight to %.4g s, impact (squash) to %.4g s, after\n",

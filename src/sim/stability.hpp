@@ -152,8 +152,9 @@ constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
 // centre of mass 1.7 and 0.35 cm; icosphere:3 (ω_max 2097 rad/s, 3 s) ran at 2.9 (12) with 2.4 % in flight and at
 // 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. (Those runs started with a whole first kick; with the leapfrog
 // start, xpbd.hpp, icosphere:5 at 75 has 1.1 % at the impact and 1.3 cm: README, "The leapfrog start".) The
-// limit takes 1.9: about 1 % on both meshes, 0.6 × the fastest step that stayed stable (a fit of two meshes and one material; the guard stops a run that diverges anyway, and
-// solver.retry halves the substep, which keeps the form).
+// limit takes 1.9: about 1 % on both meshes, 0.6 × the fastest step that stayed stable (a fit of two meshes and
+// one material; the guard stops a run that diverges anyway, and solver.retry halves the substep, which keeps the
+// form).
 constexpr double kXpbdCarriedPhaseLimit = 1.9;
 // The largest substep of the carried form for a body with fastest mode ω_max (kUnlimited: no modes).
 double xpbd_carried_dt(double omega_max);

@@ -89,8 +89,8 @@ TEST(FirstOrderFreeFall, MissesByHalfGHT) {
 // ulp(x)/h ≈ 1e-12 m/s each substep, and feeds the next positions (measured 5.6e-11 m and 1.1e-10 m/s).
 TEST(XpbdFreeFall, PositionsFollowTheParabolaAndVelocitiesLagByHalfASubstep) {
   constexpr double kXpbdRoundOff = 1e-9;
-  for (const char* scene : {kThrownSphere, kDust}) {
-    sim::World world = make_world(scene, sim::IntegratorKind::Xpbd);
+  for (const bool dust : {false, true}) {
+    sim::World world = make_world(dust ? kDust : kThrownSphere, sim::IntegratorKind::Xpbd);
     const Vec3 com0 = sim::diagnose(world.model, world.state, 0).com_m;
     const std::vector<Vec3> x0 = world.state.x;
     integrator_tests::run_for(world, kDuration, kDt);
@@ -98,8 +98,9 @@ TEST(XpbdFreeFall, PositionsFollowTheParabolaAndVelocitiesLagByHalfASubstep) {
     EXPECT_LT((d.com_m - free_fall(com0, kDuration)).norm(), kXpbdRoundOff);
     const Vec3 half_substep_velocity = kV0 + kG * (kDuration - 0.5 * kDt);
     EXPECT_LT((d.com_velocity_m_per_s - half_substep_velocity).norm(), kXpbdRoundOff);
-    if (scene == kDust) {
-      for (std::size_t i = 0; i < x0.size(); ++i) EXPECT_LT((world.state.x[i] - free_fall(x0[i], kDuration)).norm(), kXpbdRoundOff);
+    if (!dust) continue;  // the sphere's vertices breathe; the dust's each fall freely
+    for (std::size_t i = 0; i < x0.size(); ++i) {
+      EXPECT_LT((world.state.x[i] - free_fall(x0[i], kDuration)).norm(), kXpbdRoundOff);
     }
   }
 }
