@@ -10,13 +10,13 @@ namespace bench {
 
 // What a benchmark varies on top of bounce.json (springs, dampers, pressure, gravity, paper floor).
 struct BenchCase {
-  int level = 3;                                     // icosphere subdivision level (1..6)
+  int level = 3;  // icosphere subdivision level (1..6)
   sim::IntegratorKind integrator = sim::IntegratorKind::Symplectic;
-  bool pressure = true;                              // false: nRT = 0 (no volume or pressure pass)
-  bool damping = true;                               // false: c = 0 (no damper term)
-  bool floor = true;                                 // false: no floor (no contact pass)
-  bool on_floor = false;                             // true: starts touching the floor (centre at y = 1 m)
-  int threads = 1;                                   // solver.threads (large bodies' force passes)
+  bool pressure = true;   // false: nRT = 0 (no volume or pressure pass)
+  bool damping = true;    // false: c = 0 (no damper term)
+  bool floor = true;      // false: no floor (no contact pass)
+  bool on_floor = false;  // true: starts touching the floor (centre at y = 1 m)
+  int threads = 1;        // solver.threads (large bodies' force passes)
 };
 
 // The time step used at `level`: bounce.json's 1e-4 s up to level 4, then quartered per level, because

@@ -2,8 +2,8 @@
 #include "bounce_run.hpp"
 
 #include <chrono>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 #include <exception>
 #include <numeric>
 
@@ -25,10 +25,9 @@ using softbody::Vec3;
 const std::string kBounceScene = std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce.json";
 
 scene::Scene bounce_scene(const BounceSetup& setup) {
-  scene::Scene s = scene::load_scene(kBounceScene, {"bodies.0.stiffness=1000", "bodies.0.damping=1",
-                                                    "bodies.0.pressure=50", "bodies.0.mass=1", "fps=60",
-                                                    "solver.threads=1",
-                                                    "bodies.0.mesh=icosphere:" + std::to_string(setup.level)});
+  scene::Scene s = scene::load_scene(
+      kBounceScene, {"bodies.0.stiffness=1000", "bodies.0.damping=1", "bodies.0.pressure=50", "bodies.0.mass=1",
+                     "fps=60", "solver.threads=1", "bodies.0.mesh=icosphere:" + std::to_string(setup.level)});
   s.floor->contact = setup.contact;
   s.solver.integrator = setup.integrator;
   s.solver.tolerance = setup.tolerance;

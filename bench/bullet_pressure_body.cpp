@@ -32,8 +32,8 @@ BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std:
   floor_pose.setIdentity();
   floor_pose.setOrigin(btVector3(0, static_cast<btScalar>(spec.floor_height_m - 1.0), 0));
   p.floor_motion = std::make_unique<btDefaultMotionState>(floor_pose);
-  p.floor = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, p.floor_motion.get(),
-                                                                                   &p.floor_shape));
+  p.floor =
+      std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, p.floor_motion.get(), &p.floor_shape));
   p.world.addRigidBody(p.floor.get());
 
   std::vector<btScalar> xyz;
@@ -42,8 +42,8 @@ BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std:
   }
   std::vector<int> indices;
   for (const auto& t : spec.triangles) indices.insert(indices.end(), t.begin(), t.end());
-  p.body = btSoftBodyHelpers::CreateFromTriMesh(info, xyz.data(), indices.data(),
-                                                static_cast<int>(spec.triangles.size()));
+  p.body =
+      btSoftBodyHelpers::CreateFromTriMesh(info, xyz.data(), indices.data(), static_cast<int>(spec.triangles.size()));
   p.body->m_cfg.kPR = static_cast<btScalar>(spec.pressure);
   p.body->m_cfg.kDP = static_cast<btScalar>(0.001);
   p.body->m_cfg.collisions = btSoftBody::fCollision::SDF_RS;

@@ -14,7 +14,7 @@ struct BulletBodySpec {
   std::vector<softbody::Vec3> vertices_m;
   std::vector<std::array<int, 3>> triangles;
   double mass_kg = 1.0;
-  double pressure = 30.0;         // kPR
+  double pressure = 30.0;  // kPR
   double gravity_m_per_s2 = -9.81;
   double floor_height_m = 0.0;
   softbody::Vec3 velocity_m_per_s = softbody::Vec3::Zero();

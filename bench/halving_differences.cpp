@@ -23,7 +23,7 @@ struct Run {
   std::vector<std::vector<Vec3>> frames;  // positions at every frame, frame 0 included
   double dt_s = 0.0;                      // the frame-aligned step used
   bool diverged = false;
-  int most_folded_edges = 0;              // the largest count of inward folds over the frames (body 0)
+  int most_folded_edges = 0;  // the largest count of inward folds over the frames (body 0)
 };
 
 // Edges of body 0 whose two faces fold inward by more than 10° (a convex shell has none; a buckled one many).
@@ -103,14 +103,17 @@ int main(int argc, char** argv) {
   app.add_option("scene", scene_file, "Scene file")->required();
   app.add_option("--integrator", integrator, "Method (as solver.integrator)")->capture_default_str();
   app.add_option("--duration", duration_s, "Simulated seconds")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--dt", coarsest_dt_s, "Coarsest step [s], then halved")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--dt", coarsest_dt_s, "Coarsest step [s], then halved")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--runs", runs, "Runs (dt, dt/2, ...)")->check(CLI::Range(2, 12))->capture_default_str();
   app.add_option("--set", overrides, "KEY=VALUE overrides, as for softbody");
   CLI11_PARSE(app, argc, argv);
   try {
     std::vector<Run> sweep;
     double dt = coarsest_dt_s;
-    for (int k = 0; k < runs; ++k, dt /= 2.0) sweep.push_back(run_fixed_steps(scene_file, overrides, integrator, dt, duration_s));
+    for (int k = 0; k < runs; ++k, dt /= 2.0)
+      sweep.push_back(run_fixed_steps(scene_file, overrides, integrator, dt, duration_s));
     std::printf("%s: most edges folded inward > 10 deg at any frame, finest run: %d\n", integrator.c_str(),
                 sweep.back().most_folded_edges);
     double previous = 0.0;

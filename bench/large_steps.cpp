@@ -25,17 +25,17 @@ using bench::BounceSetup;
 struct Options {
   std::vector<int> levels{3};
   std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "newton", "xpbd"};
-  std::vector<int> rates{60, 240};         // implicit: dt = 1/rate
-  std::vector<int> newton_rates{60, 240};  // newton: dt = 1/rate
+  std::vector<int> rates{60, 240};                                 // implicit: dt = 1/rate
+  std::vector<int> newton_rates{60, 240};                          // newton: dt = 1/rate
   std::vector<std::string> newton_contacts{"smooth", "friction"};  // newton: floor contacts (both in one run)
-  std::vector<std::string> friction_too{"symplectic"};  // also run at their automatic step on the friction floor
-  std::vector<int> bullet_rates{60, 240};  // Bullet: dt = 1/rate
+  std::vector<std::string> friction_too{"symplectic"};   // also run at their automatic step on the friction floor
+  std::vector<int> bullet_rates{60, 240};                // Bullet: dt = 1/rate
   std::vector<double> reference_tolerances{1e-8, 1e-7};  // rk45: the first is the reference
   double duration_s = 3.0;
-  int repeats = 3;              // runs whose CPU time is below repeat_below_s are repeated: medians
+  int repeats = 3;  // runs whose CPU time is below repeat_below_s are repeated: medians
   double repeat_below_s = 5.0;
   bool header = true;
-  bool reference = true;  // false: no rk45 reference (level 6: over 15 CPU min), the error columns empty
+  bool reference = true;        // false: no rk45 reference (level 6: over 15 CPU min), the error columns empty
   std::string reference_cache;  // a file holding the reference run (read if it holds one, else written)
 };
 
@@ -77,7 +77,8 @@ void print_row(int level, const Options& o, const RowLabel& label, const BounceR
                const BounceRecord* reference) {
   bench::TrajectoryError e;
   if (reference != nullptr) e = bench::trajectory_error(r, *reference);
-  const double simulated = bench::kBounceSampleInterval_s * static_cast<double>(std::max<std::size_t>(r.volume_m3.size(), 2) - 1);
+  const double simulated =
+      bench::kBounceSampleInterval_s * static_cast<double>(std::max<std::size_t>(r.volume_m3.size(), 2) - 1);
   std::printf("%d,%.4g,%s,%s,%s,%s,%.6g,%lld,%.5g,%.5g,%d,", level, o.duration_s, label.program.c_str(),
               label.model.c_str(), label.contact.c_str(), label.step.c_str(), r.dt_s, r.steps, r.cpu_s / simulated,
               r.wall_s / simulated, runs);
@@ -109,7 +110,8 @@ sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double 
   double dt = 0.0;
   const sim::World world = bench::bounce_world(probe, dt);
   const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-  return dt <= sim::stable_dt(integrator, estimate.bodies.at(0)) ? sim::FloorContact::Smooth : sim::FloorContact::Friction;
+  return dt <= sim::stable_dt(integrator, estimate.bodies.at(0)) ? sim::FloorContact::Smooth
+                                                                 : sim::FloorContact::Friction;
 }
 
 // The reference cache of `level`: the option's path with "%d" replaced by the level (several levels, one option).
@@ -162,9 +164,11 @@ void run_level(int level, const Options& o) {
       setup.dt_s = dt;
       setup.contact = contact;
       int runs = 0;
-      const BounceRecord r = timed(o, [&] { return bench::record_bounce(setup, o.duration_s); }, runs);
-      std::string step = dt > 0.0 ? "1/" + std::to_string(std::lround(1.0 / dt)) + " s"
-                                  : integrator == sim::IntegratorKind::Xpbd ? "substeps auto" : "dt auto";
+      const BounceRecord r = timed(
+          o, [&] { return bench::record_bounce(setup, o.duration_s); }, runs);
+      std::string step = dt > 0.0                                  ? "1/" + std::to_string(std::lround(1.0 / dt)) + " s"
+                         : integrator == sim::IntegratorKind::Xpbd ? "substeps auto"
+                                                                   : "dt auto";
       if (integrator == sim::IntegratorKind::Rk45) step += " (" + tolerance_label(setup.tolerance) + ")";
       print_row(level, o, {"softbody " + name, "ours", sim::to_string(setup.contact), step}, r, runs, compared);
     }
@@ -172,17 +176,20 @@ void run_level(int level, const Options& o) {
   for (const int rate : o.bullet_rates) {
     if (rate <= 0) continue;  // --bullet-rates 0 (or ''): no Bullet run
     int runs = 0;
-    const BounceRecord r = timed(o, [&] { return bench::record_bullet_bounce(level, 1.0 / rate, o.duration_s); }, runs);
-    print_row(level, o, {"bullet btSoftBody", "bullet (own model)", "bullet SDF_RS", "1/" + std::to_string(rate) + " s"},
-              r, runs, compared);
+    const BounceRecord r = timed(
+        o, [&] { return bench::record_bullet_bounce(level, 1.0 / rate, o.duration_s); }, runs);
+    print_row(level, o,
+              {"bullet btSoftBody", "bullet (own model)", "bullet SDF_RS", "1/" + std::to_string(rate) + " s"}, r, runs,
+              compared);
   }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli("bench_large_steps: the bounce of issue 13, every integrator and Bullet, wall time per simulated "
-               "second against the error from a converged rk45 run (smooth floor); CSV on stdout");
+  CLI::App cli(
+      "bench_large_steps: the bounce of issue 13, every integrator and Bullet, wall time per simulated "
+      "second against the error from a converged rk45 run (smooth floor); CSV on stdout");
   Options o;
   cli.add_option("--levels", o.levels, "icosphere levels")->delimiter(',');
   cli.add_option("--integrators", o.integrators, "integrators (newton and implicit run at each of --rates)")
@@ -195,8 +202,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"smooth", "friction"}));
   cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
       ->delimiter(',');
-  cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second (0: no Bullet run)")
-      ->delimiter(',');
+  cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second (0: no Bullet run)")->delimiter(',');
   cli.add_option("--reference-tolerances", o.reference_tolerances,
                  "rk45 tolerances of the reference (the first) and of its checks")
       ->delimiter(',');
@@ -217,8 +223,9 @@ int main(int argc, char** argv) {
     }
   }
   if (o.header) {
-    std::printf("level,duration_s,program,model,contact,step,dt_s,steps,cpu_s_per_sim_s,wall_s_per_sim_s,runs,com_max_error_m,"
-                "volume_worst_error_pct,rms_end_m,rms_samples_m,newton_iterations_per_step,status\n");
+    std::printf(
+        "level,duration_s,program,model,contact,step,dt_s,steps,cpu_s_per_sim_s,wall_s_per_sim_s,runs,com_max_error_m,"
+        "volume_worst_error_pct,rms_end_m,rms_samples_m,newton_iterations_per_step,status\n");
   }
   for (const int level : o.levels) run_level(level, o);
   return 0;

@@ -61,13 +61,16 @@ int run(const std::string& scene_file, const std::vector<std::string>& overrides
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     const sim::Body& body = world.model.bodies[b];
     const analysis::ShapeDeviation end = deviation_of(world, b, initial);
-    const double volume = sim::enclosed_volume(body.topology.faces, world.model.of(body, std::span<const Vec3>(world.state.x)));
-    const double volume0 = sim::enclosed_volume(body.topology.faces, world.model.of(body, std::span<const Vec3>(initial)));
-    std::printf("body %zu: %d vertices, %zu bending links (k_b %.4g N/m, k %.4g N/m); size %.4g m; at the end "
-                "largest deviation %.4f of the size (RMS %.4f), volume %.3f of the initial; largest over the frames %.4f\n",
-                b, body.vertex_count, body.topology.bending_links.size(), body.params.bending_N_per_m,
-                body.params.stiffness_N_per_m, end.body_size_m, end.relative(), end.rms_m / end.body_size_m,
-                volume / volume0, largest[b]);
+    const double volume =
+        sim::enclosed_volume(body.topology.faces, world.model.of(body, std::span<const Vec3>(world.state.x)));
+    const double volume0 =
+        sim::enclosed_volume(body.topology.faces, world.model.of(body, std::span<const Vec3>(initial)));
+    std::printf(
+        "body %zu: %d vertices, %zu bending links (k_b %.4g N/m, k %.4g N/m); size %.4g m; at the end "
+        "largest deviation %.4f of the size (RMS %.4f), volume %.3f of the initial; largest over the frames %.4f\n",
+        b, body.vertex_count, body.topology.bending_links.size(), body.params.bending_N_per_m,
+        body.params.stiffness_N_per_m, end.body_size_m, end.relative(), end.rms_m / end.body_size_m, volume / volume0,
+        largest[b]);
   }
   return 0;
 }

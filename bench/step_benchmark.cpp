@@ -36,8 +36,8 @@ void run_steps(benchmark::State& st, const BenchCase& c) {
     }
   }
   st.counters["vertices"] = vertices;
-  st.counters["vertex_steps_per_s"] = benchmark::Counter(vertices * static_cast<double>(st.iterations()),
-                                                         benchmark::Counter::kIsRate);
+  st.counters["vertex_steps_per_s"] =
+      benchmark::Counter(vertices * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
   st.counters["rebuilds"] = rebuilds;
 }
 
@@ -105,8 +105,8 @@ void BM_Bullet(benchmark::State& st) {
   const auto vertices = static_cast<double>(bullet.vertex_count());
   st.SetLabel("bullet float, height " + std::to_string(bullet.first_node_height_m()));
   st.counters["vertices"] = vertices;
-  st.counters["vertex_steps_per_s"] = benchmark::Counter(vertices * static_cast<double>(st.iterations()),
-                                                         benchmark::Counter::kIsRate);
+  st.counters["vertex_steps_per_s"] =
+      benchmark::Counter(vertices * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
 }
 
 // Body–body contact: scenes/pile.json's four bodies (1800 vertices) stacked, each resting on the one below,
@@ -127,8 +127,8 @@ void BM_Contact(benchmark::State& st) {
   const auto vertices = static_cast<double>(world.state.x.size());
   st.SetLabel(touching ? "stacked" : "apart");
   st.counters["vertices"] = vertices;
-  st.counters["vertex_steps_per_s"] = benchmark::Counter(vertices * static_cast<double>(st.iterations()),
-                                                         benchmark::Counter::kIsRate);
+  st.counters["vertex_steps_per_s"] =
+      benchmark::Counter(vertices * static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
 }
 
 void step_args(benchmark::internal::Benchmark* b) {

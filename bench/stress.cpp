@@ -27,8 +27,9 @@ int main(int argc, char** argv) {
     const auto rows = analysis::measure_limits(analysis::limit_bodies(), limit_steps);
     for (const auto& r : rows) {
       std::printf("%-15s %-11s %-5s %-10s estimate %.4g s, measured stable %.4g s (unstable %.4g s): ratio %.3f\n",
-                  r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free", sim::to_string(r.integrator).c_str(), r.estimate_dt_s,
-                  r.measured_dt_s, r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
+                  r.body.name.c_str(), r.body.mesh.c_str(), r.floor ? "floor" : "free",
+                  sim::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
+                  r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     }
     analysis::write_limits_csv(rows, std::filesystem::path(out_dir) / "stability_limits.csv");
     return 0;
@@ -54,9 +55,10 @@ int main(int argc, char** argv) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path csv = std::filesystem::path(out_dir) / "stress.csv";
   analysis::write_stress_csv(results, csv);
-  std::printf("%zu runs in %.1f s: %d stable, %d stopped by the guard, %d failed; stopped by the guard at dt <= "
-              "estimate: %d\n",
-              results.size(), wall, counts[0], counts[1], counts[2], below_estimate_guarded);
+  std::printf(
+      "%zu runs in %.1f s: %d stable, %d stopped by the guard, %d failed; stopped by the guard at dt <= "
+      "estimate: %d\n",
+      results.size(), wall, counts[0], counts[1], counts[2], below_estimate_guarded);
   std::printf("wrote %s\n", csv.c_str());
   if (maps) {
     for (const auto& png : analysis::write_stability_maps(results, out_dir)) std::printf("wrote %s\n", png.c_str());

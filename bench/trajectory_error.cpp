@@ -26,7 +26,8 @@ TrajectoryError trajectory_error(const BounceRecord& run, const BounceRecord& re
   std::size_t terms = 0;
   for (std::size_t s = 0; s < samples; ++s) {
     e.com_max_m = std::max(e.com_max_m, (run.com_m[s] - reference.com_m[s]).norm());
-    e.volume_worst_pct = std::max(e.volume_worst_pct, 100.0 * std::abs(run.volume_m3[s] / reference.volume_m3[s] - 1.0));
+    e.volume_worst_pct =
+        std::max(e.volume_worst_pct, 100.0 * std::abs(run.volume_m3[s] / reference.volume_m3[s] - 1.0));
     if (s == 0) continue;
     squared_sum += squared_distance_sum(run.x_m[s], reference.x_m[s]);
     terms += run.x_m[s].size();

@@ -71,8 +71,9 @@ void report(int substeps, const BounceRecord& run, const BounceRecord& reference
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli("bench_xpbd_convergence: xpbd's error on the bounce (smooth floor) against a converged rk45 run as "
-               "the substeps per 1/60 s grow, by phase; CSV on stdout");
+  CLI::App cli(
+      "bench_xpbd_convergence: xpbd's error on the bounce (smooth floor) against a converged rk45 run as "
+      "the substeps per 1/60 s grow, by phase; CSV on stdout");
   int level = 3;
   double duration_s = 1.2, tolerance = 1e-8;
   std::vector<int> substeps{10, 20, 40, 80, 160, 320};
@@ -102,13 +103,16 @@ int main(int argc, char** argv) {
   }
   const BounceRecord reference = bench::load_or_record(reference_setup, duration_s, reference_cache);
   const std::size_t touch = first_touch(reference), leave = end_of_squash(reference, touch);
-  if (against_substeps > 0) std::printf("# against %s at %d steps per 1/60 s, not rk45\n", integrator.c_str(), against_substeps);
-  std::printf("# %s, level %d, %.4g s; reference rk45 %.0e; phases: flight to %.4g s, impact (squash) to %.4g s, after\n",
-              integrator.c_str(), level, duration_s, tolerance, bench::kBounceSampleInterval_s * static_cast<double>(touch),
-              bench::kBounceSampleInterval_s * static_cast<double>(leave));
-  std::printf("substeps,dt_s,cpu_s_per_sim_s,com_flight_m,com_impact_m,com_after_m,com_y_flight_m,com_y_impact_m,"
-              "com_y_after_m,com_xz_flight_m,com_xz_impact_m,com_xz_after_m,volume_flight_pct,volume_impact_pct,"
-              "volume_after_pct,status\n");
+  if (against_substeps > 0)
+    std::printf("# against %s at %d steps per 1/60 s, not rk45\n", integrator.c_str(), against_substeps);
+  std::printf(
+      "# %s, level %d, %.4g s; reference rk45 %.0e; phases: flight to %.4g s, impact (squash) to %.4g s, after\n",
+      integrator.c_str(), level, duration_s, tolerance, bench::kBounceSampleInterval_s * static_cast<double>(touch),
+      bench::kBounceSampleInterval_s * static_cast<double>(leave));
+  std::printf(
+      "substeps,dt_s,cpu_s_per_sim_s,com_flight_m,com_impact_m,com_after_m,com_y_flight_m,com_y_impact_m,"
+      "com_y_after_m,com_xz_flight_m,com_xz_impact_m,com_xz_after_m,volume_flight_pct,volume_impact_pct,"
+      "volume_after_pct,status\n");
   for (const int n : substeps) {
     BounceSetup setup;
     setup.level = level;

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.hpp"
-#include "sim/diagnostics.hpp"
 #include "setup/build_world.hpp"
+#include "sim/diagnostics.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -14,9 +14,9 @@ struct Track {
   double landing_time_s = -1.0;  // first sample with a vertex within 5 mm of the floor
   double farthest_x_m = 0.0;     // largest centre-of-mass x
   double final_x_m = 0.0;
-  double most_backward_vx = 0.0; // most negative centre-of-mass x velocity after landing
-  double diameter_m = 0.0;       // the ball's height (highest minus lowest vertex) at t = 0
-  double deepest_height_m = 1e9; // its least height within kSquashWindow_s of landing (the squash)
+  double most_backward_vx = 0.0;  // most negative centre-of-mass x velocity after landing
+  double diameter_m = 0.0;        // the ball's height (highest minus lowest vertex) at t = 0
+  double deepest_height_m = 1e9;  // its least height within kSquashWindow_s of landing (the squash)
   double deepest_time_s = 0.0;
   double recovered_height_m = 0.0;  // its greatest height after the squash, up to kSquashWindow_s + 0.1 s
 };
@@ -25,8 +25,8 @@ constexpr double kSquashWindow_s = 0.5;
 
 // Highest minus lowest vertex of the only body, m.
 double height_of(const sim::State& state) {
-  const auto [lowest, highest] = std::minmax_element(state.x.begin(), state.x.end(),
-                                                     [](const sim::Vec3& a, const sim::Vec3& b) { return a.y() < b.y(); });
+  const auto [lowest, highest] = std::minmax_element(
+      state.x.begin(), state.x.end(), [](const sim::Vec3& a, const sim::Vec3& b) { return a.y() < b.y(); });
   return highest->y() - lowest->y();
 }
 
@@ -44,9 +44,11 @@ Track run_bounce(double dt, double duration) {
     if (track.landing_time_s < 0 && d.min_y_m < 0.005) track.landing_time_s = world.state.time_s;
     track.farthest_x_m = std::max(track.farthest_x_m, d.com_m.x());
     track.final_x_m = d.com_m.x();
-    if (track.landing_time_s >= 0) track.most_backward_vx = std::min(track.most_backward_vx, d.com_velocity_m_per_s.x());
+    if (track.landing_time_s >= 0)
+      track.most_backward_vx = std::min(track.most_backward_vx, d.com_velocity_m_per_s.x());
     const double since_landing_s = world.state.time_s - track.landing_time_s;
-    if (track.landing_time_s >= 0 && since_landing_s <= kSquashWindow_s && height_of(world.state) < track.deepest_height_m) {
+    if (track.landing_time_s >= 0 && since_landing_s <= kSquashWindow_s &&
+        height_of(world.state) < track.deepest_height_m) {
       track.deepest_height_m = height_of(world.state);
       track.deepest_time_s = world.state.time_s;
       track.recovered_height_m = 0.0;

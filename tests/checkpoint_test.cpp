@@ -30,7 +30,8 @@ sim::World two_ball_world(const Case& c) {
                              std::to_string(c.dt_s) + R"(, "retry": )" + (c.retry ? "true" : "false") +
                              R"(, "tolerance": 1e-5 },)";
   return testing_support::world_from_text("{" + solver + R"(
-    "floor": { "contact": ")" + c.floor_contact + R"(", "restitution": 0.4, "friction": 0.6 },
+    "floor": { "contact": ")" + c.floor_contact +
+                                          R"(", "restitution": 0.4, "friction": 0.6 },
     "collisions": { "restitution": 0.3, "friction": 0.5 },
     "bodies": [
       { "mesh": "icosphere:2", "position": [0, 0.26, 0], "scale": 0.3, "velocity": [0, -0.5, 0], "mass": 0.3,

@@ -36,7 +36,8 @@ class CliBadInput : public ::testing::TestWithParam<CliCase> {};
 
 // Each bad input: exit status 2 and a single "error:" line naming file, key and expectation.
 TEST_P(CliBadInput, ExitsTwoWithOneClearLine) {
-  const auto result = run_softbody(std::string("simulate ") + GetParam().arguments + " --csv build/cli_test_should_not_exist.csv");
+  const auto result =
+      run_softbody(std::string("simulate ") + GetParam().arguments + " --csv build/cli_test_should_not_exist.csv");
   EXPECT_EQ(result.exit_status, 2) << result.output;
   EXPECT_EQ(result.output.rfind("error: ", 0), 0u) << result.output;
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
@@ -49,11 +50,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         CliCase{"scenes/no_such_scene.json", "scenes/no_such_scene.json: cannot open the scene file"},
         CliCase{"scenes/bounce.json --set bodies.0.stifness=3", "scenes/bounce.json: bodies.0.stifness: unknown key"},
-        CliCase{"scenes/bounce.json --set bodies.0.mass=-1", "scenes/bounce.json: bodies.0.mass: expected a finite number > 0"},
+        CliCase{"scenes/bounce.json --set bodies.0.mass=-1",
+                "scenes/bounce.json: bodies.0.mass: expected a finite number > 0"},
         CliCase{"scenes/bounce.json --set solver.dt=0", "scenes/bounce.json: solver.dt: expected a finite number > 0"},
         CliCase{"scenes/bounce.json --set fps=0", "scenes/bounce.json: fps: expected an integer in 1..1000"},
-        CliCase{"scenes/bounce.json --set bodies.0.damping=NaN", "bodies.0.damping: expected a number >= 0, got string \"NaN\""},
-        CliCase{"scenes/bounce.json --set bodies.0.mesh=nowhere.obj", "bodies.0.mesh: mesh file scenes/nowhere.obj does not exist"},
+        CliCase{"scenes/bounce.json --set bodies.0.damping=NaN",
+                "bodies.0.damping: expected a number >= 0, got string \"NaN\""},
+        CliCase{"scenes/bounce.json --set bodies.0.mesh=nowhere.obj",
+                "bodies.0.mesh: mesh file scenes/nowhere.obj does not exist"},
         CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/open_box.obj", "is not closed: 4 boundary edges"},
         CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/flipped_face.obj", "inconsistent winding"},
         CliCase{"scenes/bounce.json --set bodies.0.mesh=../tests/data/degenerate_face.obj", "is degenerate"},
@@ -90,7 +94,8 @@ TEST(Cli, InfoExpectsACostPerSimulatedSecondForEachIntegrator) {
 TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {
   // Far beyond forward Euler's stable step for this stiffness: blows up within a few frames.
   const auto result = run_softbody(
-      "simulate scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --csv build/cli_test_diverged.csv");
+      "simulate scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --csv "
+      "build/cli_test_diverged.csv");
   EXPECT_EQ(result.exit_status, 3) << result.output;
   EXPECT_NE(result.output.find("diverged"), std::string::npos) << result.output;
   std::ifstream csv(std::string(SOFTBODY_SOURCE_DIR) + "/build/cli_test_diverged.csv");

@@ -41,7 +41,9 @@ TEST(BodyCollision, HeadOnCollisionConservesMomentumAndSeparates) {
   const double vx_right = sim::diagnose(world.model, world.state, 1).com_velocity_m_per_s.x();
   EXPECT_LT(vx_left, -0.5) << "the lighter ball bounces back";
   EXPECT_GT(vx_right, 0.2) << "the heavier one too";
-  EXPECT_GT(sim::diagnose(world.model, world.state, 1).com_m.x() - sim::diagnose(world.model, world.state, 0).com_m.x(), 2.0) << "apart again";
+  EXPECT_GT(sim::diagnose(world.model, world.state, 1).com_m.x() - sim::diagnose(world.model, world.state, 0).com_m.x(),
+            2.0)
+      << "apart again";
 }
 
 // A small pile on a floor with friction: at the end no vertex of any body is inside another body
@@ -89,11 +91,13 @@ TEST(BodyCollision, AnInitialOverlapIsPushedOutWithoutAddingEnergy) {
         { "mesh": "icosphere:2", "position": [-0.95, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 },
         { "mesh": "icosphere:2", "position": [0.95, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 } ] })");
     const auto energy = [&world] {
-      return sim::diagnose(world.model, world.state, 0).total_J() + sim::diagnose(world.model, world.state, 1).total_J();
+      return sim::diagnose(world.model, world.state, 0).total_J() +
+             sim::diagnose(world.model, world.state, 1).total_J();
     };
     const double before = energy();
     testing_support::run_steps(world, 40000, 2.5e-5);  // 1 s
-    const double apart = sim::diagnose(world.model, world.state, 1).com_m.x() - sim::diagnose(world.model, world.state, 0).com_m.x();
+    const double apart =
+        sim::diagnose(world.model, world.state, 1).com_m.x() - sim::diagnose(world.model, world.state, 0).com_m.x();
     return std::pair{energy() - before, apart};
   };
   const auto [gained, apart] = run(R"({ "restitution": 0.0, "friction": 0.0 })");
@@ -118,7 +122,8 @@ TEST(BodyCollision, SmoothContactEnergyIsCountedAndConservedThroughAnElasticColl
       { "mesh": "icosphere:2", "position": [-1.2, 0, 0], "velocity": [1, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 },
       { "mesh": "icosphere:2", "position": [1.2, 0, 0], "velocity": [-1, 0, 0], "mass": 1.0, "stiffness": 2000.0, "damping": 0.0, "pressure": 100.0 } ] })");
   const auto total = [&world](double& contact) {
-    const sim::BodyDiagnostics a = sim::diagnose(world.model, world.state, 0), b = sim::diagnose(world.model, world.state, 1);
+    const sim::BodyDiagnostics a = sim::diagnose(world.model, world.state, 0),
+                               b = sim::diagnose(world.model, world.state, 1);
     contact = a.contact_J + b.contact_J;
     return a.total_J() + b.total_J();
   };
@@ -143,7 +148,7 @@ std::filesystem::path write_blade(const std::string& folder) {
   const std::filesystem::path blade = testing_support::scratch_dir(folder) / "blade.obj";
   std::ofstream out(blade);
   out << "v -1 0 0\nv 1 0 0\nv 0 0.1 1\nv 0 -0.1 1\n"  // A B C D
-      << "f 1 4 2\nf 1 2 3\nf 1 3 4\nf 2 4 3\n";      // outward: ABD, ABC, ACD, BDC
+      << "f 1 4 2\nf 1 2 3\nf 1 3 4\nf 2 4 3\n";       // outward: ABD, ABC, ACD, BDC
   return blade;
 }
 
@@ -169,7 +174,8 @@ TEST(BodyCollision, SmoothContactTellsInsideFromOutsideNextToASharpEdge) {
   for (const sim::BodyCollider::SmoothFrame& frame : frames) {
     if (frame.corners[0] >= world.model.bodies[1].first_vertex) continue;  // the blade's corners against the ball
     ++against_blade;
-    const double w = sim::winding_number(world.model.of(surface, world.state.x), surface.topology.faces, world.state.x[frame.vertex]);
+    const double w = sim::winding_number(world.model.of(surface, world.state.x), surface.topology.faces,
+                                         world.state.x[frame.vertex]);
     if (std::abs(frame.signed_distance_m) > 1e-9 && (frame.signed_distance_m < 0.0) != (w > 0.5)) ++disagree;
   }
   std::printf("%d frames against the blade, %d on the wrong side\n", against_blade, disagree);
@@ -199,8 +205,10 @@ TEST(BodyCollision, ImpulseContactLeavesAVertexInFrontOfASharpEdgeAlone) {
 TEST(BodyCollision, WindingNumberIsOneInsideZeroOutside) {
   sim::World world = testing_support::world_from_text(R"({ "bodies": [ { "mesh": "icosphere:2" } ] })");
   const sim::Body& body = world.model.bodies[0];
-  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(0.1, 0.2, 0.3)), 1.0, 1e-9);
-  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(1.5, 0.2, 0.3)), 0.0, 1e-9);
+  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(0.1, 0.2, 0.3)), 1.0,
+              1e-9);
+  EXPECT_NEAR(sim::winding_number(world.model.of(body, world.state.x), body.topology.faces, Vec3(1.5, 0.2, 0.3)), 0.0,
+              1e-9);
 }
 
 }  // namespace

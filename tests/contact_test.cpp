@@ -74,7 +74,8 @@ TEST(FrictionContact, RestitutionSetsTheReboundHeight) {
       "floor": { "contact": "friction", "restitution": 0.5, "friction": 0.0 },
       "bodies": [ { "mesh": "icosphere:1", "position": [0, 2, 0], "stiffness": 0, "damping": 0, "pressure": 0 } ] })");
   const std::vector<Vec3>& x = world.state.x;
-  const std::size_t lowest = std::min_element(x.begin(), x.end(), [](const Vec3& a, const Vec3& b) { return a.y() < b.y(); }) - x.begin();
+  const std::size_t lowest =
+      std::min_element(x.begin(), x.end(), [](const Vec3& a, const Vec3& b) { return a.y() < b.y(); }) - x.begin();
   const double drop_height = x[lowest].y();
   bool bounced = false;
   double peak = 0.0;

@@ -31,7 +31,8 @@ TEST_P(MeshExport, FramesReimportAsTheSameClosedSurface) {
   // Both bodies in one file: as one mesh it is still closed (two closed components).
   const mesh::LoadedMesh loaded = mesh::load_closed_mesh(file.string(), file, "export");
   EXPECT_EQ(loaded.mesh.vertices.size(), world.state.x.size());
-  const double volume = sim::diagnose(world.model, world.state, 0).volume_m3 + sim::diagnose(world.model, world.state, 1).volume_m3;
+  const double volume =
+      sim::diagnose(world.model, world.state, 0).volume_m3 + sim::diagnose(world.model, world.state, 1).volume_m3;
   // OBJ keeps 9 significant digits, PLY single precision floats.
   EXPECT_NEAR(mesh::signed_volume(loaded.mesh), volume, 1e-5 * volume);
   // The one note: two bodies in one file are two separate closed parts ("split": true would separate them).
@@ -44,8 +45,9 @@ TEST_P(MeshExport, FramesReimportAsTheSameClosedSurface) {
 mesh::TriMesh cube_with_face_uvs() {
   mesh::TriMesh cube = mesh::cube(3);
   for (const mesh::Triangle& t : cube.triangles) {
-    const mesh::Vec3 n = (cube.vertices[static_cast<std::size_t>(t[1])] - cube.vertices[static_cast<std::size_t>(t[0])])
-                             .cross(cube.vertices[static_cast<std::size_t>(t[2])] - cube.vertices[static_cast<std::size_t>(t[0])]);
+    const mesh::Vec3 n =
+        (cube.vertices[static_cast<std::size_t>(t[1])] - cube.vertices[static_cast<std::size_t>(t[0])])
+            .cross(cube.vertices[static_cast<std::size_t>(t[2])] - cube.vertices[static_cast<std::size_t>(t[0])]);
     int axis = 0;
     n.cwiseAbs().maxCoeff(&axis);
     const double offset = axis + (n[axis] > 0.0 ? 0.5 : 0.0);
@@ -71,10 +73,12 @@ TEST(MeshExportUvs, SurviveADropBitForBit) {
   const mesh::TriMesh original = mesh::import_mesh_file(source);
   ASSERT_EQ(original.corner_uvs.size(), original.triangles.size());
   for (const char* resolution : {"null", "150"}) {
-    sim::World world = testing_support::world_from_text(R"({ "bodies": [ { "mesh": ")" + source.string() +
-                                                        R"(", "position": [0, 0.8, 0], "resolution": )" + resolution + " } ] }");
+    sim::World world =
+        testing_support::world_from_text(R"({ "bodies": [ { "mesh": ")" + source.string() +
+                                         R"(", "position": [0, 0.8, 0], "resolution": )" + resolution + " } ] }");
     testing_support::run_steps(world, 4000, 1e-4);  // 0.4 s: fallen 0.3 m onto the floor and squashed
-    const std::filesystem::path dir = testing_support::scratch_dir(std::string("export_uvs_") + (resolution[0] == 'n' ? "raw" : "proxy"));
+    const std::filesystem::path dir =
+        testing_support::scratch_dir(std::string("export_uvs_") + (resolution[0] == 'n' ? "raw" : "proxy"));
     output::MeshExporter exporter(dir, output::MeshFormat::Obj);
     exporter.on_frame(1, world.state.time_s, world);
     const mesh::TriMesh exported = mesh::import_mesh_file(exporter.frame_path(1));

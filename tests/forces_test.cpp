@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "mesh/generators.hpp"
+#include "reference_forces.hpp"
 #include "sim/finite_scan.hpp"
 #include "sim/forces.hpp"
-#include "reference_forces.hpp"
 
 namespace {
 
@@ -20,7 +20,8 @@ std::vector<Vec3> deformed_sphere(const mesh::TriMesh& sphere, unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   std::vector<Vec3> x;
-  for (const Vec3& p : sphere.vertices) x.push_back(Vec3(3, 1, -2) + p + Vec3(jitter(random), jitter(random), jitter(random)));
+  for (const Vec3& p : sphere.vertices)
+    x.push_back(Vec3(3, 1, -2) + p + Vec3(jitter(random), jitter(random), jitter(random)));
   return x;
 }
 
@@ -72,7 +73,8 @@ TEST(Volume, TranslationDoesNotChangeIt) {
   const mesh::TriMesh sphere = mesh::icosphere(3);
   std::vector<Vec3> far = sphere.vertices;
   for (Vec3& p : far) p += Vec3(1e4, -3e3, 5e3);
-  EXPECT_NEAR(sim::enclosed_volume(sphere.triangles, far), sim::enclosed_volume(sphere.triangles, sphere.vertices), 1e-11);
+  EXPECT_NEAR(sim::enclosed_volume(sphere.triangles, far), sim::enclosed_volume(sphere.triangles, sphere.vertices),
+              1e-11);
 }
 
 TEST(Spring, HookeForceAlongTheSpring) {

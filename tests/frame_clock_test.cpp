@@ -29,9 +29,7 @@ TEST(FrameClock, StepLongerThanFrameBecomesOneStepPerFrame) {
   EXPECT_FALSE(clock.dt_note.empty());
 }
 
-TEST(FrameClock, PartialLastFrameIsRoundedUp) {
-  EXPECT_EQ(frames::plan_frames(1.01, 10, 0.01).frame_count, 11);
-}
+TEST(FrameClock, PartialLastFrameIsRoundedUp) { EXPECT_EQ(frames::plan_frames(1.01, 10, 0.01).frame_count, 11); }
 
 // xpbd: dt = (1/fps) / substeps plans exactly `substeps` steps per frame, with no rounding note.
 TEST(FrameClock, SubstepDtGivesThatManyStepsPerFrame) {

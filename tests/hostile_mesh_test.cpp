@@ -49,8 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
     Files, HostileMeshFile,
     ::testing::Values(
         // assimp's PLY reader passes face indices through: past the vertices (binary) and negative (text).
-        HostileMesh{"ply_binary_index_past_end.ply", "index"},
-        HostileMesh{"ply_text_negative_index.ply", "index"},
+        HostileMesh{"ply_binary_index_past_end.ply", "index"}, HostileMesh{"ply_text_negative_index.ply", "index"},
         HostileMesh{"obj_index_past_end.obj", "index out of range"},
         // a header that announces two billion vertices (assimp reserves them), and one without end_header
         // (assimp's reader never returns), a list count that runs past the end of a binary file.
@@ -64,14 +63,18 @@ INSTANTIATE_TEST_SUITE_P(
         HostileMesh{"ply_magic_without_line_break.ply", "is a PLY file without an end_header line"},
         // found by fuzz_mesh_ply_text: a vertex row split over two lines (assimp reads a row per line and
         // then aborted in its triangulation).
-        HostileMesh{"ply_text_row_split_over_two_lines.ply", "has vertex 6 with fewer values on its line than its header announces"},
-        HostileMesh{"ply_text_face_count_not_a_number.ply", "has face 11 with a list count that is not a whole number: \"&\""},
+        HostileMesh{"ply_text_row_split_over_two_lines.ply",
+                    "has vertex 6 with fewer values on its line than its header announces"},
+        HostileMesh{"ply_text_face_count_not_a_number.ply",
+                    "has face 11 with a list count that is not a whole number: \"&\""},
         // found by fuzz_mesh_ply_text: a lone CR inside vertex row 5 ("1 <CR>1 1 0 0 0"), which assimp reads as a line
         // break: its rows shifted by one and its triangulation aborted (ai_assert, SIGABRT).
-        HostileMesh{"ply_text_carriage_return_inside_a_row.ply", "is a PLY file with the control character 0x0d in line 19 (in its body"},
-        // found by fuzz_mesh_ply_binary: NUL bytes inside the header line "property float z", which assimp's line reader
-        // ends at the first NUL: the same abort in its triangulation.
-        HostileMesh{"ply_binary_nul_inside_a_header_line.ply", "is a PLY file with the control character 0x00 in line 7 (in its header"},
+        HostileMesh{"ply_text_carriage_return_inside_a_row.ply",
+                    "is a PLY file with the control character 0x0d in line 19 (in its body"},
+        // found by fuzz_mesh_ply_binary: NUL bytes inside the header line "property float z", which assimp's line
+        // reader ends at the first NUL: the same abort in its triangulation.
+        HostileMesh{"ply_binary_nul_inside_a_header_line.ply",
+                    "is a PLY file with the control character 0x00 in line 7 (in its header"},
         // found by fuzz_mesh_glb: a 2 kB GLB whose header and first chunk announce 4 GB (assimp allocated them).
         HostileMesh{"glb_announces_4gb.glb", "is a binary glTF (GLB) file whose header announces 4294965229 bytes"},
         // found by fuzz_mesh_glb: a primitive drawn as a line loop whose POSITION attribute name was garbled (and
@@ -81,10 +84,12 @@ INSTANTIATE_TEST_SUITE_P(
         HostileMesh{"glb_line_loop_without_position.glb", "meshes.0.primitives.0 has no POSITION attribute"},
         // found by fuzz_mesh_ply_binary: an element named "999...9vertex", whose digits assimp read as a count
         // (an allocation of 103 GB: bad_alloc, or an out-of-memory abort under ASan).
-        HostileMesh{"ply_element_name_of_digits.ply", "(line 4: expected element NAME COUNT with a NAME that starts with a letter)"},
+        HostileMesh{"ply_element_name_of_digits.ply",
+                    "(line 4: expected element NAME COUNT with a NAME that starts with a letter)"},
         // found by fuzz_mesh_gltf: the number 222222222222222222222222e22222, beyond a double: nlohmann's
         // out_of_range was not caught (std::terminate).
-        HostileMesh{"gltf_number_out_of_range.gltf", "is a glTF file whose JSON does not parse ([json.exception.out_of_range.406]"},
+        HostileMesh{"gltf_number_out_of_range.gltf",
+                    "is a glTF file whose JSON does not parse ([json.exception.out_of_range.406]"},
         // found by fuzz_mesh_glb after 619,724 executions: a 45-byte .glb without the magic "glTF" (version 0), which
         // went to assimp's other glTF reader: heap-buffer-overflow in strncmp.
         HostileMesh{"glb_without_magic.glb", "is not a binary glTF 2 file (expected the magic \"glTF\" and version 2"},
@@ -93,30 +98,37 @@ INSTANTIATE_TEST_SUITE_P(
         HostileMesh{"glb_indexed_line_loop_out_of_range.glb", "meshes.0.primitives.0 is an indexed line loop (mode 2)"},
         // found by fuzz_mesh_fbx: an ASCII FBX with the connection C: "OO", 1000003, 1000003 (an object its own
         // parent): assimp 5.2's FBX converter recursed until the stack overflowed (SIGSEGV without sanitizers too).
-        HostileMesh{"fbx_object_connected_to_itself.fbx", "object connections form a cycle (object 1000003 is connected to itself through 1 link)"},
+        HostileMesh{"fbx_object_connected_to_itself.fbx",
+                    "object connections form a cycle (object 1000003 is connected to itself through 1 link)"},
         // a cycle in a binary FBX (our binary seed with its last connection's parent made its child; assimp happens to
         // survive this one, but no valid file has a cycle): the check reads binary records too.
-        HostileMesh{"fbx_binary_object_connected_to_itself.fbx", "object 1000002 is connected to itself through 1 link"},
+        HostileMesh{"fbx_binary_object_connected_to_itself.fbx",
+                    "object 1000002 is connected to itself through 1 link"},
         // found by fuzz_mesh_fbx after 398,575 executions: a binary FBX whose records' offsets and lengths are
         // garbled; assimp 5.2's binary tokenizer aborted on an ai_assert (begin <= cursor).
-        HostileMesh{"fbx_binary_record_offsets_garbled.fbx", "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
+        HostileMesh{"fbx_binary_record_offsets_garbled.fbx",
+                    "is a binary FBX file whose record at byte 313 has more property bytes than it holds"},
         // found by fuzz_mesh_fbx after 194,662 executions: a binary FBX whose magic reads "Kaydara FBX Binary$ ": the
         // check took it for ASCII, assimp (which tests 18 bytes) for binary, and its tokenizer aborted on an ai_assert
         // (begin <= cursor).
-        HostileMesh{"fbx_binary_magic_altered.fbx", "is a binary FBX file whose record at byte 348 has more property bytes than it holds"},
+        HostileMesh{"fbx_binary_magic_altered.fbx",
+                    "is a binary FBX file whose record at byte 348 has more property bytes than it holds"},
         // found by fuzz_mesh_fbx after 201,669 executions: a Model with a time (KTime) property, on which assimp
         // 5.2's FBX converter aborts (ai_assert(false) in FBXConverter.cpp:888, also without sanitizers).
         HostileMesh{"fbx_model_time_property.fbx", "with a Model whose property \"TimeSpanStart\" is a time (KTime)"},
         // a heap overwrite shown by assimp built with ASan (scripts/build-assimp-asan), most likely the one behind the
         // fuzz_mesh_ply_binary runs that ended on a corrupted heap: assimp 5.2 sizes its vertex and face arrays by
         // the first "vertex" and "face" elements and writes a second one's rows past their end (text and binary alike).
-        HostileMesh{"ply_two_vertex_elements.ply", "line 7: a second element of vertices or faces (\"vertex\" after \"vertex\")"},
-        HostileMesh{"ply_binary_two_face_elements.ply", "a second element of vertices or faces (\"face\" after \"face\")"},
+        HostileMesh{"ply_two_vertex_elements.ply",
+                    "line 7: a second element of vertices or faces (\"vertex\" after \"vertex\")"},
+        HostileMesh{"ply_binary_two_face_elements.ply",
+                    "a second element of vertices or faces (\"face\" after \"face\")"},
         // found by fuzz_mesh_ply_binary (seed 77) after about 200,000 executions, the day triangle strips were turned
         // into faces before the header check: an element of 45 digits' count and no properties before a tristrips
         // element; the strip reader skipped its rows, which read nothing, for ever. It now gives up on such
         // headers (the check refuses them), as on the hand-made second file.
-        HostileMesh{"ply_binary_strips_after_an_element_of_45_digits.ply", "the control character 0x01 in line 3 (in its header"},
+        HostileMesh{"ply_binary_strips_after_an_element_of_45_digits.ply",
+                    "the control character 0x01 in line 3 (in its header"},
         HostileMesh{"ply_strips_after_an_element_without_properties.ply", "(element nothing has no properties)"},
         // found by fuzz_mesh_ply_binary (with assimp built with ASan) after 177,049 executions: binary data that
         // starts with the byte 0x0A after "end_header\n": assimp 5.2 drops it (meant for a CR LF's LF), read the
@@ -127,7 +139,8 @@ INSTANTIATE_TEST_SUITE_P(
         // after 138,588 executions): a face index (246) past the 8 vertices. Alone it corrupts nothing (assimp's
         // validation refuses it), so the corruption came from an earlier input of that run (most likely a second
         // vertex or face element, above); such an index is refused before assimp reads the file all the same.
-        HostileMesh{"ply_binary_index_past_the_vertices_heap.ply", "has face 11 with the vertex index 246, not one of the 8 vertices its header announces"},
+        HostileMesh{"ply_binary_index_past_the_vertices_heap.ply",
+                    "has face 11 with the vertex index 246, not one of the 8 vertices its header announces"},
         // found by fuzz_mesh_obj: a file whose only line is a point element ("pwinding: vo 1 -1 -1k"): assimp 5.2's OBJ
         // reader read past the end of its line buffer (heap-buffer-overflow in strtol).
         HostileMesh{"obj_face_only_line.obj", "with a face, point or line element before its first vertex"},
@@ -153,12 +166,14 @@ TEST(HostileMesh, PathsThatAreNotRegularFilesSayWhatTheyAre) {
 TEST(HostileMesh, LimitsAreStatedAndRaisable) {
   mesh::MeshLimits small;
   small.max_triangles = 11;  // the cube has 12
-  EXPECT_NE(load_error(data_path("cube.stl"), small).find("12 triangles, more than the limit of 11 (raise it with the scene key limits.max_triangles)"),
+  EXPECT_NE(load_error(data_path("cube.stl"), small)
+                .find("12 triangles, more than the limit of 11 (raise it with the scene key limits.max_triangles)"),
             std::string::npos);
   small.max_triangles = 12;
   EXPECT_EQ(load_error(data_path("cube.stl"), small), "");
   small.max_file_bytes = 100;
-  EXPECT_NE(load_error(data_path("cube.stl"), small).find("more than the limit of 100 (raise it with the scene key limits.max_file_mb)"),
+  EXPECT_NE(load_error(data_path("cube.stl"), small)
+                .find("more than the limit of 100 (raise it with the scene key limits.max_file_mb)"),
             std::string::npos);
 }
 
@@ -184,8 +199,9 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
             std::string::npos);
   EXPECT_NE(refusal(document(accessor, R"({"attributes":{"POSITION":0},"indices":-1})")).find(".indices (-1)"),
             std::string::npos);
-  EXPECT_NE(refusal(document(accessor, R"({"attributes":{"POSITION":0},"mode":7})")).find("mode is 7 (expected 0 to 6)"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal(document(accessor, R"({"attributes":{"POSITION":0},"mode":7})")).find("mode is 7 (expected 0 to 6)"),
+      std::string::npos);
   EXPECT_NE(refusal(document(R"("accessors":[{"bufferView":3}],)", R"({"attributes":{"POSITION":0}})"))
                 .find("accessors.0.bufferView (3) names none of its 1 bufferViews"),
             std::string::npos);
@@ -200,7 +216,8 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
 // An ASCII FBX of nothing but properties and connections (what the check reads).
 std::string fbx_with_connections(const std::string& connections) {
   return "; FBX 7.5.0 project file\nGlobalSettings:  {\n\tProperties70:  {\n\t\tP: \"UpAxis\", \"int\", \"\", \"\", 1\n"
-         "\t}\n}\nConnections:  {\n" + connections + "}\n";
+         "\t}\n}\nConnections:  {\n" +
+         connections + "}\n";
 }
 
 std::string fbx_refusal(const std::string& text) {
@@ -214,13 +231,15 @@ std::string fbx_refusal(const std::string& text) {
 
 TEST(HostileMesh, FbxConnectionsMustNotCycleOrNestTooDeep) {
   // A tree: accepted. (The empty strings before the connections must not end the scan.)
-  EXPECT_EQ(fbx_refusal(fbx_with_connections("\tC: \"OO\", 1, 0\n\tC: \"OO\", 2, 1\n\tC: \"OP\", 3, 1, \"Prop\"\n")), "");
+  EXPECT_EQ(fbx_refusal(fbx_with_connections("\tC: \"OO\", 1, 0\n\tC: \"OO\", 2, 1\n\tC: \"OP\", 3, 1, \"Prop\"\n")),
+            "");
   // Two objects each other's parent, and the same cycle written over several lines.
   EXPECT_NE(fbx_refusal(fbx_with_connections("\tC: \"OO\", 1, 0\n\tC: \"OO\", 2, 3\n\tC: \"OO\", 3, 2\n"))
                 .find("form a cycle (object 2 is connected to itself through 2 links)"),
             std::string::npos);
-  EXPECT_NE(fbx_refusal(fbx_with_connections("C:\n\"OO\",\n7,\n7\n")).find("object 7 is connected to itself through 1 link"),
-            std::string::npos);
+  EXPECT_NE(
+      fbx_refusal(fbx_with_connections("C:\n\"OO\",\n7,\n7\n")).find("object 7 is connected to itself through 1 link"),
+      std::string::npos);
   // A chain of kMostFbxConnectionLevels links is accepted, one more is refused.
   auto chain = [](int links) {
     std::string text;
@@ -228,14 +247,18 @@ TEST(HostileMesh, FbxConnectionsMustNotCycleOrNestTooDeep) {
     return fbx_with_connections(text);
   };
   EXPECT_EQ(fbx_refusal(chain(mesh::kMostFbxConnectionLevels)), "");
-  EXPECT_NE(fbx_refusal(chain(mesh::kMostFbxConnectionLevels + 1)).find("nested more than 1000 levels deep"), std::string::npos);
-  // A time property on a Model is refused; the same in GlobalSettings (every exporter writes TimeSpanStart there) is not.
-  // (The Model's name "Model::" ends in a colon: a quoted string is never a key.)
-  const std::string model_time = "Objects:  {\n\tModel: 1, \"Model::\", \"Mesh\" {\n\t\tProperties70:  {\n"
-                                 "\t\t\tP: \"Stop\", \"KTime\", \"Time\", \"\", 5\n\t\t}\n\t}\n}\n";
+  EXPECT_NE(fbx_refusal(chain(mesh::kMostFbxConnectionLevels + 1)).find("nested more than 1000 levels deep"),
+            std::string::npos);
+  // A time property on a Model is refused; the same in GlobalSettings (every exporter writes TimeSpanStart there) is
+  // not. (The Model's name "Model::" ends in a colon: a quoted string is never a key.)
+  const std::string model_time =
+      "Objects:  {\n\tModel: 1, \"Model::\", \"Mesh\" {\n\t\tProperties70:  {\n"
+      "\t\t\tP: \"Stop\", \"KTime\", \"Time\", \"\", 5\n\t\t}\n\t}\n}\n";
   EXPECT_NE(fbx_refusal(model_time).find("a Model whose property \"Stop\" is a time (KTime)"), std::string::npos);
-  EXPECT_EQ(fbx_refusal("GlobalSettings:  {\n\tProperties70:  {\n\t\tP: \"TimeSpanStart\", \"KTime\", \"Time\", \"\", 0\n"
-                        "\t}\n}\n"), "");
+  EXPECT_EQ(
+      fbx_refusal("GlobalSettings:  {\n\tProperties70:  {\n\t\tP: \"TimeSpanStart\", \"KTime\", \"Time\", \"\", 0\n"
+                  "\t}\n}\n"),
+      "");
   // Connections outside the Connections section are not connections.
   EXPECT_EQ(fbx_refusal("Objects:  {\n\tC: \"OO\", 5, 5\n}\nConnections:  {\n}\n"), "");
 }
@@ -250,8 +273,7 @@ TEST(HostileMesh, PlyHeaderCountsMustFitTheFile) {
   EXPECT_THROW(mesh::check_ply_header(no_properties, no_properties.size(), {}), softbody::InputError)
       << "an element without properties";
   const std::string negative = "ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n";
-  EXPECT_THROW(mesh::check_ply_header(negative, negative.size(), {}), softbody::InputError)
-      << "a negative count";
+  EXPECT_THROW(mesh::check_ply_header(negative, negative.size(), {}), softbody::InputError) << "a negative count";
 }
 
 // Welding must stay defined (the sanitizer build checks it) for coordinates whose grid cell does not fit a
@@ -294,7 +316,8 @@ bool any_note_has(const std::vector<std::string>& notes, const std::string& word
 // Closed but suspect: loaded, with a note naming the count (and where, for vertices).
 TEST(SuspiciousMesh, SeparatePartsAreNamedWithTheirTriangleCounts) {
   const auto notes = notes_of("two_separate_cubes.obj");
-  EXPECT_TRUE(any_note_has(notes, "holds 2 separate closed parts (12, 12 triangles)")) << ::testing::PrintToString(notes);
+  EXPECT_TRUE(any_note_has(notes, "holds 2 separate closed parts (12, 12 triangles)"))
+      << ::testing::PrintToString(notes);
   EXPECT_FALSE(any_note_has(notes, "touch at that vertex only"));
 }
 
@@ -316,7 +339,8 @@ namespace {
 TEST(SuspiciousMesh, OverlappingPartsAreNamedAsSelfIntersecting) {
   const auto notes = notes_of("overlapping_cubes.obj");
   EXPECT_TRUE(any_note_has(notes, "intersects itself: ")) << ::testing::PrintToString(notes);
-  EXPECT_TRUE(any_note_has(notes, "\"repair\": true joins overlapping parts into one surface")) << ::testing::PrintToString(notes);
+  EXPECT_TRUE(any_note_has(notes, "\"repair\": true joins overlapping parts into one surface"))
+      << ::testing::PrintToString(notes);
   EXPECT_FALSE(any_note_has(notes_of("two_separate_cubes.obj"), "intersects itself"));
 }
 
@@ -328,12 +352,14 @@ TEST(SuspiciousMesh, RepairJoinsOverlappingPartsIntoTheirUnion) {
   EXPECT_EQ(mesh::edge_connected_parts(joined.mesh).count, 1);
   EXPECT_NEAR(mesh::signed_volume(joined.mesh), 13.375, 1e-12);
   EXPECT_EQ(mesh::find_self_intersections(joined.mesh).pairs, 0);
-  EXPECT_TRUE(any_note_has(joined.notes, "repair: joined 2 overlapping parts into 1 surface")) << ::testing::PrintToString(joined.notes);
+  EXPECT_TRUE(any_note_has(joined.notes, "repair: joined 2 overlapping parts into 1 surface"))
+      << ::testing::PrintToString(joined.notes);
   mesh::RepairOptions keep = mesh::full_repair();
   keep.parts = mesh::PartsPolicy::Keep;
   const mesh::LoadedMesh kept = mesh::load_closed_mesh(file, file, "ctx", {}, keep);
   EXPECT_EQ(mesh::edge_connected_parts(kept.mesh).count, 2);
-  EXPECT_TRUE(any_note_has(kept.notes, "\"parts\": \"union\" (the default of \"repair\") joins")) << ::testing::PrintToString(kept.notes);
+  EXPECT_TRUE(any_note_has(kept.notes, "\"parts\": \"union\" (the default of \"repair\") joins"))
+      << ::testing::PrintToString(kept.notes);
 }
 
 // Two triangles: a vertical one whose lower edge pierces a horizontal one is one crossing pair; lifted by

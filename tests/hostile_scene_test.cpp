@@ -38,29 +38,41 @@ TEST_P(HostileSceneFile, ExitsTwoWithOneLineAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(
     Scenes, HostileSceneFile,
     ::testing::Values(
-        HostileScene{HOSTILE "deep_file.json", HOSTILE "deep_file.json: " "0.0.0.0"},
+        HostileScene{HOSTILE "deep_file.json", HOSTILE "deep_file.json: "
+                                                       "0.0.0.0"},
         HostileScene{HOSTILE "deep_file.json", "nested deeper than 64 levels"},
         HostileScene{HOSTILE "deep_value.json", HOSTILE "deep_value.json: bodies.0.mass.0.0"},
-        HostileScene{HOSTILE "number_1e400.json", HOSTILE "number_1e400.json: bodies.0.mass: expected a finite number, got '1e400'"},
-        HostileScene{HOSTILE "duration_1e300.json", HOSTILE "duration_1e300.json: duration: 1e+300 s at 30 fps makes 3e+301 frames, more than the limit of 100000000"},
+        HostileScene{HOSTILE "number_1e400.json",
+                     HOSTILE "number_1e400.json: bodies.0.mass: expected a finite number, got '1e400'"},
+        HostileScene{
+            HOSTILE "duration_1e300.json", HOSTILE
+            "duration_1e300.json: duration: 1e+300 s at 30 fps makes 3e+301 frames, more than the limit of 100000000"},
         HostileScene{HOSTILE "duration_1e8.json", "more than the limit of 100000000"},
-        HostileScene{HOSTILE "tiny_dt.json", "solver.dt: 1e-300 s needs 3.33e+298 steps per frame at 30 fps, more than the limit of 1000000"},
-        HostileScene{HOSTILE "scale_1e200.json", HOSTILE "scale_1e200.json: bodies.0.scale: expected a finite number in [1e-6, 1e6]"},
+        HostileScene{HOSTILE "tiny_dt.json",
+                     "solver.dt: 1e-300 s needs 3.33e+298 steps per frame at 30 fps, more than the limit of 1000000"},
+        HostileScene{HOSTILE "scale_1e200.json",
+                     HOSTILE "scale_1e200.json: bodies.0.scale: expected a finite number in [1e-6, 1e6]"},
         HostileScene{HOSTILE "scale_1e-200.json", "bodies.0.scale: expected a finite number in [1e-6, 1e6]"},
-        HostileScene{HOSTILE "position_1e308.json", "bodies.0.position.0: expected a finite number within +-1e6, got number 1e+308"},
-        HostileScene{HOSTILE "name_dotdot.json", HOSTILE "name_dotdot.json: name: expected a name without slashes, other than"},
+        HostileScene{HOSTILE "position_1e308.json",
+                     "bodies.0.position.0: expected a finite number within +-1e6, got number 1e+308"},
+        HostileScene{HOSTILE "name_dotdot.json",
+                     HOSTILE "name_dotdot.json: name: expected a name without slashes, other than"},
         HostileScene{HOSTILE "mesh_dev_zero.json", "bodies.0.mesh: mesh file /dev/zero is a character device"},
         HostileScene{HOSTILE "mesh_directory.json", "bodies.0.mesh: mesh file " HOSTILE ". is a directory"},
-        HostileScene{HOSTILE "huge_mesh_coordinates.json", "bodies.0.mesh: mesh " HOSTILE "obj_huge_vertex.obj has a vertex with coordinate inf"},
+        HostileScene{HOSTILE "huge_mesh_coordinates.json",
+                     "bodies.0.mesh: mesh " HOSTILE "obj_huge_vertex.obj has a vertex with coordinate inf"},
         HostileScene{HOSTILE "pattern_string_conversion.json", "output.pattern: expected a file name ending in .png"},
         HostileScene{HOSTILE "pattern_no_conversion.json", "output.pattern: expected a file name ending in .png"},
         HostileScene{HOSTILE "tiny_mesh_limit.json", "12 triangles, more than the limit of 10"},
         HostileScene{"/dev/zero", "/dev/zero: cannot open the scene file (it is a character device"},
         HostileScene{HOSTILE, "cannot open the scene file (it is a directory"},
         HostileScene{"scenes/bounce.json --set bodies.99999999999999999999.mass=1",
-                     "--set bodies.99999999999999999999.mass=1: bodies.99999999999999999999: index out of range (the array has 1 elements)"},
-        HostileScene{"scenes/bounce.json --set bodies.0.mass=1e400", "bodies.0.mass: expected a number > 0, got string \"1e400\""},
-        HostileScene{"scenes/bounce.json --set bodies.0.scale=1e-7", "bodies.0.scale: expected a finite number in [1e-6, 1e6]"}),
+                     "--set bodies.99999999999999999999.mass=1: bodies.99999999999999999999: index out of range (the "
+                     "array has 1 elements)"},
+        HostileScene{"scenes/bounce.json --set bodies.0.mass=1e400",
+                     "bodies.0.mass: expected a number > 0, got string \"1e400\""},
+        HostileScene{"scenes/bounce.json --set bodies.0.scale=1e-7",
+                     "bodies.0.scale: expected a finite number in [1e-6, 1e6]"}),
     [](const auto& test) {
       std::string name = std::to_string(test.index) + "_" + test.param.arguments;
       if (name.rfind("tests/data/hostile/") != std::string::npos) name.erase(name.find("tests/data/hostile/"), 19);
@@ -108,7 +120,8 @@ TEST(HostileScene, SetValuesThatAreNotUtf8GetTheKeysMessage) {
     scene::scene_from_json(document, "s.json");
     FAIL() << "accepted";
   } catch (const softbody::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("s.json: floor.contact: expected one of \"paper\" \"friction\""), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("s.json: floor.contact: expected one of \"paper\" \"friction\""),
+              std::string::npos)
         << e.what();
   }
   scene::apply_override(document, "name=caf\xff");  // a valid value whose bytes are not UTF-8: dumped, replaced
@@ -127,7 +140,8 @@ TEST(HostileScene, FrameClockRefusesWhatAnIntCannotCount) {
   EXPECT_THROW(frames::plan_frames(1e300, 30, 1e-3), softbody::InputError);
   EXPECT_THROW(frames::plan_frames(1e8, 30, 1e-3), softbody::InputError);  // 3e9 frames: beyond an int
   EXPECT_EQ(frames::plan_frames(frames::kMaxFrames / 30.0, 30, 1e-3).frame_count, frames::kMaxFrames);
-  EXPECT_EQ(frames::plan_frames(1.0, 30, 1.0 / 30 / frames::kMaxStepsPerFrame).steps_per_frame, frames::kMaxStepsPerFrame);
+  EXPECT_EQ(frames::plan_frames(1.0, 30, 1.0 / 30 / frames::kMaxStepsPerFrame).steps_per_frame,
+            frames::kMaxStepsPerFrame);
   EXPECT_THROW(frames::plan_frames(1.0, 30, 0.5 / 30 / frames::kMaxStepsPerFrame), softbody::InputError);
 }
 

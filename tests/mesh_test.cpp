@@ -109,9 +109,10 @@ TEST(Mesh, StlWithSplitVerticesIsWelded) {
 // A binary little-endian PLY of the cube [-1, 1]^3 (6 quads, outward), each vertex led by a uchar "flag" of 10
 // (0x0A), so that the data starts with the byte 0x0A right after the header's `header_end`.
 std::string cube_ply_whose_data_starts_with_0x0a(const std::string& header_end) {
-  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty uchar flag\nproperty float x\n"
-                    "property float y\nproperty float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header" +
-                    header_end;
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 8\nproperty uchar flag\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header" +
+      header_end;
   const auto append = [&ply](const auto value) { ply.append(reinterpret_cast<const char*>(&value), sizeof value); };
   for (int v = 0; v < 8; ++v) {
     append(std::uint8_t{10});
@@ -138,7 +139,8 @@ TEST(Mesh, BinaryPlyWhoseDataStartsWithALineFeedReadsAsWritten) {
     ASSERT_EQ(raw.vertices.size(), 8u);
     for (int v = 0; v < 8; ++v) {
       for (int axis = 0; axis < 3; ++axis) {
-        EXPECT_EQ(raw.vertices[static_cast<std::size_t>(v)][axis], ((v >> axis) & 1) != 0 ? 1.0 : -1.0) << v << " " << axis;
+        EXPECT_EQ(raw.vertices[static_cast<std::size_t>(v)][axis], ((v >> axis) & 1) != 0 ? 1.0 : -1.0)
+            << v << " " << axis;
       }
     }
     const mesh::LoadedMesh loaded = mesh::load_closed_mesh("cube.ply", file, "ctx");
@@ -150,7 +152,8 @@ TEST(Mesh, BinaryPlyWhoseDataStartsWithALineFeedReadsAsWritten) {
 // The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1) as PLY triangle strips: "0 2 1 3" gives (0,2,1) and
 // (1,2,3), "1 3 0 2" gives (1,3,0) and (0,3,2): its four outward faces. The ASCII file holds both in one row, a -1
 // between them; the binary one (big-endian, int items) one strip per row, the second led by a repeated vertex (two
-// triangles with a repeated vertex, left out, which keep the strip's alternation). assimp 5.2 reads the Igea scan's strips as one triangle.
+// triangles with a repeated vertex, left out, which keep the strip's alternation). assimp 5.2 reads the Igea scan's
+// strips as one triangle.
 TEST(Mesh, PlyTriangleStripsReadAsTheirTriangles) {
   const std::filesystem::path dir = testing_support::scratch_dir("ply_strips");
   const std::string vertex_header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
@@ -184,8 +187,10 @@ TEST(Mesh, PlyTriangleStripsReadAsTheirTriangles) {
     mesh::load_closed_mesh("ascii.ply", dir / "ascii.ply", "ctx", three_triangles);
     ADD_FAILURE() << "four triangles passed a limit of three";
   } catch (const softbody::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("more than 3 triangles, the limit (raise it with the scene key limits.max_triangles)"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "more than 3 triangles, the limit (raise it with the scene key limits.max_triangles)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -237,7 +242,11 @@ TEST(Mesh, TorusAndCapsuleAreClosedWithConvergingVolume) {
     EXPECT_TRUE(notes.empty()) << spec << " was wound inward";
     const double volume = mesh::signed_volume(m);
     EXPECT_LT(volume, exact) << spec;
-    EXPECT_GT(volume, exact * (std::string(spec).find("128") != std::string::npos || std::string(spec).find("96") != std::string::npos ? 0.995 : 0.8)) << spec;
+    EXPECT_GT(volume, exact * (std::string(spec).find("128") != std::string::npos ||
+                                       std::string(spec).find("96") != std::string::npos
+                                   ? 0.995
+                                   : 0.8))
+        << spec;
   }
 }
 

@@ -76,7 +76,9 @@ TEST(OutputSafety, StaleTemporariesOfKilledRunsAreRemovedByTheNextRun) {
   fs::create_directories(dir / "meshes");
   for (const fs::path& p : {stale_csv, stale_mesh, live}) std::ofstream(p) << "half a file";
   const std::string quick = " --set duration=0.1 ";
-  EXPECT_EQ(run_softbody("simulate scenes/bounce.json" + quick + "--csv " + (dir / "simulation.csv").string()).exit_status, 0);
+  EXPECT_EQ(
+      run_softbody("simulate scenes/bounce.json" + quick + "--csv " + (dir / "simulation.csv").string()).exit_status,
+      0);
   EXPECT_EQ(run_softbody("export scenes/bounce.json" + quick + "-o " + (dir / "meshes").string()).exit_status, 0);
   EXPECT_FALSE(fs::exists(stale_csv));
   EXPECT_FALSE(fs::exists(stale_mesh));
@@ -94,8 +96,10 @@ TEST(OutputSafety, ARunThatFailsLeavesNoMixOfTwoRuns) {
     ++earlier;
   }
   ASSERT_EQ(earlier, 10);  // frames 0..9 of 0.3 s at 30 frames per second
-  const auto failed = run_softbody("export scenes/bounce.json --set duration=0.3 --set bodies.0.stiffness=1e6 "
-                                   "--set solver.dt=1e-3 -o " + dir.string());
+  const auto failed = run_softbody(
+      "export scenes/bounce.json --set duration=0.3 --set bodies.0.stiffness=1e6 "
+      "--set solver.dt=1e-3 -o " +
+      dir.string());
   ASSERT_EQ(failed.exit_status, 3) << failed.output;
   int left = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
@@ -126,7 +130,8 @@ int complete_frames(const std::string& errors) {
 }
 
 // A run far too long to end by itself: the signal is what ends it.
-const std::vector<std::string> kLongRun{"scenes/bounce.json", "--set", "duration=10000", "--set", "bodies.0.mesh=icosphere:2"};
+const std::vector<std::string> kLongRun{"scenes/bounce.json", "--set", "duration=10000", "--set",
+                                        "bodies.0.mesh=icosphere:2"};
 
 TEST(OutputSafety, SigintDuringSimulateKeepsTheRowsOfCompleteFrames) {
   const fs::path dir = scratch_dir("sigint_simulate");

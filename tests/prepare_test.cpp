@@ -24,8 +24,10 @@ mesh::TriMesh sphere_with_a_hole() {
   mesh::TriMesh holed;
   holed.vertices = sphere.vertices;
   for (const mesh::Triangle& t : sphere.triangles) {
-    const double y = (sphere.vertices[static_cast<std::size_t>(t[0])] + sphere.vertices[static_cast<std::size_t>(t[1])] +
-                      sphere.vertices[static_cast<std::size_t>(t[2])]).y() / 3.0;
+    const double y = (sphere.vertices[static_cast<std::size_t>(t[0])] +
+                      sphere.vertices[static_cast<std::size_t>(t[1])] + sphere.vertices[static_cast<std::size_t>(t[2])])
+                         .y() /
+                     3.0;
     if (y <= 0.75) holed.triangles.push_back(t);
   }
   return holed;
@@ -40,7 +42,8 @@ std::filesystem::path write_holed_sphere(const std::filesystem::path& dir) {
 std::filesystem::path write_scene(const std::filesystem::path& dir, const std::string& body_extra) {
   const std::filesystem::path scene = dir / "scene.json";
   output::write_file_atomically(scene, R"({"name": "holed", "duration": 0.1, "fps": 10,
-    "bodies": [{"mesh": "holed_sphere.obj", "position": [0, 1.5, 0], "stiffness": 2000)" + body_extra + "}]}");
+    "bodies": [{"mesh": "holed_sphere.obj", "position": [0, 1.5, 0], "stiffness": 2000)" +
+                                           body_extra + "}]}");
   return scene;
 }
 
@@ -51,7 +54,8 @@ TEST(Prepare, RefusalOfAnOpenMeshNamesTheRepairOption) {
   EXPECT_EQ(result.exit_status, 2) << result.output;
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
   EXPECT_NE(result.output.find("is not closed: "), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("; add \"repair\": true to the body to fill the holes (or write a repaired copy: softbody prepare "),
+  EXPECT_NE(result.output.find(
+                "; add \"repair\": true to the body to fill the holes (or write a repaired copy: softbody prepare "),
             std::string::npos)
       << result.output;
 }
@@ -61,7 +65,8 @@ TEST(Prepare, RepairHolesFalseSaysWhichStepIsOff) {
   write_holed_sphere(dir);
   const auto result = run_softbody("simulate " + write_scene(dir, R"(, "repair": {"holes": false})").string());
   EXPECT_EQ(result.exit_status, 2) << result.output;
-  EXPECT_NE(result.output.find("repair.holes is false: set it to true to fill the holes"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("repair.holes is false: set it to true to fill the holes"), std::string::npos)
+      << result.output;
 }
 
 // A mesh that is still open after a repair is refused with what the repair did: its notes are printed only
@@ -69,11 +74,14 @@ TEST(Prepare, RepairHolesFalseSaysWhichStepIsOff) {
 TEST(Prepare, RefusalAfterARepairSaysWhatTheRepairDid) {
   mesh::RepairOptions repair;
   repair.enabled = true;
-  const std::string hint = mesh::repair_hint(mesh::MeshDefect::Open, repair, "beetle.obj",
-                                             {"repair: stitched 8 pairs", "repair: filled 53 holes; 1 hole could not be triangulated"});
-  EXPECT_EQ(hint, "; still so after \"repair\", which did: repair: stitched 8 pairs; repair: filled 53 holes; 1 hole could "
-                  "not be triangulated");
-  EXPECT_EQ(mesh::repair_hint(mesh::MeshDefect::Open, repair, "beetle.obj"), "; still so after \"repair\", which changed nothing");
+  const std::string hint =
+      mesh::repair_hint(mesh::MeshDefect::Open, repair, "beetle.obj",
+                        {"repair: stitched 8 pairs", "repair: filled 53 holes; 1 hole could not be triangulated"});
+  EXPECT_EQ(hint,
+            "; still so after \"repair\", which did: repair: stitched 8 pairs; repair: filled 53 holes; 1 hole could "
+            "not be triangulated");
+  EXPECT_EQ(mesh::repair_hint(mesh::MeshDefect::Open, repair, "beetle.obj"),
+            "; still so after \"repair\", which changed nothing");
 }
 
 TEST(Prepare, RepairTrueMakesTheOpenMeshSimulate) {
@@ -121,11 +129,13 @@ TEST(Prepare, BadInputExitsTwoAndWritesNothing) {
   struct Case {
     std::string arguments, message;
   };
-  for (const Case& c : {Case{testing_support::data_path("not_a_mesh.obj") + " " + out.string(), "error: prepare: mesh "},
-                        Case{(dir / "missing.obj").string() + " " + out.string(), "does not exist"},
-                        Case{in.string() + " " + (dir / "out.xyz").string(), "expected an output file name ending in .obj, .ply or .stl"},
-                        Case{in.string() + " " + out.string() + " --resolution 10", "expected a vertex count from 20 to 1000000"},
-                        Case{in.string() + " " + out.string() + " --parts some", "--parts"}}) {
+  for (const Case& c :
+       {Case{testing_support::data_path("not_a_mesh.obj") + " " + out.string(), "error: prepare: mesh "},
+        Case{(dir / "missing.obj").string() + " " + out.string(), "does not exist"},
+        Case{in.string() + " " + (dir / "out.xyz").string(),
+             "expected an output file name ending in .obj, .ply or .stl"},
+        Case{in.string() + " " + out.string() + " --resolution 10", "expected a vertex count from 20 to 1000000"},
+        Case{in.string() + " " + out.string() + " --parts some", "--parts"}}) {
     const auto result = run_softbody("prepare " + c.arguments);
     EXPECT_EQ(result.exit_status, 2) << c.arguments << "\n" << result.output;
     EXPECT_NE(result.output.find(c.message), std::string::npos) << result.output;

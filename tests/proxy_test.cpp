@@ -26,7 +26,8 @@ using softbody::Vec3;
 // A bumpy sphere (icosphere:4, 2562 vertices, radius 1 ± 5 %): a detailed surface that is not the proxy's.
 mesh::TriMesh bumpy_sphere() {
   mesh::TriMesh m = mesh::icosphere(4);
-  for (Vec3& x : m.vertices) x *= 1.0 + 0.05 * std::sin(5.0 * x.x()) * std::cos(4.0 * x.y()) * std::sin(3.0 * x.z() + 1.0);
+  for (Vec3& x : m.vertices)
+    x *= 1.0 + 0.05 * std::sin(5.0 * x.x()) * std::cos(4.0 * x.y()) * std::sin(3.0 * x.z() + 1.0);
   return m;
 }
 
@@ -88,8 +89,11 @@ TEST(SkinBinding, StaysCloseUnderAUniformScale) {
   for (std::size_t i = 0; i < detailed_x.size(); ++i) {
     const sim::SkinAnchor& a = bound.skin.anchors[i];
     const softbody::Triangle& t = bound.proxy.triangles[static_cast<std::size_t>(a.triangle)];
-    const auto n_at = [&](int corner) { return normals[static_cast<std::size_t>(t[static_cast<std::size_t>(corner)])]; };
-    const double n_length = a.face_normal ? 1.0 : ((1.0 - a.b1 - a.b2) * n_at(0) + a.b1 * n_at(1) + a.b2 * n_at(2)).norm();
+    const auto n_at = [&](int corner) {
+      return normals[static_cast<std::size_t>(t[static_cast<std::size_t>(corner)])];
+    };
+    const double n_length =
+        a.face_normal ? 1.0 : ((1.0 - a.b1 - a.b2) * n_at(0) + a.b1 * n_at(1) + a.b2 * n_at(2)).norm();
     const double error = (detailed_x[i] - s * bound.detailed.vertices[i]).norm();
     EXPECT_NEAR(error, (s - 1.0) * std::abs(a.offset_m) * n_length, 1e-12) << "vertex " << i;
     largest = std::max(largest, error);
@@ -105,7 +109,8 @@ mesh::TriMesh two_crossing_spheres(int levels, double gap) {
   const mesh::TriMesh second = mesh::icosphere(levels);
   const int offset = static_cast<int>(m.vertices.size());
   for (const Vec3& x : second.vertices) m.vertices.push_back(x + Vec3(gap, 0, 0));
-  for (const softbody::Triangle& t : second.triangles) m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (const softbody::Triangle& t : second.triangles)
+    m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   return m;
 }
 
@@ -143,26 +148,34 @@ std::string error_of(const std::string& body_json) {
 TEST(ProxyScene, ReadsBothFormsAndRefusesOthers) {
   const scene::Scene count = testing_support::scene_from_text(R"({ "bodies": [ { "resolution": 2000 } ] })");
   EXPECT_EQ(count.bodies[0].resolution_vertices, 2000);
-  const scene::Scene length = testing_support::scene_from_text(R"({ "bodies": [ { "resolution": { "edge_length": 0.05 } } ] })");
+  const scene::Scene length =
+      testing_support::scene_from_text(R"({ "bodies": [ { "resolution": { "edge_length": 0.05 } } ] })");
   EXPECT_EQ(length.bodies[0].resolution_edge_length_m, 0.05);
   EXPECT_EQ(testing_support::scene_from_text(R"({ "bodies": [ {} ] })").bodies[0].resolution_vertices, 0);
 
-  EXPECT_NE(error_of(R"({ "resolution": 5 })").find("bodies.0.resolution: expected an integer in 20..1000000, got number 5"),
-            std::string::npos) << error_of(R"({ "resolution": 5 })");
-  EXPECT_NE(error_of(R"({ "resolution": { "edge_length": -1 } })").find("bodies.0.resolution.edge_length: expected a finite number > 0"),
+  EXPECT_NE(
+      error_of(R"({ "resolution": 5 })").find("bodies.0.resolution: expected an integer in 20..1000000, got number 5"),
+      std::string::npos)
+      << error_of(R"({ "resolution": 5 })");
+  EXPECT_NE(error_of(R"({ "resolution": { "edge_length": -1 } })")
+                .find("bodies.0.resolution.edge_length: expected a finite number > 0"),
             std::string::npos);
   EXPECT_NE(error_of(R"({ "resolution": { "edges": 1 } })").find("bodies.0.resolution: expected {\"edge_length\": L}"),
-            std::string::npos) << error_of(R"({ "resolution": { "edges": 1 } })");
+            std::string::npos)
+      << error_of(R"({ "resolution": { "edges": 1 } })");
 }
 
 TEST(ProxyScene, AnEdgeLengthFarTooShortIsBadInput) {
   // Unit sphere, area 4π: L = 1e-4 m would make about 2·4π / (√3·1e-8) ≈ 1.5e9 vertices.
   try {
-    testing_support::world_from_text(R"({ "bodies": [ { "mesh": "icosphere:1", "resolution": { "edge_length": 1e-4 } } ] })");
+    testing_support::world_from_text(
+        R"({ "bodies": [ { "mesh": "icosphere:1", "resolution": { "edge_length": 1e-4 } } ] })");
     ADD_FAILURE() << "no error";
   } catch (const softbody::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("bodies.0.resolution.edge_length: expected an edge length giving at most 1000000 vertices"),
-              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "bodies.0.resolution.edge_length: expected an edge length giving at most 1000000 vertices"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -186,7 +199,8 @@ TEST(ProxyScene, SimulatesOnTheProxyAndCarriesTheMesh) {
   const std::span<const Vec3> x = shown.of(world, 0);
   const mesh::TriMesh sphere = mesh::icosphere(4);
   double largest = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) largest = std::max(largest, (x[i] - (sphere.vertices[i] + Vec3(0, 2, 0))).norm());
+  for (std::size_t i = 0; i < x.size(); ++i)
+    largest = std::max(largest, (x[i] - (sphere.vertices[i] + Vec3(0, 2, 0))).norm());
   EXPECT_LT(largest, 1e-12);
 }
 
@@ -195,10 +209,12 @@ TEST(ProxyScene, ExportedFramesHoldTheDetailedMesh) {
   testing_support::run_steps(world, 200, 1e-4);  // moving and deformed
   const std::size_t shown_vertices = 2562 + 162;
   for (const output::MeshFormat format : {output::MeshFormat::Obj, output::MeshFormat::Ply}) {
-    const std::filesystem::path dir = testing_support::scratch_dir(format == output::MeshFormat::Obj ? "proxy_obj" : "proxy_ply");
+    const std::filesystem::path dir =
+        testing_support::scratch_dir(format == output::MeshFormat::Obj ? "proxy_obj" : "proxy_ply");
     output::MeshExporter exporter(dir, format);
     exporter.on_frame(3, world.state.time_s, world);
-    const mesh::LoadedMesh loaded = mesh::load_closed_mesh(exporter.frame_path(3).string(), exporter.frame_path(3), "export");
+    const mesh::LoadedMesh loaded =
+        mesh::load_closed_mesh(exporter.frame_path(3).string(), exporter.frame_path(3), "export");
     EXPECT_EQ(loaded.mesh.vertices.size(), shown_vertices);
     EXPECT_EQ(loaded.mesh.triangles.size(), 5120u + 320u);
   }
@@ -218,14 +234,18 @@ TEST(ProxyScene, ExportedFramesHoldTheDetailedMesh) {
 
 TEST(ProxyScene, RendersAndExportsEndToEnd) {
   const std::filesystem::path dir = testing_support::scratch_dir("proxy_render");
-  const auto render = testing_support::run_softbody("render tests/scenes/proxy_render.json -o " + (dir / "frames").string());
+  const auto render =
+      testing_support::run_softbody("render tests/scenes/proxy_render.json -o " + (dir / "frames").string());
   ASSERT_EQ(render.exit_status, 0) << render.output;
-  EXPECT_NE(render.output.find("bodies.0.resolution: simulated on an isotropic remesh of"), std::string::npos) << render.output;
+  EXPECT_NE(render.output.find("bodies.0.resolution: simulated on an isotropic remesh of"), std::string::npos)
+      << render.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "frame_0000.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "frames" / "frame_0002.png"));
-  const auto csv = testing_support::run_softbody("simulate tests/scenes/proxy_render.json --csv " + (dir / "run.csv").string());
+  const auto csv =
+      testing_support::run_softbody("simulate tests/scenes/proxy_render.json --csv " + (dir / "run.csv").string());
   ASSERT_EQ(csv.exit_status, 0) << csv.output;
-  const auto exported = testing_support::run_softbody("export tests/scenes/proxy_render.json --format obj -o " + (dir / "obj").string());
+  const auto exported =
+      testing_support::run_softbody("export tests/scenes/proxy_render.json --format obj -o " + (dir / "obj").string());
   ASSERT_EQ(exported.exit_status, 0) << exported.output;
   const std::filesystem::path last = dir / "obj" / "frame_0002.obj";
   const mesh::LoadedMesh loaded = mesh::load_closed_mesh(last.string(), last, "export");

@@ -11,7 +11,7 @@ void add_springs(std::span<const std::array<int, 2>> edges, std::span<const doub
     const auto [i, j] = edges[e];
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
-    if (length == 0.0) continue;  // coincident endpoints: no direction to push along
+    if (length == 0.0) continue;                                     // coincident endpoints: no direction to push along
     const Vec3 f = (-k * (length - rest_length_m[e]) / length) * d;  // -k (|d| - L0) d̂
     force[i] += f;
     force[j] -= f;

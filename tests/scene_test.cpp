@@ -50,9 +50,11 @@ TEST(Scene, OverridesSetNestedKeys) {
 }
 
 TEST(Scene, BadOverridesNameTheAssignment) {
-  EXPECT_NE(error_of(kMinimal, {"bodies.3.mass=1"}).find("--set bodies.3.mass=1: bodies.3: index out of range"), std::string::npos);
+  EXPECT_NE(error_of(kMinimal, {"bodies.3.mass=1"}).find("--set bodies.3.mass=1: bodies.3: index out of range"),
+            std::string::npos);
   EXPECT_NE(error_of(kMinimal, {"nonsense"}).find("expected PATH=VALUE"), std::string::npos);
-  EXPECT_NE(error_of(kMinimal, {"bodies.0.mass=nan"}).find("s.json: bodies.0.mass: expected a number > 0, got string \"nan\""),
+  EXPECT_NE(error_of(kMinimal, {"bodies.0.mass=nan"})
+                .find("s.json: bodies.0.mass: expected a number > 0, got string \"nan\""),
             std::string::npos);
 }
 
@@ -71,29 +73,43 @@ TEST_P(SceneErrors, NameFileKeyAndExpectation) {
 INSTANTIATE_TEST_SUITE_P(
     Scene, SceneErrors,
     ::testing::Values(
-        BadInput{R"({ "bodies": [ { "mesh": "icosphere:1", "stifness": 3 } ] })", "s.json: bodies.0.stifness: unknown key"},
+        BadInput{R"({ "bodies": [ { "mesh": "icosphere:1", "stifness": 3 } ] })",
+                 "s.json: bodies.0.stifness: unknown key"},
         BadInput{R"({ "fsp": 30, "bodies": [ { } ] })", "s.json: fsp: unknown key"},
-        BadInput{R"({ "bodies": [ { "mass": -1 } ] })", "s.json: bodies.0.mass: expected a finite number > 0, got number -1"},
-        BadInput{R"({ "bodies": [ { "mass": "heavy" } ] })", "s.json: bodies.0.mass: expected a number > 0, got string \"heavy\""},
+        BadInput{R"({ "bodies": [ { "mass": -1 } ] })",
+                 "s.json: bodies.0.mass: expected a finite number > 0, got number -1"},
+        BadInput{R"({ "bodies": [ { "mass": "heavy" } ] })",
+                 "s.json: bodies.0.mass: expected a number > 0, got string \"heavy\""},
         BadInput{R"({ "solver": { "dt": 0 }, "bodies": [ { } ] })", "s.json: solver.dt: expected a finite number > 0"},
-        BadInput{R"({ "solver": { "dt": -1e-4 }, "bodies": [ { } ] })", "s.json: solver.dt: expected a finite number > 0"},
-        BadInput{R"({ "solver": { "integrator": "leapfrog" }, "bodies": [ { } ] })", "s.json: solver.integrator: expected one of \"euler\""},
-        BadInput{R"({ "solver": { "threads": -1 }, "bodies": [ { } ] })", "s.json: solver.threads: expected an integer in 0..256"},
+        BadInput{R"({ "solver": { "dt": -1e-4 }, "bodies": [ { } ] })",
+                 "s.json: solver.dt: expected a finite number > 0"},
+        BadInput{R"({ "solver": { "integrator": "leapfrog" }, "bodies": [ { } ] })",
+                 "s.json: solver.integrator: expected one of \"euler\""},
+        BadInput{R"({ "solver": { "threads": -1 }, "bodies": [ { } ] })",
+                 "s.json: solver.threads: expected an integer in 0..256"},
         BadInput{R"({ "fps": 0, "bodies": [ { } ] })", "s.json: fps: expected an integer in 1..1000, got number 0"},
         BadInput{R"({ "fps": 29.97, "bodies": [ { } ] })", "s.json: fps: expected an integer in 1..1000"},
         BadInput{R"({ "duration": -3, "bodies": [ { } ] })", "s.json: duration: expected a finite number > 0"},
         BadInput{R"({ "bodies": [ ] })", "s.json: bodies: expected an array of at least one body"},
         BadInput{R"({ })", "s.json: bodies: expected an array of at least one body"},
-        BadInput{R"({ "bodies": [ { "position": [1, 2] } ] })", "s.json: bodies.0.position: expected an array of 3 numbers"},
+        BadInput{R"({ "bodies": [ { "position": [1, 2] } ] })",
+                 "s.json: bodies.0.position: expected an array of 3 numbers"},
         BadInput{R"({ "bodies": [ { "pressure": -5 } ] })", "s.json: bodies.0.pressure: expected a finite number >= 0"},
-        BadInput{R"({ "bodies": [ { "mesh": "icosphere:12" } ] })", "s.json: bodies.0.mesh: expected icosphere:L with L an integer in 0..7"},
-        BadInput{R"({ "bodies": [ { "mesh": "missing.obj" } ] })", "s.json: bodies.0.mesh: mesh file missing.obj does not exist"},
-        BadInput{R"({ "floor": { "contact": "sticky" }, "bodies": [ { } ] })", "s.json: floor.contact: expected one of \"paper\" \"friction\""},
-        BadInput{R"({ "render": { "width": 641 }, "bodies": [ { } ] })", "s.json: render.width: expected an even number of pixels"},
-        BadInput{R"({ "bodies": [ { "color": [1, 2, 0] } ] })", "s.json: bodies.0.color.1: expected a finite number in [0, 1]"},
+        BadInput{R"({ "bodies": [ { "mesh": "icosphere:12" } ] })",
+                 "s.json: bodies.0.mesh: expected icosphere:L with L an integer in 0..7"},
+        BadInput{R"({ "bodies": [ { "mesh": "missing.obj" } ] })",
+                 "s.json: bodies.0.mesh: mesh file missing.obj does not exist"},
+        BadInput{R"({ "floor": { "contact": "sticky" }, "bodies": [ { } ] })",
+                 "s.json: floor.contact: expected one of \"paper\" \"friction\""},
+        BadInput{R"({ "render": { "width": 641 }, "bodies": [ { } ] })",
+                 "s.json: render.width: expected an even number of pixels"},
+        BadInput{R"({ "bodies": [ { "color": [1, 2, 0] } ] })",
+                 "s.json: bodies.0.color.1: expected a finite number in [0, 1]"},
         BadInput{R"([1, 2])", "s.json: (top level): expected an object"},
-        BadInput{R"({ "solver": { "substeps": 0 }, "bodies": [ { } ] })", "s.json: solver.substeps: expected an integer in 1..1000000, got number 0"},
-        BadInput{R"({ "solver": { "substeps": "many" }, "bodies": [ { } ] })", "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""}),
+        BadInput{R"({ "solver": { "substeps": 0 }, "bodies": [ { } ] })",
+                 "s.json: solver.substeps: expected an integer in 1..1000000, got number 0"},
+        BadInput{R"({ "solver": { "substeps": "many" }, "bodies": [ { } ] })",
+                 "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""}),
     [](const auto& param) { return "case" + std::to_string(param.index); });
 
 TEST(Scene, InvalidJsonNamesTheFile) {
@@ -116,13 +132,17 @@ TEST(Scene, SmoothContactKeys) {
   EXPECT_EQ(s.floor->smooth.smoothing_m, 0.003);
   EXPECT_EQ(s.floor->smooth.damping_ratio, 0.4);
   EXPECT_EQ(s.collisions.contact, sim::BodyContactModel::Smooth);
-  EXPECT_NE(error_of(R"({ "floor": { "contact": "smooth", "time_constant": 0 }, "bodies": [ { "mesh": "icosphere:1" } ] })")
-                .find("floor.time_constant: expected a finite number > 0"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(R"({ "floor": { "contact": "smooth", "time_constant": 0 }, "bodies": [ { "mesh": "icosphere:1" } ] })")
+          .find("floor.time_constant: expected a finite number > 0"),
+      std::string::npos);
   EXPECT_EQ(scene_from_text(R"({ "solver": { "integrator": "newton" }, "floor": { "contact": "smooth" },
-      "bodies": [ { "mesh": "icosphere:1" } ] })").floor->contact, sim::FloorContact::Smooth);
+      "bodies": [ { "mesh": "icosphere:1" } ] })")
+                .floor->contact,
+            sim::FloorContact::Smooth);
   EXPECT_EQ(scene_from_text(R"({ "solver": { "integrator": "newton" }, "collisions": { "contact": "smooth" },
-      "bodies": [ { "mesh": "icosphere:1" }, { "mesh": "icosphere:1", "position": [3, 0, 0] } ] })").collisions.contact,
+      "bodies": [ { "mesh": "icosphere:1" }, { "mesh": "icosphere:1", "position": [3, 0, 0] } ] })")
+                .collisions.contact,
             sim::BodyContactModel::Smooth);
 }
 

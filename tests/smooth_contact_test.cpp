@@ -18,7 +18,8 @@ using softbody::Vec3;
 
 double total_energy(const sim::World& world) {
   double energy = 0.0;
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) energy += sim::diagnose(world.model, world.state, b).total_J();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b)
+    energy += sim::diagnose(world.model, world.state, b).total_J();
   return energy;
 }
 
@@ -36,7 +37,8 @@ TEST(SmoothContact, ElasticForceIsMinusTheEnergyGradient) {
     sim::add_smooth_floor_forces(contact, mass, x, v, f);
     const double h = 1e-4 * depth;  // central differences: relative error ~ (h/depth)² × O(10)
     const std::vector<Vec3> up{Vec3(0.0, -depth + h, 0.0)}, down{Vec3(0.0, -depth - h, 0.0)};
-    const double gradient = (sim::smooth_floor_energy(contact, mass, up) - sim::smooth_floor_energy(contact, mass, down)) / (2 * h);
+    const double gradient =
+        (sim::smooth_floor_energy(contact, mass, up) - sim::smooth_floor_energy(contact, mass, down)) / (2 * h);
     EXPECT_NEAR(f[0].y(), -gradient, 1e-6 * std::abs(f[0].y()) + 1e-12) << "depth " << depth;
     EXPECT_GT(f[0].y(), 0.0);
   }
@@ -81,7 +83,8 @@ TEST(SmoothContact, RestitutionSetsTheReboundHeight) {
   for (double e : {0.3, 0.5, 0.8}) {
     sim::World world = testing_support::world_from_text(R"({
         "solver": { "integrator": "rk4" },
-        "floor": { "contact": "smooth", "friction": 0, "restitution": )" + std::to_string(e) + R"( },
+        "floor": { "contact": "smooth", "friction": 0, "restitution": )" +
+                                                        std::to_string(e) + R"( },
         "bodies": [ { "mesh": "icosphere:1", "position": [0, 2, 0], "stiffness": 0, "damping": 0, "pressure": 0 } ] })");
     const std::vector<Vec3>& x = world.state.x;
     const std::size_t lowest =
@@ -151,13 +154,15 @@ TEST(SmoothContact, BallAtRestStaysPutAndLosesEnergy) {
   double spin = 0.0;  // |L| about the centre of mass [kg m²/s]
   Vec3 angular_momentum = Vec3::Zero();
   for (std::size_t i = 0; i < world.state.x.size(); ++i) {
-    angular_momentum += world.model.mass_kg[i] * (world.state.x[i] - d.com_m).cross(world.state.v[i] - d.com_velocity_m_per_s);
+    angular_momentum +=
+        world.model.mass_kg[i] * (world.state.x[i] - d.com_m).cross(world.state.v[i] - d.com_velocity_m_per_s);
   }
   spin = angular_momentum.norm();
-  std::printf("at rest: com (%.3g, %.6f, %.3g) m, horizontal speed %.3g m/s, |L| %.3g, lowest vertex %.4g m, largest "
-              "energy gain over 10 ms %.3g J\n",
-              d.com_m.x(), d.com_m.y(), d.com_m.z(), std::hypot(d.com_velocity_m_per_s.x(), d.com_velocity_m_per_s.z()),
-              spin, d.min_y_m, largest_gain);
+  std::printf(
+      "at rest: com (%.3g, %.6f, %.3g) m, horizontal speed %.3g m/s, |L| %.3g, lowest vertex %.4g m, largest "
+      "energy gain over 10 ms %.3g J\n",
+      d.com_m.x(), d.com_m.y(), d.com_m.z(), std::hypot(d.com_velocity_m_per_s.x(), d.com_velocity_m_per_s.z()), spin,
+      d.min_y_m, largest_gain);
   // The icosphere is not symmetric about the vertical through its lowest vertex, so its sag pushes the
   // contact patch sideways a little; regularised friction lets it creep at a speed ~ ε × force / (μ N).
   // Measured: 0.12 mm in 1 s, |L| 1.2e-4 kg m²/s.

@@ -14,11 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include "background_run.hpp"
 #include "mesh/generators.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
 #include "output/mesh_file_writer.hpp"
-#include "background_run.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -41,8 +41,19 @@ std::string read_text(const fs::path& path) {
 // a note that marks the end of setup) frame 1 is 909,091 euler steps, measured at 925 steps/s on the 2-core
 // machine: 16 minutes; rk45 at a tolerance of 1e-12 takes about 51,000 steps at 90 steps/s for it: 9 minutes.
 std::vector<std::string> one_long_frame(const std::string& integrator) {
-  return {"scenes/bounce.json", "--set", "duration=1", "--set", "fps=1", "--set", "bodies.0.mesh=icosphere:5",
-          "--set", "solver.integrator=" + integrator, "--set", "solver.dt=1.1e-6", "--set", "solver.tolerance=1e-12"};
+  return {"scenes/bounce.json",
+          "--set",
+          "duration=1",
+          "--set",
+          "fps=1",
+          "--set",
+          "bodies.0.mesh=icosphere:5",
+          "--set",
+          "solver.integrator=" + integrator,
+          "--set",
+          "solver.dt=1.1e-6",
+          "--set",
+          "solver.tolerance=1e-12"};
 }
 
 // `command` SCENE ARGUMENTS... MORE...
@@ -102,10 +113,11 @@ TEST(StopRequest, SigtermEndsExportWithinAStepNotAFrame) {
   for (const std::string format : {"obj", "pc2"}) {
     SCOPED_TRACE(format);
     const fs::path dir = scratch_dir("stop_export_" + format);
-    BackgroundRun run(command_line("export", one_long_frame("euler"), {"--format", format, "-o", (dir / "out").string()}),
-                      dir);
-    const bool started = format == "obj" ? run.wait_until([&] { return fs::exists(dir / "out" / "frame_0000.obj"); }, kStartBound)
-                                         : run.wait_until([&] { return run.errors().find("note: ") != std::string::npos; }, kStartBound);
+    BackgroundRun run(
+        command_line("export", one_long_frame("euler"), {"--format", format, "-o", (dir / "out").string()}), dir);
+    const bool started =
+        format == "obj" ? run.wait_until([&] { return fs::exists(dir / "out" / "frame_0000.obj"); }, kStartBound)
+                        : run.wait_until([&] { return run.errors().find("note: ") != std::string::npos; }, kStartBound);
     ASSERT_TRUE(started) << run.errors();
     ASSERT_EQ(stop(run, SIGTERM, "export " + format), 143) << run.errors();
     EXPECT_EQ(complete_frames(run.errors()), 1) << run.errors();
@@ -137,10 +149,12 @@ TEST(StopRequest, SigintDuringSetupEndsItAfterThePhaseAndWritesNothing) {
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(stop(run, SIGINT, "simulate setup"), 130) << run.errors();
   // The phase the signal came in, and not a later one: the remesh (or, on a slow start, generating the ball).
-  const std::string after_remesh = "interrupted: SIGINT: stopped during setup, after remeshing bodies.0 into its "
-                                   "simulation proxy; nothing was written";
-  const std::string after_generating = "interrupted: SIGINT: stopped during setup, after generating icosphere:5; "
-                                       "nothing was written";
+  const std::string after_remesh =
+      "interrupted: SIGINT: stopped during setup, after remeshing bodies.0 into its "
+      "simulation proxy; nothing was written";
+  const std::string after_generating =
+      "interrupted: SIGINT: stopped during setup, after generating icosphere:5; "
+      "nothing was written";
   EXPECT_TRUE(run.errors().find(after_remesh) != std::string::npos ||
               run.errors().find(after_generating) != std::string::npos)
       << run.errors();

@@ -25,7 +25,8 @@ sim::World world_from_text(const std::string& json_text) {
 
 softbody::Vec3 total_momentum(const sim::World& world) {
   softbody::Vec3 p = softbody::Vec3::Zero();
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b)
+    p += sim::diagnose(world.model, world.state, b).momentum_kg_m_per_s;
   return p;
 }
 

@@ -204,8 +204,8 @@ class Benchmark {
     vertices_ = fine.positions.size() / static_cast<std::size_t>(frame_count() + 1);
     result_.vertices = vertices_;
     result_.body_size_m = body_size({fine.positions.begin(), fine.positions.begin() + static_cast<long>(vertices_)});
-    result_.reference.method = method == sim::IntegratorKind::Rk45 ? "rk45 fixed step (5th order)"
-                                                                 : sim::to_string(method) + " fixed step";
+    result_.reference.method =
+        method == sim::IntegratorKind::Rk45 ? "rk45 fixed step (5th order)" : sim::to_string(method) + " fixed step";
     result_.reference.dt_s = fine.dt_s;
     result_.reference.uncertainty_m = rms_distance(fine.positions, check.positions, vertices_, 1);
     result_.reference.wall_s = fine.step_wall_s + check.step_wall_s;
@@ -236,16 +236,18 @@ class Benchmark {
       run.rms_error_m = rms_distance(t.positions, reference_, vertices_, 1);
       run.final_error_m = rms_distance(t.positions, reference_, vertices_, t.positions.size() / vertices_ - 1);
       if (!(run.rms_error_m <= result_.body_size_m)) run.status = RunStatus::BlownUp;
-      if (run.rms_error_m < options_.floor_factor * result_.reference.uncertainty_m) run.status = RunStatus::AtReference;
+      if (run.rms_error_m < options_.floor_factor * result_.reference.uncertainty_m)
+        run.status = RunStatus::AtReference;
     }
     const double stable_dt = result_.stable_dt_s[static_cast<std::size_t>(integrator)];
     run.above_stable_dt = integrator != sim::IntegratorKind::Rk45 && run.dt_s > stable_dt;
     char line[260];
-    std::snprintf(line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s%s",
-                  sim::to_string(integrator).c_str(), run.dt_s,
-                  tolerance > 0.0 ? (" (tol " + format_tolerance(tolerance) + ")").c_str() : "",
-                  to_string(run.status).c_str(), run.rms_error_m, run.final_error_m, run.steps, run.wall_s,
-                  run.above_stable_dt ? (" (above the estimated stable dt " + format_seconds(stable_dt) + ")").c_str() : "");
+    std::snprintf(
+        line, sizeof line, "%-10s dt %.3e s%s: %s, rms error %.3e m, final %.3e m, %lld steps, %.3f s%s",
+        sim::to_string(integrator).c_str(), run.dt_s,
+        tolerance > 0.0 ? (" (tol " + format_tolerance(tolerance) + ")").c_str() : "", to_string(run.status).c_str(),
+        run.rms_error_m, run.final_error_m, run.steps, run.wall_s,
+        run.above_stable_dt ? (" (above the estimated stable dt " + format_seconds(stable_dt) + ")").c_str() : "");
     say(line);
     result_.runs.push_back(run);
     return run;

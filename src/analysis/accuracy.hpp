@@ -15,18 +15,18 @@ namespace analysis {
 std::vector<sim::IntegratorKind> every_integrator();
 
 struct AccuracyOptions {
-  double duration_s = 0.0;          // simulated span; 0: the scene's duration
-  double reference_dt_s = 0.0;      // reference step; 0: solver.dt / 10
+  double duration_s = 0.0;      // simulated span; 0: the scene's duration
+  double reference_dt_s = 0.0;  // reference step; 0: solver.dt / 10
   // The reference's method, at fixed steps: rk45 means Dormand–Prince's 5th-order formula without error
   // control. With contact events every method is first order at best, so a cheaper method at a finer
   // step can make the better reference there (docs/integrators.md).
   sim::IntegratorKind reference_integrator = sim::IntegratorKind::Rk45;
-  double coarsest_factor = 32.0;    // fixed-step sweeps start at this × solver.dt, then refine
+  double coarsest_factor = 32.0;  // fixed-step sweeps start at this × solver.dt, then refine
   // Each fixed-step run's dt is the previous one's over this (2: halving). A finer ratio (√2) puts more runs
   // between the stability limit and the reference's floor, where an order can be fitted.
   double refinement = 2.0;
-  int max_runs = 12;                // per integrator
-  double run_budget_s = 3.0;        // stop refining an integrator once one run takes longer than this
+  int max_runs = 12;                     // per integrator
+  double run_budget_s = 3.0;             // stop refining an integrator once one run takes longer than this
   double rk45_loosest_tolerance = 1e-2;  // then ÷10 per run
   // Runs whose error is below this × the reference's uncertainty measure the reference, not themselves:
   // status at_reference, not plotted, and the sweep stops. 100 on smooth scenes; lower it where no
@@ -43,13 +43,13 @@ std::string to_string(RunStatus status);
 
 struct AccuracyRun {
   sim::IntegratorKind integrator = sim::IntegratorKind::Euler;
-  double dt_s = 0.0;          // the step used (frame-aligned); rk45: the mean accepted step
-  double tolerance = 0.0;     // rk45 only, else 0
-  long long steps = 0;        // accepted steps
+  double dt_s = 0.0;       // the step used (frame-aligned); rk45: the mean accepted step
+  double tolerance = 0.0;  // rk45 only, else 0
+  long long steps = 0;     // accepted steps
   long long rejected_steps = 0;
-  double wall_s = 0.0;        // stepping time of the run (median of 3 for runs under 0.5 s)
-  double rms_error_m = 0.0;   // RMS over every frame after frame 0 and every vertex of |x − x_ref|
-  double final_error_m = 0.0; // RMS over vertices at the last frame
+  double wall_s = 0.0;         // stepping time of the run (median of 3 for runs under 0.5 s)
+  double rms_error_m = 0.0;    // RMS over every frame after frame 0 and every vertex of |x − x_ref|
+  double final_error_m = 0.0;  // RMS over vertices at the last frame
   RunStatus status = RunStatus::Ok;
   // A fixed step above the integrator's estimated stable dt (sim/stability.hpp). With a smooth contact's
   // regularised friction such a run need not blow up (the friction force is bounded by μN), so its error is
@@ -58,10 +58,10 @@ struct AccuracyRun {
 };
 
 struct Reference {
-  std::string method;         // e.g. "rk45 fixed step (5th order)"
-  double dt_s = 0.0;          // the step of the reference used
-  double uncertainty_m = 0.0; // RMS error-norm distance to the same method at twice the step
-  double wall_s = 0.0;        // both reference runs
+  std::string method;          // e.g. "rk45 fixed step (5th order)"
+  double dt_s = 0.0;           // the step of the reference used
+  double uncertainty_m = 0.0;  // RMS error-norm distance to the same method at twice the step
+  double wall_s = 0.0;         // both reference runs
 };
 
 struct AccuracyResult {
@@ -69,7 +69,7 @@ struct AccuracyResult {
   double duration_s = 0.0;
   int fps = 0;
   std::size_t vertices = 0;
-  double body_size_m = 0.0;   // RMS distance of the vertices from their centroid at t = 0
+  double body_size_m = 0.0;         // RMS distance of the vertices from their centroid at t = 0
   std::vector<double> stable_dt_s;  // the estimated stable dt of each integrator of `runs`, by IntegratorKind
   Reference reference;
   double floor_factor = 0.0;  // AccuracyOptions::floor_factor: runs below it times the uncertainty are at_reference

@@ -29,9 +29,9 @@ sim::World limit_world(const LimitBody& body, sim::IntegratorKind integrator, bo
   limit_body.params = {body.stiffness_N_per_m, body.damping_N_s_per_m, body.pressure_J};
   sim::Solver solver;
   solver.integrator = integrator;
-  sim::World world = sim::one_body_world(sim::Vec3(0.0, -9.81, 0.0),
-                                         floor ? std::optional<sim::Floor>(sim::Floor{}) : std::nullopt, solver,
-                                         std::move(limit_body), x0, sim::Vec3::Zero());
+  sim::World world =
+      sim::one_body_world(sim::Vec3(0.0, -9.81, 0.0), floor ? std::optional<sim::Floor>(sim::Floor{}) : std::nullopt,
+                          solver, std::move(limit_body), x0, sim::Vec3::Zero());
   shake(world, 0.5);
   return world;
 }
@@ -40,8 +40,9 @@ std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int s
   std::vector<LimitRow> rows;
   for (const LimitBody& body : bodies) {
     for (bool floor : {false, true}) {
-      for (sim::IntegratorKind integrator : {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
-                                           sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4, sim::IntegratorKind::Rk45}) {
+      for (sim::IntegratorKind integrator :
+           {sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic, sim::IntegratorKind::Verlet,
+            sim::IntegratorKind::Rk4, sim::IntegratorKind::Rk45}) {
         const sim::World world = limit_world(body, integrator, floor);
         const double estimate = sim::estimate_stability(world.model, world.state).stable_dt(integrator);
         LimitRow row{body, integrator, floor, estimate, 0.0, 0.0};
@@ -66,8 +67,8 @@ void write_limits_csv(const std::vector<LimitRow>& rows, const std::filesystem::
     char line[400];
     std::snprintf(line, sizeof line, "%s,%s,%g,%g,%g,%s,%s,%.4g,%.4g,%.4g,%.3f\n", r.body.name.c_str(),
                   r.body.mesh.c_str(), r.body.stiffness_N_per_m, r.body.damping_N_s_per_m, r.body.pressure_J,
-                  r.floor ? "paper" : "none", sim::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s, r.unstable_dt_s,
-                  r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
+                  r.floor ? "paper" : "none", sim::to_string(r.integrator).c_str(), r.estimate_dt_s, r.measured_dt_s,
+                  r.unstable_dt_s, r.measured_dt_s > 0 ? r.estimate_dt_s / r.measured_dt_s : 0.0);
     out << line;
   }
 }

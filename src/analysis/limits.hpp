@@ -19,10 +19,10 @@ struct LimitBody {
 struct LimitRow {
   LimitBody body;
   sim::IntegratorKind integrator;
-  bool floor;             // resting on the paper floor (else free flight)
-  double estimate_dt_s;   // sim/stability.hpp
-  double measured_dt_s;   // largest stable dt found by bisection (3 %)
-  double unstable_dt_s;   // smallest unstable dt found
+  bool floor;            // resting on the paper floor (else free flight)
+  double estimate_dt_s;  // sim/stability.hpp
+  double measured_dt_s;  // largest stable dt found by bisection (3 %)
+  double unstable_dt_s;  // smallest unstable dt found
 };
 
 // The bodies of docs/stability.md's table: scenes/bounce.json's ball, a stiff undamped breathing sphere, a coarse

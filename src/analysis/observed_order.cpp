@@ -41,7 +41,8 @@ ObservedOrder observed_order(std::vector<SweepPoint> points) {
     log_step.push_back(std::log(points[k].step));
     log_error.push_back(std::log(points[k].error_m));
     if (k > 0 && log_step[k - 1] > log_step[k]) {
-      order.pairwise.push_back((log_error[k - 1] - log_error[k]) / (log_step[k - 1] - log_step[k]));  // ln(e_k/e_k+1) / ln(h_k/h_k+1)
+      order.pairwise.push_back((log_error[k - 1] - log_error[k]) /
+                               (log_step[k - 1] - log_step[k]));  // ln(e_k/e_k+1) / ln(h_k/h_k+1)
     }
   }
   const LineFit fit = least_squares_line(log_step, log_error);

@@ -11,7 +11,8 @@ namespace {
 
 double total_energy(const sim::World& world) {
   double energy = 0.0;
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) energy += sim::diagnose(world.model, world.state, b).total_J();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b)
+    energy += sim::diagnose(world.model, world.state, b).total_J();
   return energy;
 }
 

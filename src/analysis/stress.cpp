@@ -23,7 +23,7 @@ using sim::IntegratorKind;
 using softbody::Vec3;
 
 constexpr double kMapDuration_s = 0.3, kGroupDuration_s = 0.5;
-constexpr long long kMostSteps = 3000;   // fixed-step runs: at most this many steps (tiny dt: a short run)
+constexpr long long kMostSteps = 3000;  // fixed-step runs: at most this many steps (tiny dt: a short run)
 constexpr long long kMostAdaptiveSteps = 20000;
 
 // Odd meshes: a sphere squashed to 15 % height, stretched 4×, or with slivers and tiny triangles
@@ -31,8 +31,10 @@ constexpr long long kMostAdaptiveSteps = 20000;
 mesh::TriMesh shape_mesh(const std::string& shape) {
   if (shape == "flattened" || shape == "elongated" || shape == "tiny-triangles") {
     mesh::TriMesh m = mesh::icosphere(2);
-    if (shape == "flattened") for (Vec3& p : m.vertices) p.y() *= 0.15;
-    if (shape == "elongated") for (Vec3& p : m.vertices) p.x() *= 4.0;
+    if (shape == "flattened")
+      for (Vec3& p : m.vertices) p.y() *= 0.15;
+    if (shape == "elongated")
+      for (Vec3& p : m.vertices) p.x() *= 4.0;
     if (shape == "tiny-triangles") {
       std::vector<bool> moved(m.vertices.size(), false);
       for (const auto& t : m.triangles) {
@@ -114,8 +116,8 @@ std::string to_string(Outcome outcome) {
 
 std::vector<StressCase> stress_cases(bool quick) {
   std::vector<StressCase> cases;
-  const std::vector<double> stiffness = quick ? std::vector<double>{1e2, 1e4, 1e6}
-                                              : std::vector<double>{1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
+  const std::vector<double> stiffness =
+      quick ? std::vector<double>{1e2, 1e4, 1e6} : std::vector<double>{1e1, 1e2, 1e3, 1e4, 1e5, 1e6};
   std::vector<double> dts;
   for (int i = 0; i <= (quick ? 4 : 12); ++i) dts.push_back(1e-6 * std::pow(10.0, i * (quick ? 1.0 : 1.0 / 3.0)));
   for (const sim::IntegratorInfo& listed : sim::kIntegrators) {
@@ -185,7 +187,8 @@ StressResult run_stress_case(const StressCase& spec) {
     if (r.penetrated_within_estimate()) {
       r.outcome = Outcome::Failed;
       char text[160];
-      std::snprintf(text, sizeof text, "tunnelled: a vertex went %.3g m into the floor in one step (shortest edge %.3g m)",
+      std::snprintf(text, sizeof text,
+                    "tunnelled: a vertex went %.3g m into the floor in one step (shortest edge %.3g m)",
                     r.deepest_penetration_m, r.shortest_edge_m);
       r.message = text;
     }
@@ -202,17 +205,20 @@ StressResult run_stress_case(const StressCase& spec) {
 void write_stress_csv(const std::vector<StressResult>& results, const std::filesystem::path& file) {
   std::ofstream out(file);
   out << "group,shape,vertices,integrator,stiffness,damping,pressure,drop_speed,retry,dt,estimate_dt,"
-         "dt_over_estimate,outcome,guarded_within_estimate,steps,simulated_s,wall_s,deepest_penetration,shortest_edge,message\n";
+         "dt_over_estimate,outcome,guarded_within_estimate,steps,simulated_s,wall_s,deepest_penetration,shortest_edge,"
+         "message\n";
   for (const StressResult& r : results) {
     const StressCase& c = r.spec;
     std::string message = r.message;
-    for (char& ch : message) if (ch == '"') ch = '\'';
+    for (char& ch : message)
+      if (ch == '"') ch = '\'';
     char row[512];
-    std::snprintf(row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,%.6g,",
-                  c.group.c_str(), c.shape.c_str(), r.vertices, sim::to_string(c.integrator).c_str(),
-                  c.stiffness_N_per_m, c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s,
-                  r.estimate_dt_s, r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.guarded_within_estimate() ? 1 : 0, r.steps, r.simulated_s,
-                  r.wall_s, r.deepest_penetration_m, r.shortest_edge_m);
+    std::snprintf(
+        row, sizeof row, "%s,\"%s\",%d,%s,%.6g,%.6g,%.6g,%.6g,%d,%.6g,%.6g,%.6g,%s,%d,%lld,%.6g,%.4g,%.6g,%.6g,",
+        c.group.c_str(), c.shape.c_str(), r.vertices, sim::to_string(c.integrator).c_str(), c.stiffness_N_per_m,
+        c.damping_N_s_per_m, c.pressure_J, c.drop_speed_m_per_s, c.retry ? 1 : 0, r.dt_s, r.estimate_dt_s,
+        r.dt_s / r.estimate_dt_s, to_string(r.outcome).c_str(), r.guarded_within_estimate() ? 1 : 0, r.steps,
+        r.simulated_s, r.wall_s, r.deepest_penetration_m, r.shortest_edge_m);
     out << row << '"' << message << "\"\n";
   }
   if (!out) throw std::runtime_error("cannot write " + file.string());
@@ -235,7 +241,8 @@ std::vector<std::filesystem::path> write_stability_maps(const std::vector<Stress
       std::ofstream out(data(to_string(o)));
       out << "# stiffness [N/m], dt [s]: " << to_string(o) << " runs of the map group, c > 0\n";
       for (const StressResult& r : results) {
-        if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 && r.outcome == o) {
+        if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 &&
+            r.outcome == o) {
           out << r.spec.stiffness_N_per_m << " " << r.dt_s << "\n";
         }
       }
@@ -243,8 +250,8 @@ std::vector<std::filesystem::path> write_stability_maps(const std::vector<Stress
     std::ofstream estimate(data("estimate"));
     estimate << "# stiffness [N/m], estimated stable dt [s]\n";
     for (const StressResult& r : results) {
-      if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 && r.spec.dt_s == 1e-6 &&
-          std::isfinite(r.estimate_dt_s) && r.estimate_dt_s > 0) {
+      if (r.spec.group == "map" && r.spec.integrator == integrator && r.spec.damping_N_s_per_m > 0 &&
+          r.spec.dt_s == 1e-6 && std::isfinite(r.estimate_dt_s) && r.estimate_dt_s > 0) {
         estimate << r.spec.stiffness_N_per_m << " " << r.estimate_dt_s << "\n";
       }
     }

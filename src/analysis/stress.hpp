@@ -12,8 +12,8 @@
 namespace analysis {
 
 struct StressCase {
-  std::string group;        // "map" (dt × stiffness grid), "mesh", "pressure", "damping", "drop", "odd", "retry"
-  std::string shape;        // a generator spec, or "flattened", "elongated", "tiny-triangles"
+  std::string group;  // "map" (dt × stiffness grid), "mesh", "pressure", "damping", "drop", "odd", "retry"
+  std::string shape;  // a generator spec, or "flattened", "elongated", "tiny-triangles"
   sim::IntegratorKind integrator = sim::IntegratorKind::Euler;
   double stiffness_N_per_m = 3000.0;
   double damping_N_s_per_m = 0.5;
@@ -38,7 +38,7 @@ struct StressResult {
   double wall_s = 0.0;
   double deepest_penetration_m = 0.0;  // deepest a vertex got into the floor in one step, before it was put back
   double shortest_edge_m = 0.0;        // the body's shortest rest edge: the travel limit's unit
-  std::string message;         // the guard's message, or what failed
+  std::string message;                 // the guard's message, or what failed
   // The estimate's promise broken: stopped by the guard at a dt at or below the estimated stable dt
   // (fixed-step runs; rk45 chooses its own steps). The sweep counts these as failures of the estimate.
   bool guarded_within_estimate() const {

@@ -73,11 +73,11 @@ std::string gnuplot_script(const AccuracyResult& result, const fs::path& png) {
      << "set xlabel 'RMS vertex position error over all frames [m]'\n"
      << "set ylabel 'wall time of the run (stepping only) [s]'\n"
      << "set key outside right top\n"
-     << "set title \"" << result.scene_name << ": " << result.vertices << " vertices, "
-     << result.duration_s << " s simulated; reference " << result.reference.method << ", dt "
-     << format("%.2g", result.reference.dt_s) << " s\" noenhanced\n"  // a scene name's _ is no subscript
-     << "set arrow from " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
-     << ", graph 0 to " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
+     << "set title \"" << result.scene_name << ": " << result.vertices << " vertices, " << result.duration_s
+     << " s simulated; reference " << result.reference.method << ", dt " << format("%.2g", result.reference.dt_s)
+     << " s\" noenhanced\n"  // a scene name's _ is no subscript
+     << "set arrow from " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16)) << ", graph 0 to "
+     << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
      << ", graph 1 nohead dashtype 2 lc rgb 'gray40'\n"
      << "set label 'reference uncertainty' at " << format("%.6g", std::max(result.reference.uncertainty_m, 1e-16))
      << ", graph 0.04 offset 0.5,0 font ',9' tc rgb 'gray30'\n";
@@ -114,10 +114,9 @@ std::string accuracy_csv(const AccuracyResult& result) {
   for (const AccuracyRun& run : result.runs) {
     const bool finite = run.status != RunStatus::Diverged;
     csv << sim::to_string(run.integrator) << "," << format("%.6e", run.dt_s) << ","
-        << (run.tolerance > 0.0 ? format("%.1e", run.tolerance) : "") << "," << run.steps << ","
-        << run.rejected_steps << "," << format("%.6f", run.wall_s) << ","
-        << (finite ? format("%.6e", run.rms_error_m) : "") << "," << (finite ? format("%.6e", run.final_error_m) : "")
-        << "," << to_string(run.status) << "\n";
+        << (run.tolerance > 0.0 ? format("%.1e", run.tolerance) : "") << "," << run.steps << "," << run.rejected_steps
+        << "," << format("%.6f", run.wall_s) << "," << (finite ? format("%.6e", run.rms_error_m) : "") << ","
+        << (finite ? format("%.6e", run.final_error_m) : "") << "," << to_string(run.status) << "\n";
   }
   return csv.str();
 }
@@ -195,15 +194,14 @@ std::string accuracy_summary(const AccuracyResult& result) {
       << " s simulated at " << result.fps << " fps; body size (RMS radius) " << format("%.3g", result.body_size_m)
       << " m\n";
   out << "reference: " << result.reference.method << " at dt = " << format("%.3g", result.reference.dt_s)
-      << " s; RMS distance to the same at twice the step: " << format("%.2e", result.reference.uncertainty_m)
-      << " m";
+      << " s; RMS distance to the same at twice the step: " << format("%.2e", result.reference.uncertainty_m) << " m";
   double smallest = INFINITY;
   for (const AccuracyRun& run : result.runs) {
     if (run.status == RunStatus::Ok) smallest = std::min(smallest, run.rms_error_m);
   }
   if (std::isfinite(smallest)) {
-    out << " (smallest error measured " << format("%.2e", smallest) << " m: "
-        << format("%.0f", smallest / std::max(result.reference.uncertainty_m, 1e-300)) << "x above it"
+    out << " (smallest error measured " << format("%.2e", smallest)
+        << " m: " << format("%.0f", smallest / std::max(result.reference.uncertainty_m, 1e-300)) << "x above it"
         << (smallest < 100.0 * result.reference.uncertainty_m ? "; NOT converged enough: below 100x" : "") << ")";
   }
   out << "\n";
@@ -240,8 +238,8 @@ std::string accuracy_summary(const AccuracyResult& result) {
       out << "no shared time range with euler\n";
       continue;
     }
-    out << "geometric mean " << format("%.3g", r.ratio_geomean) << ", range " << format("%.3g", r.ratio_min)
-        << " .. " << format("%.3g", r.ratio_max) << " over " << format("%.3g", r.time_lo_s) << " .. "
+    out << "geometric mean " << format("%.3g", r.ratio_geomean) << ", range " << format("%.3g", r.ratio_min) << " .. "
+        << format("%.3g", r.ratio_max) << " over " << format("%.3g", r.time_lo_s) << " .. "
         << format("%.3g", r.time_hi_s) << " s (" << r.samples << " samples)\n";
   }
   out << "benchmark wall time: " << format("%.1f", result.total_wall_s) << " s\n";
@@ -258,7 +256,8 @@ std::vector<fs::path> write_work_precision(const AccuracyResult& result, const f
   output::write_file_atomically(gp, gnuplot_script(result, png));
   const std::string command = "cd '" + dir.string() + "' && gnuplot '" + gp.filename().string() + "'";
   if (std::system(command.c_str()) != 0) {
-    throw std::runtime_error("gnuplot failed on " + gp.string() + " (is gnuplot installed? scripts/setup installs gnuplot-nox)");
+    throw std::runtime_error("gnuplot failed on " + gp.string() +
+                             " (is gnuplot installed? scripts/setup installs gnuplot-nox)");
   }
   return {csv, txt, gp, png};
 }

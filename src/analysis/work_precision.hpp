@@ -20,9 +20,9 @@ std::string accuracy_csv(const AccuracyResult& result);
 // linearly in log(time)–log(error), compared at every run time inside both curves' time ranges.
 struct EqualTimeRatio {
   sim::IntegratorKind method = sim::IntegratorKind::Euler;
-  int samples = 0;             // 0: the two curves share no time range
+  int samples = 0;                          // 0: the two curves share no time range
   double time_lo_s = 0.0, time_hi_s = 0.0;  // the shared range
-  double ratio_min = 0.0;      // baseline error / method error, smallest over the samples
+  double ratio_min = 0.0;                   // baseline error / method error, smallest over the samples
   double ratio_max = 0.0;
   double ratio_geomean = 0.0;
 };

@@ -3,10 +3,10 @@
 #include <iostream>
 #include <memory>
 
-#include "app/commands.hpp"
 #include "analysis/accuracy.hpp"
-#include "core/errors.hpp"
 #include "analysis/work_precision.hpp"
+#include "app/commands.hpp"
+#include "core/errors.hpp"
 #include "scene/scene_json.hpp"
 
 namespace app {
@@ -26,7 +26,8 @@ std::vector<sim::IntegratorKind> parse_integrators(const std::string& option, co
     const std::optional<sim::IntegratorKind> integrator = sim::integrator_named(name);
     if (!integrator) {
       std::string expected;
-      for (const sim::IntegratorInfo& known : sim::kIntegrators) expected += (expected.empty() ? "" : ", ") + std::string(known.name);
+      for (const sim::IntegratorInfo& known : sim::kIntegrators)
+        expected += (expected.empty() ? "" : ", ") + std::string(known.name);
       throw softbody::InputError(option + ": unknown integrator '" + name + "' (expected one of " + expected + ")");
     }
     chosen.push_back(*integrator);
@@ -36,8 +37,10 @@ std::vector<sim::IntegratorKind> parse_integrators(const std::string& option, co
 
 int run_accuracy(AccuracyCommand& command) {
   const scene::Scene scene = scene::load_scene(command.scene.scene_file, command.scene.overrides);
-  if (!command.integrators.empty()) command.options.integrators = parse_integrators("--integrators", command.integrators);
-  command.options.reference_integrator = parse_integrators("--reference-integrator", {command.reference_integrator}).front();
+  if (!command.integrators.empty())
+    command.options.integrators = parse_integrators("--integrators", command.integrators);
+  command.options.reference_integrator =
+      parse_integrators("--reference-integrator", {command.reference_integrator}).front();
   const analysis::AccuracyResult result = analysis::run_accuracy_benchmark(
       scene, command.options, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   const auto written = analysis::write_work_precision(result, command.out_dir);
@@ -58,16 +61,19 @@ Action add_accuracy_options(CLI::App& command) {
   command.add_option("--duration", o.duration_s, "Simulated seconds (default: the scene's duration)")
       ->type_name("S")
       ->check(CLI::PositiveNumber);
-  command.add_option("--reference-dt", o.reference_dt_s,
-                     "Step of the fixed-step 5th-order reference (default: solver.dt / 10)")
+  command
+      .add_option("--reference-dt", o.reference_dt_s,
+                  "Step of the fixed-step 5th-order reference (default: solver.dt / 10)")
       ->type_name("S")
       ->check(CLI::PositiveNumber);
-  command.add_option("--reference-integrator", state->reference_integrator,
-                     "Method of the fixed-step reference (rk45: its 5th-order formula without error control)")
+  command
+      .add_option("--reference-integrator", state->reference_integrator,
+                  "Method of the fixed-step reference (rk45: its 5th-order formula without error control)")
       ->type_name("NAME")
       ->capture_default_str();
-  command.add_option("--floor-factor", o.floor_factor,
-                     "Runs with an error below this times the reference's uncertainty are not plotted")
+  command
+      .add_option("--floor-factor", o.floor_factor,
+                  "Runs with an error below this times the reference's uncertainty are not plotted")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   command.add_option("--budget", o.run_budget_s, "Stop refining an integrator once one run takes longer than this")
@@ -80,7 +86,9 @@ Action add_accuracy_options(CLI::App& command) {
   command.add_option("--refinement", o.refinement, "Each fixed-step run's dt is the previous one's divided by this")
       ->check(CLI::Range(1.0001, 1000.0))
       ->capture_default_str();
-  command.add_option("--max-runs", o.max_runs, "Most runs per integrator")->check(CLI::Range(1, 40))->capture_default_str();
+  command.add_option("--max-runs", o.max_runs, "Most runs per integrator")
+      ->check(CLI::Range(1, 40))
+      ->capture_default_str();
   command.add_option("--integrators", state->integrators, "Only these (default: all of them)")
       ->delimiter(',')
       ->type_name("NAME,...");
@@ -90,7 +98,9 @@ Action add_accuracy_options(CLI::App& command) {
       "or --max-runs. Error = RMS vertex position error against the reference over every frame after frame 0\n"
       "(final_error: the last frame only). The reference is Dormand-Prince's 5th-order formula at a fixed\n"
       "step (--reference-integrator); its distance to the same at twice the step is its uncertainty.\n"
-      "CSV columns: " + std::string(analysis::kAccuracyCsvHeader) + "\n"
+      "CSV columns: " +
+      std::string(analysis::kAccuracyCsvHeader) +
+      "\n"
       "  dt: the step used (rk45: the mean accepted step); wall_s: stepping time, median of 3 for runs\n"
       "  under 0.5 s; status: ok | diverged (non-finite state) | blown_up (RMS error above the body's size)\n"
       "  | at_reference (error below --floor-factor x the reference's uncertainty: not plotted).");

@@ -5,11 +5,11 @@
 #include <optional>
 #include <vector>
 
-#include "core/errors.hpp"
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "core/errors.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/mesh_exporter.hpp"
@@ -43,28 +43,32 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
     throw softbody::InputError("--frames: a point cache holds frames one after another (one range), got " +
                                options.frames.frames);
   }
-  const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
+  const std::filesystem::path dir =
+      options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::PointCacheExporter exporter(dir, format);
   output::remove_stale_temporaries(dir);  // a killed run's half-written cache
   std::vector<frames::FrameSink*> sinks = {&exporter};
   const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
-  print_run_summary(run, stats, "wrote " + exporter.mesh_path(0).string() + ", " + exporter.cache_path(0).filename().string() +
-                                    (exporter.body_count() > 1 ? " .. body" + std::to_string(exporter.body_count() - 1) : "") +
-                                    " (frames " + std::to_string(chosen.first()) + ".." + std::to_string(chosen.last()) + ")");
+  print_run_summary(run, stats,
+                    "wrote " + exporter.mesh_path(0).string() + ", " + exporter.cache_path(0).filename().string() +
+                        (exporter.body_count() > 1 ? " .. body" + std::to_string(exporter.body_count() - 1) : "") +
+                        " (frames " + std::to_string(chosen.first()) + ".." + std::to_string(chosen.last()) + ")");
   return 0;
 }
 
 int run_export(const ExportOptions& options) {
   if (options.format == ExportFormat::Pc2) return run_point_cache_export(options, output::PointCacheFormat::Pc2);
   if (options.format == ExportFormat::Mdd) return run_point_cache_export(options, output::PointCacheFormat::Mdd);
-  const output::MeshFormat mesh_format = options.format == ExportFormat::Obj ? output::MeshFormat::Obj : output::MeshFormat::Ply;
+  const output::MeshFormat mesh_format =
+      options.format == ExportFormat::Obj ? output::MeshFormat::Obj : output::MeshFormat::Ply;
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step
   // (the frame in progress dropped); the outputs hold every complete frame.
   frames::stop_on_signals();
   PreparedRun run = prepare_run(options.scene);
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
-  const std::filesystem::path dir = options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
+  const std::filesystem::path dir =
+      options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::MeshExporter exporter(dir, mesh_format);
   output::remove_stale_temporaries(dir);
   if (!options.resume && planned.plan().frames.everything()) {
@@ -85,8 +89,9 @@ int run_export(const ExportOptions& options) {
       frames::run_frames(run.world, run.clock, sinks, {}, resumable ? resumable->plan() : planned.plan());
   if (resumable) resumable->remove_store();
   const frames::FrameSelection& chosen = planned.plan().frames;
-  print_run_summary(run, stats, "wrote " + exporter.frame_path(chosen.first()).string() + " .. " +
-                                    exporter.frame_path(chosen.last()).filename().string());
+  print_run_summary(run, stats,
+                    "wrote " + exporter.frame_path(chosen.first()).string() + " .. " +
+                        exporter.frame_path(chosen.last()).filename().string());
   return 0;
 }
 
@@ -95,15 +100,17 @@ int run_export(const ExportOptions& options) {
 Action register_export(CLI::App& parent) {
   auto options = std::make_shared<ExportOptions>();
   CLI::App* command = parent.add_subcommand(
-      "export", "Run a scene and write the simulated mesh of every frame (OBJ or PLY), numbered like the PNGs, "
-                "or per body one mesh and a point cache (PC2 or MDD)");
+      "export",
+      "Run a scene and write the simulated mesh of every frame (OBJ or PLY), numbered like the PNGs, "
+      "or per body one mesh and a point cache (PC2 or MDD)");
   add_scene_options(*command, options->scene);
   command->add_option("-o,--output", options->dir, "Output folder (default: <output.dir>/meshes)")->type_name("DIR");
   const std::map<std::string, ExportFormat> formats{
       {"obj", ExportFormat::Obj}, {"ply", ExportFormat::Ply}, {"pc2", ExportFormat::Pc2}, {"mdd", ExportFormat::Mdd}};
-  command->add_option("--format", options->format,
-                      "obj (text, one object per body) or ply (binary, all bodies in one), one file per frame; "
-                      "pc2 or mdd: per body DIR/body<N>.obj and a point cache DIR/body<N>.pc2 (.mdd) of every frame")
+  command
+      ->add_option("--format", options->format,
+                   "obj (text, one object per body) or ply (binary, all bodies in one), one file per frame; "
+                   "pc2 or mdd: per body DIR/body<N>.obj and a point cache DIR/body<N>.pc2 (.mdd) of every frame")
       ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))
       ->default_str("obj");
   add_frame_options(*command, options->frames);

@@ -63,7 +63,8 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
     std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
   } else if (dt == sim::StabilityEstimate::kUnlimited) {
     const bool every_force_implicit = integrator == sim::IntegratorKind::Newton;
-    std::printf("  %-10s  no limit (%s)\n", name, every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
+    std::printf("  %-10s  no limit (%s)\n", name,
+                every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
   } else {
     const double steps = std::ceil(frame_interval_s / (sim::kAutoDtSafety * dt));
     std::printf("  %-10s  %-12.4g %-12.4g %-22.0f %s\n", name, dt, sim::kAutoDtSafety * dt, steps,
@@ -101,15 +102,16 @@ int run_info(const InfoOptions& options) {
   if (options.plan) {  // for scripts (scripts/slurm-render): no world is built
     const scene::Scene scene = scene::load_scene(options.scene.scene_file, options.scene.overrides);
     std::printf("last_frame %d\nfps %d\nname %s\n",
-                frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string()).frame_count, scene.fps,
-                scene.name.c_str());
+                frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string()).frame_count,
+                scene.fps, scene.name.c_str());
     return 0;
   }
   PreparedRun run = prepare_run(options.scene);
   const sim::StabilityEstimate estimate = sim::estimate_stability(run.world.model, run.world.state);
   const auto& bodies = run.world.model.bodies;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.model.of(bodies[b], run.world.state.x)), estimate.bodies[b]);
+    print_body(b, bodies[b], sim::body_stats(bodies[b], run.world.model.of(bodies[b], run.world.state.x)),
+               estimate.bodies[b]);
     if (const sim::Skin* skin = run.world.model.skin_of(static_cast<int>(b))) {
       std::printf("  simulated on a proxy; render and export show its detailed mesh: %zu vertices, %zu faces\n",
                   skin->vertex_count(), skin->triangles.size());

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "app/commands.hpp"
-#include "geometry/remesh.hpp"
-#include "geometry/uv_transfer.hpp"
 #include "core/errors.hpp"
 #include "frames/stop_request.hpp"
+#include "geometry/remesh.hpp"
+#include "geometry/uv_transfer.hpp"
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
@@ -31,10 +31,11 @@ struct PrepareOptions {
 void print_summary(const std::string& output, const mesh::TriMesh& prepared, double wall_s) {
   const mesh::EdgeCounts edges = mesh::count_edges(prepared);
   const int parts = mesh::edge_connected_parts(prepared).count;
-  std::printf("prepared %s: %zu vertices, %zu triangles, %zu edges, %d part%s; volume %.6g (mesh units^3); closed "
-              "(%zu boundary edges), manifold (%zu edges with three or more faces), wound outward; in %.3f s\n",
-              output.c_str(), prepared.vertices.size(), prepared.triangles.size(), edges.edges, parts, parts == 1 ? "" : "s",
-              mesh::signed_volume(prepared), edges.boundary, edges.non_manifold, wall_s);
+  std::printf(
+      "prepared %s: %zu vertices, %zu triangles, %zu edges, %d part%s; volume %.6g (mesh units^3); closed "
+      "(%zu boundary edges), manifold (%zu edges with three or more faces), wound outward; in %.3f s\n",
+      output.c_str(), prepared.vertices.size(), prepared.triangles.size(), edges.edges, parts, parts == 1 ? "" : "s",
+      mesh::signed_volume(prepared), edges.boundary, edges.non_manifold, wall_s);
 }
 
 int run_prepare(const PrepareOptions& options) {
@@ -51,8 +52,8 @@ int run_prepare(const PrepareOptions& options) {
   }
   mesh::RepairOptions repair = mesh::full_repair();
   repair.parts = options.parts;
-  const mesh::LoadedMesh prepared =
-      mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair, frames::throw_if_stop_requested_after);
+  const mesh::LoadedMesh prepared = mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair,
+                                                           frames::throw_if_stop_requested_after);
   for (const std::string& note : prepared.notes) std::cerr << "note: " << note << "\n";
   mesh::TriMesh result = prepared.mesh;
   if (options.resolution) {
@@ -60,8 +61,8 @@ int run_prepare(const PrepareOptions& options) {
     result.corner_uvs = geometry::transfer_corner_uvs(prepared.mesh, result);  // none where the file had none
     frames::throw_if_stop_requested_after("remeshing " + options.input + " to about " +
                                           std::to_string(*options.resolution) + " vertices");
-    std::cerr << "note: remeshed isotropically from " << prepared.mesh.vertices.size() << " to " << result.vertices.size()
-              << " vertices (--resolution " << *options.resolution << ")\n";
+    std::cerr << "note: remeshed isotropically from " << prepared.mesh.vertices.size() << " to "
+              << result.vertices.size() << " vertices (--resolution " << *options.resolution << ")\n";
   }
   output::write_mesh_file(options.output, result, "prepared by softbody prepare from " + options.input);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -75,19 +76,26 @@ Action register_prepare(CLI::App& parent) {
   auto options = std::make_shared<PrepareOptions>();
   CLI::App* command = parent.add_subcommand(
       "prepare", "Repair, weld and validate a mesh file as a body with \"repair\": true would, and write the result");
-  command->add_option("IN", options->input, "The mesh file to prepare (OBJ, PLY, STL, glTF, ... as a scene's mesh)")->required();
-  command->add_option("OUT", options->output, "Where to write the prepared mesh: .obj, .ply or .stl (written whole or not at all)")
+  command->add_option("IN", options->input, "The mesh file to prepare (OBJ, PLY, STL, glTF, ... as a scene's mesh)")
       ->required();
-  command->add_option("--resolution", options->resolution,
-                      "Also remesh isotropically to about N vertices (CGAL; what a body's \"resolution\": N simulates on)")
+  command
+      ->add_option("OUT", options->output,
+                   "Where to write the prepared mesh: .obj, .ply or .stl (written whole or not at all)")
+      ->required();
+  command
+      ->add_option("--resolution", options->resolution,
+                   "Also remesh isotropically to about N vertices (CGAL; what a body's \"resolution\": N simulates on)")
       ->type_name("N")
       ->check(CLI::Range(4, 10'000'000));
-  command->add_option("--parts", options->parts,
-                      "Separate parts: union (default: the ones that overlap, touch or nest joined into one surface), keep every "
-                      "one as it is, or only the largest (most faces)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, mesh::PartsPolicy>{{"union", mesh::PartsPolicy::Union},
-                                                                                {"keep", mesh::PartsPolicy::Keep},
-                                                                                {"largest", mesh::PartsPolicy::Largest}}));
+  command
+      ->add_option(
+          "--parts", options->parts,
+          "Separate parts: union (default: the ones that overlap, touch or nest joined into one surface), keep every "
+          "one as it is, or only the largest (most faces)")
+      ->transform(
+          CLI::CheckedTransformer(std::map<std::string, mesh::PartsPolicy>{{"union", mesh::PartsPolicy::Union},
+                                                                           {"keep", mesh::PartsPolicy::Keep},
+                                                                           {"largest", mesh::PartsPolicy::Largest}}));
   return [options] { return run_prepare(*options); };
 }
 

@@ -8,19 +8,19 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "core/errors.hpp"
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
+#include "core/errors.hpp"
 #include "frames/frame_loop.hpp"
 #include "frames/overlapped_frame_loop.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
-#include "output/frame_pattern.hpp"
-#include "output/render_sink.hpp"
 #include "output/figure_frames.hpp"
+#include "output/frame_pattern.hpp"
 #include "output/motion_track.hpp"
+#include "output/render_sink.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -48,7 +48,8 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
   std::vector<frames::FrameSink*> sinks = {&motion};
   const auto started = std::chrono::steady_clock::now();
   try {
-    frames::run_frames(run.world, run.clock, sinks, {}, {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
+    frames::run_frames(run.world, run.clock, sinks, {},
+                       {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
   } catch (const softbody::DivergedError&) {
     // The run proper diverges at the same step and reports it, after writing the frames before it: the
     // camera frames those.
@@ -56,8 +57,9 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
     throw frames::Interrupted(stop.signal(), 0);  // SIGINT / SIGTERM before frame 0 was drawn: none complete
   }
   run.world.state = start;
-  std::fprintf(stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
-               motion.samples().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+  std::fprintf(
+      stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
+      motion.samples().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   return motion;
 }
 
@@ -70,7 +72,8 @@ std::vector<int> figure_frames(const scene::Scene& scene, const output::MotionTr
   if (!scene.render.figure_frame_list.empty()) {
     if (scene.render.figure_frame_list.back() > last_frame) {
       throw softbody::InputError(scene.source.string() + ": render.figure_frames: expected frames 0.." +
-                                 std::to_string(last_frame) + ", got " + std::to_string(scene.render.figure_frame_list.back()));
+                                 std::to_string(last_frame) + ", got " +
+                                 std::to_string(scene.render.figure_frame_list.back()));
     }
     return scene.render.figure_frame_list;
   }
@@ -86,13 +89,13 @@ double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * t
 void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
                    const output::RenderTimings& t, const std::string& backend) {
   const int n = run.frames;
-  std::printf("%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
-              "simulate %.1f, render %.1f, read-back %.1f, encode %.1f (writer thread; +%.1f writing files)",
-              scene.name.c_str(), n, scene.render.width_px, scene.render.height_px, renderer.msaa_samples(),
-              scene.render.shadows ? "on" : "off", run.wall_s, n / std::max(run.wall_s, 1e-9),
-              ms_per_frame(run.step_wall_s, n), ms_per_frame(t.snapshot_s + t.render_s, n),
-              ms_per_frame(t.read_back_s, n), ms_per_frame(t.png.encode_s, t.png.frames),
-              ms_per_frame(t.png.store_s, t.png.frames));
+  std::printf(
+      "%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
+      "simulate %.1f, render %.1f, read-back %.1f, encode %.1f (writer thread; +%.1f writing files)",
+      scene.name.c_str(), n, scene.render.width_px, scene.render.height_px, renderer.msaa_samples(),
+      scene.render.shadows ? "on" : "off", run.wall_s, n / std::max(run.wall_s, 1e-9), ms_per_frame(run.step_wall_s, n),
+      ms_per_frame(t.snapshot_s + t.render_s, n), ms_per_frame(t.read_back_s, n),
+      ms_per_frame(t.png.encode_s, t.png.frames), ms_per_frame(t.png.store_s, t.png.frames));
   if (t.video_s > 0.0) std::printf(", video %.1f", ms_per_frame(t.video_s, n));
   std::printf("; backend %s\n", backend.c_str());
 }
@@ -100,8 +103,10 @@ void print_summary(const scene::Scene& scene, const render::Renderer& renderer, 
 // "egl (auto from render.backend: OpenGL 4.5 ... on llvmpipe ... (EGL, surfaceless))".
 std::string backend_words(const render::GlContext& context, const render::GlBackendRequest& request) {
   std::string words(render::gl_backend_name(context.backend()));
-  if (request.backend == render::GlBackend::Auto) words += " (auto";
-  else words += " (asked for";
+  if (request.backend == render::GlBackend::Auto)
+    words += " (auto";
+  else
+    words += " (asked for";
   return words + " by " + request.source + "; " + context.description() + ")";
 }
 
@@ -133,16 +138,17 @@ int run_render(const RenderOptions& options) {
   render::RenderSettings settings = render::settings_from_scene(scene);
   const int last_frame = run.clock.frame_count;
   // A run of some frames only (a farm chunk) makes no figure.
-  const bool motion_figure = chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
+  const bool motion_figure =
+      chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
   std::optional<output::MotionTrack> motion;
   if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
   if (!scene.camera.given && !motion->samples().empty()) {
-    settings.camera = render::frame_swept_box({to_glm(motion->swept_min()), to_glm(motion->swept_max())},
-                                              static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px),
-                                              settings.camera.fov_deg);
+    settings.camera = render::frame_swept_box(
+        {to_glm(motion->swept_min()), to_glm(motion->swept_max())},
+        static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
   }
-  const std::vector<int> figure = chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame)
-                                                      : std::vector<int>{};
+  const std::vector<int> figure =
+      chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame) : std::vector<int>{};
   render::Renderer renderer(*context, settings);
   frames::throw_if_stop_requested_after("setting up the renderer");  // before any output is touched
 
@@ -162,8 +168,9 @@ int run_render(const RenderOptions& options) {
   if (!options.resume && chosen.everything() && outputs.write_frames) {
     // A whole new run: an earlier run's frames and figure go first, so that a run that fails (diverges, is
     // interrupted) leaves only its own frames, never a mix of two runs.
-    output::remove_numbered_files(outputs.dir, run.clock.frame_count,
-                                  [&](int i) { return std::filesystem::path(output::frame_file_name(outputs.pattern, i)); });
+    output::remove_numbered_files(outputs.dir, run.clock.frame_count, [&](int i) {
+      return std::filesystem::path(output::frame_file_name(outputs.pattern, i));
+    });
     std::error_code ec;
     std::filesystem::remove(outputs.dir / "figure.png", ec);
   }
@@ -205,10 +212,13 @@ int run_render(const RenderOptions& options) {
 Action register_render(CLI::App& parent) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = parent.add_subcommand(
-      "render", "Simulate a scene and render every frame off-screen (EGL or OSMesa) to PNG files, figure.png and a video");
+      "render",
+      "Simulate a scene and render every frame off-screen (EGL or OSMesa) to PNG files, figure.png and a video");
   add_scene_options(*command, options->scene);
-  command->add_option("-o,--output", options->output_dir, "Output folder (default: the scene's output.dir, "
-                                                          "else out/<scene name>)")
+  command
+      ->add_option("-o,--output", options->output_dir,
+                   "Output folder (default: the scene's output.dir, "
+                   "else out/<scene name>)")
       ->type_name("DIR");
   command->add_option("--video", options->video_file, "Also write an H.264 MP4 (needs ffmpeg on PATH)")
       ->type_name("FILE.mp4");

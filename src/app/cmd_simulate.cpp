@@ -9,8 +9,8 @@
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
-#include "frames/stop_request.hpp"
 #include "core/errors.hpp"
+#include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
 #include "output/state_cache.hpp"
@@ -35,10 +35,11 @@ int run_simulate(const SimulateOptions& options) {
   PreparedRun run = prepare_run(options.scene);
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
-  const std::filesystem::path csv = options.csv_file.empty() ? run.scene.output.dir / "simulation.csv"
-                                                             : std::filesystem::path(options.csv_file);
+  const std::filesystem::path csv =
+      options.csv_file.empty() ? run.scene.output.dir / "simulation.csv" : std::filesystem::path(options.csv_file);
   const bool to_stdout = csv == "-";
-  if (to_stdout && options.resume) throw softbody::InputError("--resume keeps a journal beside the CSV: use it with a --csv FILE, not -");
+  if (to_stdout && options.resume)
+    throw softbody::InputError("--resume keeps a journal beside the CSV: use it with a --csv FILE, not -");
   if (!to_stdout) output::remove_stale_temporaries(csv.parent_path().empty() ? "." : csv.parent_path());
   // --resume: the rows go to a journal as they are made, and every frame's state beside it.
   std::unique_ptr<ResumableRun> resumable;
@@ -78,20 +79,23 @@ int run_simulate(const SimulateOptions& options) {
 
 Action register_simulate(CLI::App& parent) {
   auto options = std::make_shared<SimulateOptions>();
-  CLI::App* command = parent.add_subcommand(
-      "simulate", "Run a scene without rendering and write one CSV row per body per frame");
+  CLI::App* command =
+      parent.add_subcommand("simulate", "Run a scene without rendering and write one CSV row per body per frame");
   add_scene_options(*command, options->scene);
-  command->add_option("--csv", options->csv_file,
-                      "CSV output file (default: <output.dir>/simulation.csv; - for standard output; a device or "
-                      "FIFO is written through)")
+  command
+      ->add_option("--csv", options->csv_file,
+                   "CSV output file (default: <output.dir>/simulation.csv; - for standard output; a device or "
+                   "FIFO is written through)")
       ->type_name("FILE");
-  command->add_option("--cache", options->cache_dir,
-                      "Also write the state of every frame to DIR (state_NNNNNN.bin and cache.json), for "
-                      "`render --from-cache` and farm rendering")
+  command
+      ->add_option("--cache", options->cache_dir,
+                   "Also write the state of every frame to DIR (state_NNNNNN.bin and cache.json), for "
+                   "`render --from-cache` and farm rendering")
       ->type_name("DIR");
-  command->add_option("--cache-every", options->cache_every,
-                      "Keep only every Nth frame's state (and the last); frames between are simulated again from "
-                      "the one before when rendered")
+  command
+      ->add_option("--cache-every", options->cache_every,
+                   "Keep only every Nth frame's state (and the last); frames between are simulated again from "
+                   "the one before when rendered")
       ->check(CLI::Range(1, 1000000))
       ->type_name("N");
   add_frame_options(*command, options->frames);

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     const int status = cli.exit(e);
     return status == 0 ? softbody::kExitOk : softbody::kExitBadInput;
   }
-  for (const CLI::App* command : cli.get_subcommands()) return app::run_reporting_errors(actions.at(command->get_name()));
+  for (const CLI::App* command : cli.get_subcommands())
+    return app::run_reporting_errors(actions.at(command->get_name()));
   return softbody::kExitFailure;
 }

@@ -22,7 +22,8 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body, after_phase);
   // A split body is several bodies from here on: one scene body each, so that colours and patterns follow.
   std::vector<scene::Body> bodies;
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b) bodies.insert(bodies.end(), static_cast<std::size_t>(bodies_per_scene_body[b]), scene.bodies[b]);
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    bodies.insert(bodies.end(), static_cast<std::size_t>(bodies_per_scene_body[b]), scene.bodies[b]);
   scene.bodies = std::move(bodies);
   const bool xpbd = scene.solver.integrator == sim::IntegratorKind::Xpbd;
   if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
@@ -50,7 +51,8 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
                   estimate.stable_dt(scene.solver.integrator));
     notes.insert(notes.begin(), note);
   }
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string());
+  const frames::FrameClock clock =
+      frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string());
   const bool adaptive = scene.solver.integrator == sim::IntegratorKind::Rk45;  // chooses its own steps
   if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto && !(xpbd && scene.solver.substeps > 0)) {
     notes.push_back(clock.dt_note);
@@ -70,9 +72,9 @@ void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, co
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (%s)", stats.steps, run.clock.dt_s,
                   sim::to_string(solver.integrator).c_str());
   }
-  std::fprintf(out, "%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(), stats.frames,
-              steps, run.world.state.x.size(), stats.wall_s,
-              static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), what_was_written.c_str());
+  std::fprintf(out, "%s: %d frames, %s, %zu vertices, in %.3f s: %.0f steps/s; %s\n", run.scene.name.c_str(),
+               stats.frames, steps, run.world.state.x.size(), stats.wall_s,
+               static_cast<double>(stats.steps) / std::max(stats.step_wall_s, 1e-12), what_was_written.c_str());
 }
 
 }  // namespace app

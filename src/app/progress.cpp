@@ -1,8 +1,8 @@
 // Progress line drawing: carriage return and clear-to-end-of-line, at most ten times a second.
 #include "app/progress.hpp"
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 namespace app {
 

@@ -14,13 +14,15 @@ struct PlannedFrames::Cache {
 };
 
 void add_frame_options(CLI::App& command, FrameOptions& options) {
-  command.add_option("--frames", options.frames,
-                     "Only these frames: A-B, A, A-, -B, or a list such as 0-9,20-29 (the frames before the first "
-                     "one are simulated silently, or taken from --from-cache)")
+  command
+      .add_option("--frames", options.frames,
+                  "Only these frames: A-B, A, A-, -B, or a list such as 0-9,20-29 (the frames before the first "
+                  "one are simulated silently, or taken from --from-cache)")
       ->type_name("RANGES");
-  command.add_option("--from-cache", options.from_cache,
-                     "Take the states from a cache that `softbody simulate SCENE --cache DIR` wrote, instead of "
-                     "simulating (frames between cached states are simulated from the nearest one before)")
+  command
+      .add_option("--from-cache", options.from_cache,
+                  "Take the states from a cache that `softbody simulate SCENE --cache DIR` wrote, instead of "
+                  "simulating (frames between cached states are simulated from the nearest one before)")
       ->type_name("DIR");
 }
 
@@ -58,8 +60,8 @@ PlannedFrames::PlannedFrames(const PreparedRun& run, const FrameOptions& options
     if (!plan_.frames.contains(frame)) continue;
     const int stored = output::cached_frame_at_or_before(cache.manifest, frame);
     if (!output::has_cached_state(cache.dir, stored)) {
-      throw softbody::InputError(output::cached_state_path(cache.dir, stored).string() +
-                                 ": missing: frame " + std::to_string(frame) + " starts from it (the cache keeps every " +
+      throw softbody::InputError(output::cached_state_path(cache.dir, stored).string() + ": missing: frame " +
+                                 std::to_string(frame) + " starts from it (the cache keeps every " +
                                  std::to_string(cache.manifest.every) + " frames" +
                                  (cache.manifest.complete ? "" : "; its run did not finish") + ")");
     }

@@ -30,8 +30,9 @@ void require_regular_file(const std::filesystem::path& path, std::uintmax_t max_
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
   if (ec) throw InputError(path.string() + ": cannot open the " + what + " (" + ec.message() + ")");
   if (bytes > max_bytes) {
-    throw InputError(path.string() + ": the " + what + " has " + std::to_string(bytes) + " bytes, more than the limit of " +
-                     std::to_string(max_bytes) + (raise_hint.empty() ? "" : " (" + raise_hint + ")"));
+    throw InputError(path.string() + ": the " + what + " has " + std::to_string(bytes) +
+                     " bytes, more than the limit of " + std::to_string(max_bytes) +
+                     (raise_hint.empty() ? "" : " (" + raise_hint + ")"));
   }
 }
 

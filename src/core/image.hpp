@@ -18,9 +18,7 @@ struct Image {
 
   std::size_t row_bytes() const { return static_cast<std::size_t>(width) * 3; }
   std::uint8_t* pixel(int x, int y) { return rgb.data() + (static_cast<std::size_t>(y) * width + x) * 3; }
-  const std::uint8_t* pixel(int x, int y) const {
-    return rgb.data() + (static_cast<std::size_t>(y) * width + x) * 3;
-  }
+  const std::uint8_t* pixel(int x, int y) const { return rgb.data() + (static_cast<std::size_t>(y) * width + x) * 3; }
 };
 
 }  // namespace softbody

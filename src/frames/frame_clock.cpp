@@ -17,17 +17,19 @@ FrameClock plan_frames(double duration_s, int fps, double requested_dt_s, const 
   const double steps = std::ceil(ratio * (1.0 - kRelativeSlack));
   if (!(steps <= kMaxStepsPerFrame)) {  // also NaN
     char text[200];
-    std::snprintf(text, sizeof text, "solver.dt: %.6g s needs %.3g steps per frame at %d fps, more than the limit of %d",
-                  requested_dt_s, steps, fps, kMaxStepsPerFrame);
+    std::snprintf(text, sizeof text,
+                  "solver.dt: %.6g s needs %.3g steps per frame at %d fps, more than the limit of %d", requested_dt_s,
+                  steps, fps, kMaxStepsPerFrame);
     throw softbody::InputError(prefix + text);
   }
   clock.steps_per_frame = std::max(1, static_cast<int>(steps));
   clock.dt_s = clock.frame_interval_s / clock.steps_per_frame;
   if (std::abs(clock.dt_s - requested_dt_s) > kRelativeSlack * requested_dt_s) {
     char note[256];
-    std::snprintf(note, sizeof note,
-                  "solver.dt = %.6g s does not divide the frame interval 1/%d s; using dt = %.6g s (%d steps per frame)",
-                  requested_dt_s, fps, clock.dt_s, clock.steps_per_frame);
+    std::snprintf(
+        note, sizeof note,
+        "solver.dt = %.6g s does not divide the frame interval 1/%d s; using dt = %.6g s (%d steps per frame)",
+        requested_dt_s, fps, clock.dt_s, clock.steps_per_frame);
     clock.dt_note = note;
   }
   const double frames = std::ceil(duration_s * fps * (1.0 - kRelativeSlack));

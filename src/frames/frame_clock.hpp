@@ -6,11 +6,11 @@
 namespace frames {
 
 struct FrameClock {
-  double dt_s = 0.0;           // the step actually used: (1/fps) / steps_per_frame
+  double dt_s = 0.0;  // the step actually used: (1/fps) / steps_per_frame
   int steps_per_frame = 0;
-  int frame_count = 0;         // frames after frame 0 (the initial state): ceil(duration · fps)
+  int frame_count = 0;  // frames after frame 0 (the initial state): ceil(duration · fps)
   double frame_interval_s = 0.0;
-  std::string dt_note;         // non-empty when the requested dt was rounded down, saying so
+  std::string dt_note;  // non-empty when the requested dt was rounded down, saying so
 };
 
 // Runs beyond these are refused before they start (InputError naming the key and the limit): a frame

@@ -13,10 +13,10 @@ namespace frames {
 struct RunStats {
   long long steps = 0;           // accepted steps
   long long rejected_steps = 0;  // adaptive integrators: attempts whose error was above the tolerance
-  int frames = 0;       // frames handed to the sinks, frame 0 included
-  int loaded_states = 0;  // frames whose state came from a checkpoint instead of stepping
-  double wall_s = 0.0;  // wall-clock time of the whole loop, sinks included
-  double step_wall_s = 0.0;  // wall-clock time spent stepping the world (and loading checkpoints)
+  int frames = 0;                // frames handed to the sinks, frame 0 included
+  int loaded_states = 0;         // frames whose state came from a checkpoint instead of stepping
+  double wall_s = 0.0;           // wall-clock time of the whole loop, sinks included
+  double step_wall_s = 0.0;      // wall-clock time spent stepping the world (and loading checkpoints)
 };
 
 // Stored states a run can start from instead of stepping from frame 0 (a state cache).
@@ -29,7 +29,7 @@ struct Checkpoints {
 
 // How a run goes: which frames the sinks get, and where states may come from.
 struct RunPlan {
-  FrameSelection frames;                   // default: every frame
+  FrameSelection frames;                     // default: every frame
   const Checkpoints* checkpoints = nullptr;  // none: every state is stepped from frame 0
 };
 
@@ -38,10 +38,10 @@ using Progress = std::function<void(int, int)>;
 
 // What advance_to_frame did.
 struct Advance {
-  bool loaded = false;       // a checkpoint's state was loaded
-  long long steps = 0;       // accepted steps taken (after the load)
-  long long rejected = 0;    // rejected attempts (adaptive integrators)
-  bool stopped = false;      // a stop was requested (SIGINT / SIGTERM): the world is part of the way only
+  bool loaded = false;     // a checkpoint's state was loaded
+  long long steps = 0;     // accepted steps taken (after the load)
+  long long rejected = 0;  // rejected attempts (adaptive integrators)
+  bool stopped = false;    // a stop was requested (SIGINT / SIGTERM): the world is part of the way only
 };
 
 // Brings the world from frame `current` to frame `target` (> current): when a checkpoint lies between

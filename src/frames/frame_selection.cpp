@@ -33,8 +33,8 @@ FrameSelection FrameSelection::all(int last_frame) {
 FrameSelection FrameSelection::parse(const std::string& text, int last_frame, const std::string& option) {
   FrameSelection selection;
   selection.chosen_.assign(static_cast<std::size_t>(last_frame) + 1, false);
-  const std::string expected = "expected frame ranges such as 10-20, 10, 10-, -20 or 0-9,20-29 within 0.." +
-                               std::to_string(last_frame);
+  const std::string expected =
+      "expected frame ranges such as 10-20, 10, 10-, -20 or 0-9,20-29 within 0.." + std::to_string(last_frame);
   auto fail = [&](const std::string& why) -> softbody::InputError {
     return softbody::InputError(option + " " + text + ": " + why + " (" + expected + ")");
   };

@@ -9,9 +9,8 @@
 
 namespace frames {
 
-RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
-                               std::span<CapturingFrameSink* const> sinks, const Progress& progress,
-                               const RunPlan& plan) {
+RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::span<CapturingFrameSink* const> sinks,
+                               const Progress& progress, const RunPlan& plan) {
   const FrameSelection selection = plan.frames.count() > 0 ? plan.frames : FrameSelection::all(clock.frame_count);
   RunStats stats;
   const auto start = WallClock::now();
@@ -46,7 +45,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
         stepping.wait();  // the worker must be done with the world before anyone else sees it
         throw;
       }
-      const auto [advance, seconds] = stepping.get();  // rethrows the worker's DivergedError
+      const auto [advance, seconds] = stepping.get();                       // rethrows the worker's DivergedError
       if (advance.stopped) throw Interrupted(stop_signal(), stats.frames);  // the frame in progress is dropped
       stats.step_wall_s += seconds;
       stats.loaded_states += advance.loaded ? 1 : 0;

@@ -15,8 +15,7 @@ namespace frames {
 // propagates, as with run_frames; a stop request ends it the same way with frames::Interrupted, within one
 // step of the worker, once the frame being delivered is complete (counted). RunStats::step_wall_s is then
 // the worker's time, which overlaps the sinks'.
-RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock,
-                               std::span<CapturingFrameSink* const> sinks, const Progress& progress = {},
-                               const RunPlan& plan = {});
+RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::span<CapturingFrameSink* const> sinks,
+                               const Progress& progress = {}, const RunPlan& plan = {});
 
 }  // namespace frames

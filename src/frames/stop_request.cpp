@@ -38,9 +38,7 @@ extern "C" void record_stop_signal(int signal) {
   raise(signal);
 }
 
-std::string signal_name(int signal) {
-  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
-}
+std::string signal_name(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
 
 }  // namespace
 
@@ -66,8 +64,8 @@ Interrupted::Interrupted(int signal, int complete_frames)
 Interrupted::Interrupted(int signal, const std::string& what) : std::runtime_error(what), signal_(signal) {}
 
 Interrupted Interrupted::during_setup(int signal, const std::string& phase_done) {
-  return Interrupted(signal, signal_name(signal) + ": stopped during setup, after " + phase_done +
-                                 "; nothing was written");
+  return Interrupted(signal,
+                     signal_name(signal) + ": stopped during setup, after " + phase_done + "; nothing was written");
 }
 
 void throw_if_stop_requested(int complete_frames) {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
-#include <optional>
 #include <iterator>
 #include <numeric>
-#include <string_view>
+#include <optional>
 #include <set>
+#include <string_view>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -48,7 +48,9 @@ std::string cat(std::initializer_list<std::string_view> pieces) {
   return text;
 }
 
-std::string count_of(std::size_t n, const char* one, const char* many) { return cat({std::to_string(n), " ", n == 1 ? one : many}); }
+std::string count_of(std::size_t n, const char* one, const char* many) {
+  return cat({std::to_string(n), " ", n == 1 ? one : many});
+}
 
 // A polygon soup: the mesh's points and faces as index lists, before any connectivity is assumed.
 struct Soup {
@@ -62,7 +64,8 @@ Soup soup_of(const mesh::TriMesh& mesh) {
   for (const mesh::Vec3& x : mesh.vertices) soup.points.emplace_back(x.x(), x.y(), x.z());
   soup.polygons.reserve(mesh.triangles.size());
   for (const mesh::Triangle& t : mesh.triangles) {
-    soup.polygons.push_back({static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2])});
+    soup.polygons.push_back(
+        {static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2])});
   }
   return soup;
 }
@@ -83,14 +86,17 @@ void remove_soup_degeneracies(Soup& soup, std::vector<std::string>& notes) {
     sorted.push_back(key);
   }
   std::sort(sorted.begin(), sorted.end());
-  const std::size_t distinct = static_cast<std::size_t>(std::distance(sorted.begin(), std::unique(sorted.begin(), sorted.end())));
+  const std::size_t distinct =
+      static_cast<std::size_t>(std::distance(sorted.begin(), std::unique(sorted.begin(), sorted.end())));
   const std::size_t duplicates = sorted.size() - distinct;
   if (repeated == 0 && duplicates == 0) return;
   PMP::repair_polygon_soup(soup.points, soup.polygons);
   std::string note = "repair: removed";
   if (repeated > 0) note += cat({" ", count_of(repeated, "face", "faces"), " with a repeated vertex"});
   if (repeated > 0 && duplicates > 0) note += " and";
-  if (duplicates > 0) note += cat({" ", count_of(duplicates, "duplicate face", "duplicate faces"), " (the same three vertices as another)"});
+  if (duplicates > 0)
+    note +=
+        cat({" ", count_of(duplicates, "duplicate face", "duplicate faces"), " (the same three vertices as another)"});
   notes.push_back(note);
 }
 
@@ -123,9 +129,11 @@ void orient_soup(Soup& soup, std::vector<std::string>& notes) {
   std::set<std::pair<std::size_t, std::size_t>> edges;
   PMP::orient_polygon_soup(soup.points, soup.polygons, CGAL::parameters::visitor(OrientationVisitor(&counts, &edges)));
   if (counts.non_manifold_edges > 0 || counts.non_manifold_vertices > 0) {
-    const std::string edge_words = cat({count_of(counts.non_manifold_edges, "non-manifold edge", "non-manifold edges"), " (three or more faces)"});
+    const std::string edge_words =
+        cat({count_of(counts.non_manifold_edges, "non-manifold edge", "non-manifold edges"), " (three or more faces)"});
     const std::string vertex_words =
-        cat({count_of(counts.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"), " (surfaces touching at a point)"});
+        cat({count_of(counts.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"),
+             " (surfaces touching at a point)"});
     const bool both = counts.non_manifold_edges > 0 && counts.non_manifold_vertices > 0;
     notes.push_back(cat({"repair: split ", counts.non_manifold_edges > 0 ? edge_words : "", both ? " and " : "",
                          counts.non_manifold_vertices > 0 ? vertex_words : "", " into separate sheets: ",
@@ -142,8 +150,12 @@ void orient_soup(Soup& soup, std::vector<std::string>& notes) {
 void stitch(SurfaceMesh& surface, std::vector<std::string>& notes) {
   const std::size_t stitched = PMP::stitch_borders(surface);
   const std::size_t split = PMP::duplicate_non_manifold_vertices(surface);
-  if (stitched > 0) notes.push_back(cat({"repair: stitched ", count_of(stitched, "pair", "pairs"), " of border edges with matching end points"}));
-  if (split > 0) notes.push_back(cat({"repair: split ", count_of(split, "non-manifold vertex", "non-manifold vertices"), " left by stitching"}));
+  if (stitched > 0)
+    notes.push_back(
+        cat({"repair: stitched ", count_of(stitched, "pair", "pairs"), " of border edges with matching end points"}));
+  if (split > 0)
+    notes.push_back(
+        cat({"repair: split ", count_of(split, "non-manifold vertex", "non-manifold vertices"), " left by stitching"}));
 }
 
 std::size_t degenerate_face_count(const SurfaceMesh& surface) {
@@ -162,9 +174,10 @@ void remove_degenerate_faces(SurfaceMesh& surface, std::vector<std::string>& not
   surface.collect_garbage();
   const std::size_t left = all_removed ? 0 : degenerate_face_count(surface);
   const std::size_t fewer = faces_before - surface.number_of_faces();
-  notes.push_back(cat({"repair: removed ", count_of(degenerate - left, "zero-area face", "zero-area faces"),
-                       " (collinear corners) by edge flips and collapses (", count_of(fewer, "face", "faces"), " fewer)",
-                       left > 0 ? cat({"; ", std::to_string(left), " could not be removed"}) : std::string()}));
+  notes.push_back(
+      cat({"repair: removed ", count_of(degenerate - left, "zero-area face", "zero-area faces"),
+           " (collinear corners) by edge flips and collapses (", count_of(fewer, "face", "faces"), " fewer)",
+           left > 0 ? cat({"; ", std::to_string(left), " could not be removed"}) : std::string()}));
 }
 
 struct HoleCounts {
@@ -196,7 +209,8 @@ void fill_holes(SurfaceMesh& surface, std::vector<std::string>& notes) {
     counts.largest = std::max(counts.largest, edges);
     std::vector<Face> faces;
     std::vector<SurfaceMesh::Vertex_index> vertices;
-    const auto result = PMP::triangulate_refine_and_fair_hole(surface, h, std::back_inserter(faces), std::back_inserter(vertices));
+    const auto result =
+        PMP::triangulate_refine_and_fair_hole(surface, h, std::back_inserter(faces), std::back_inserter(vertices));
     counts.faces += faces.size();
     counts.vertices += vertices.size();
     if (faces.empty()) {
@@ -206,12 +220,16 @@ void fill_holes(SurfaceMesh& surface, std::vector<std::string>& notes) {
     }
   }
   std::string note = cat({"repair: filled ", count_of(counts.holes - counts.unfilled, "hole", "holes"), " of "});
-  note += counts.smallest == counts.largest ? std::to_string(counts.largest)
-                                            : cat({std::to_string(counts.smallest), "..", std::to_string(counts.largest)});
-  note += cat({" edges (", std::to_string(counts.edges), " boundary edges) with ", count_of(counts.faces, "triangle", "triangles"),
-               " and ", count_of(counts.vertices, "new vertex", "new vertices"), ", refined and faired"});
-  if (counts.unfaired > 0) note += cat({"; ", std::to_string(counts.unfaired), " of them not faired (the fairing solve failed): left flat"});
-  if (counts.unfilled > 0) note += cat({"; ", count_of(counts.unfilled, "hole", "holes"), " could not be triangulated"});
+  note += counts.smallest == counts.largest
+              ? std::to_string(counts.largest)
+              : cat({std::to_string(counts.smallest), "..", std::to_string(counts.largest)});
+  note += cat({" edges (", std::to_string(counts.edges), " boundary edges) with ",
+               count_of(counts.faces, "triangle", "triangles"), " and ",
+               count_of(counts.vertices, "new vertex", "new vertices"), ", refined and faired"});
+  if (counts.unfaired > 0)
+    note += cat({"; ", std::to_string(counts.unfaired), " of them not faired (the fairing solve failed): left flat"});
+  if (counts.unfilled > 0)
+    note += cat({"; ", count_of(counts.unfilled, "hole", "holes"), " could not be triangulated"});
   notes.push_back(note);
 }
 
@@ -221,8 +239,8 @@ void keep_largest_part(SurfaceMesh& surface, std::vector<std::string>& notes) {
   const std::size_t removed = PMP::keep_largest_connected_components(surface, 1);
   if (removed == 0) return;
   surface.collect_garbage();
-  notes.push_back(cat({"repair: kept the largest of ", std::to_string(removed + 1), " parts (", std::to_string(surface.number_of_faces()),
-                       " of ", std::to_string(faces_before), " faces)"}));
+  notes.push_back(cat({"repair: kept the largest of ", std::to_string(removed + 1), " parts (",
+                       std::to_string(surface.number_of_faces()), " of ", std::to_string(faces_before), " faces)"}));
 }
 
 // 6V = Σ p_a·(p_b × p_c) of each edge-connected part (the divergence theorem; > 0 for a closed part wound
@@ -268,13 +286,13 @@ void remove_flat_parts(SurfaceMesh& surface, std::vector<std::string>& notes) {
   for (Face f : surface.faces()) {
     if (std::abs(volumes.six_volume[volumes.part_of_face[static_cast<std::size_t>(f)]]) <= flat) doomed.push_back(f);
   }
-  const std::size_t parts = static_cast<std::size_t>(
-      std::count_if(volumes.six_volume.begin(), volumes.six_volume.end(), [&](double v) { return std::abs(v) <= flat; }));
+  const std::size_t parts = static_cast<std::size_t>(std::count_if(volumes.six_volume.begin(), volumes.six_volume.end(),
+                                                                   [&](double v) { return std::abs(v) <= flat; }));
   if (doomed.empty() || parts == volumes.six_volume.size()) return;  // never remove everything
   for (Face f : doomed) CGAL::Euler::remove_face(surface.halfedge(f), surface);
   surface.collect_garbage();
-  notes.push_back(cat({"repair: removed ", count_of(parts, "flat part", "flat parts"), " (", count_of(doomed.size(), "face", "faces"),
-                       ") that enclose no volume (sheets back to back)"}));
+  notes.push_back(cat({"repair: removed ", count_of(parts, "flat part", "flat parts"), " (",
+                       count_of(doomed.size(), "face", "faces"), ") that enclose no volume (sheets back to back)"}));
 }
 
 // Step 7: each closed edge-connected part whose signed volume 6V = Σ p_a·(p_b × p_c) is negative faces inward:
@@ -291,8 +309,8 @@ void orient_parts_outward(SurfaceMesh& surface, std::vector<std::string>& notes)
       std::count_if(volumes.six_volume.begin(), volumes.six_volume.end(), [](double v) { return v < 0.0; }));
   if (inward.empty()) return;
   PMP::reverse_face_orientations(inward, surface);
-  notes.push_back(cat({"repair: turned ", count_of(inward_parts, "inside-out part", "inside-out parts"), " of ", std::to_string(parts),
-                       " outward (", count_of(inward.size(), "face", "faces"), " reversed)"}));
+  notes.push_back(cat({"repair: turned ", count_of(inward_parts, "inside-out part", "inside-out parts"), " of ",
+                       std::to_string(parts), " outward (", count_of(inward.size(), "face", "faces"), " reversed)"}));
 }
 
 // The groups of parts that overlap, touch or nest (PMP::do_intersect on closed meshes: faces that meet, or one
@@ -406,14 +424,16 @@ void union_overlapping_parts(SurfaceMesh& surface, std::vector<std::string>& not
   }
   if (merged > 0) {
     surface = std::move(rebuilt);
-    notes.push_back(cat({"repair: joined ", std::to_string(merged), " overlapping parts into ", count_of(surfaces, "surface", "surfaces"),
-                         " (their Boolean union, PMP::corefine_and_compute_union); ",
-                         count_of(static_cast<std::size_t>(surface.number_of_faces()), "face", "faces"), ", ",
-                         count_of(parts_now, "part", "parts"), " now"}));
+    notes.push_back(
+        cat({"repair: joined ", std::to_string(merged), " overlapping parts into ",
+             count_of(surfaces, "surface", "surfaces"), " (their Boolean union, PMP::corefine_and_compute_union); ",
+             count_of(static_cast<std::size_t>(surface.number_of_faces()), "face", "faces"), ", ",
+             count_of(parts_now, "part", "parts"), " now"}));
   }
   if (failed > 0) {
-    notes.push_back(cat({"repair: could not join ", std::to_string(failed),
-                         " overlapping parts (one of them intersects itself, or their union is not closed): kept as they are"}));
+    notes.push_back(
+        cat({"repair: could not join ", std::to_string(failed),
+             " overlapping parts (one of them intersects itself, or their union is not closed): kept as they are"}));
   }
 }
 

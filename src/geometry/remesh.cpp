@@ -21,10 +21,10 @@ namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-constexpr double kShortestSharpEdge = 0.5;    // sharp edges below this fraction of the target are not kept
-constexpr int kRemeshIterations = 5;          // CGAL's split / collapse / flip / relax rounds per remesh
-constexpr int kMaxCountCorrections = 4;       // remeshes to land near the asked vertex count
-constexpr double kCountTolerance = 0.05;      // stop correcting within 5 % of the asked count
+constexpr double kShortestSharpEdge = 0.5;  // sharp edges below this fraction of the target are not kept
+constexpr int kRemeshIterations = 5;        // CGAL's split / collapse / flip / relax rounds per remesh
+constexpr int kMaxCountCorrections = 4;     // remeshes to land near the asked vertex count
+constexpr double kCountTolerance = 0.05;    // stop correcting within 5 % of the asked count
 
 // The closed input as a Surface_mesh. Through CGAL's soup functions rather than face by face: a vertex where two
 // fans of triangles touch (a pinch, allowed by mesh::validate_closed, which checks edges) cannot be one vertex of
@@ -36,7 +36,8 @@ SurfaceMesh closed_surface(const mesh::TriMesh& closed) {
   std::vector<std::array<std::size_t, 3>> polygons;
   polygons.reserve(closed.triangles.size());
   for (const mesh::Triangle& t : closed.triangles) {
-    polygons.push_back({static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2])});
+    polygons.push_back(
+        {static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]), static_cast<std::size_t>(t[2])});
   }
   PMP::orient_polygon_soup(points, polygons);
   SurfaceMesh surface;
@@ -70,7 +71,8 @@ mesh::TriMesh remeshed(SurfaceMesh surface, double target_edge_length, double sh
 
 }  // namespace
 
-mesh::TriMesh remesh_to_edge_length(const mesh::TriMesh& closed, double target_edge_length, double sharp_edge_angle_deg) {
+mesh::TriMesh remesh_to_edge_length(const mesh::TriMesh& closed, double target_edge_length,
+                                    double sharp_edge_angle_deg) {
   return remeshed(closed_surface(closed), target_edge_length, sharp_edge_angle_deg);
 }
 

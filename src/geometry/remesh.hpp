@@ -25,6 +25,7 @@ mesh::TriMesh remesh_to_edge_length(const mesh::TriMesh& closed, double target_e
 // surface of area A with 2V triangles (Euler, genus 0), so A ≈ 2V·(√3/4)L², that is L ≈ sqrt(2A / (√3 V));
 // then L is corrected by sqrt(V_got / V_target) (vertices ∝ 1/L²) and the input remeshed again, at most a
 // few times, keeping the closest result.
-mesh::TriMesh remesh_to_vertex_count(const mesh::TriMesh& closed, int target_vertices, double sharp_edge_angle_deg = 0.0);
+mesh::TriMesh remesh_to_vertex_count(const mesh::TriMesh& closed, int target_vertices,
+                                     double sharp_edge_angle_deg = 0.0);
 
 }  // namespace geometry

@@ -32,12 +32,14 @@ mesh::Uv uv_at(const Vec3& p, const mesh::TriMesh& from, std::size_t source) {
   const mesh::Triangle& t = from.triangles[source];
   const mesh::CornerUvs& uvs = from.corner_uvs[source];
   for (int k = 0; k < 3; ++k) {
-    if (from.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] == p) return uvs[static_cast<std::size_t>(k)];
+    if (from.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] == p)
+      return uvs[static_cast<std::size_t>(k)];
   }
-  const std::array<double, 3> w = clamped_barycentric(p, from.vertices[static_cast<std::size_t>(t[0])],
-                                                      from.vertices[static_cast<std::size_t>(t[1])],
-                                                      from.vertices[static_cast<std::size_t>(t[2])]);
-  return {w[0] * uvs[0][0] + w[1] * uvs[1][0] + w[2] * uvs[2][0], w[0] * uvs[0][1] + w[1] * uvs[1][1] + w[2] * uvs[2][1]};
+  const std::array<double, 3> w =
+      clamped_barycentric(p, from.vertices[static_cast<std::size_t>(t[0])],
+                          from.vertices[static_cast<std::size_t>(t[1])], from.vertices[static_cast<std::size_t>(t[2])]);
+  return {w[0] * uvs[0][0] + w[1] * uvs[1][0] + w[2] * uvs[2][0],
+          w[0] * uvs[0][1] + w[1] * uvs[1][1] + w[2] * uvs[2][1]};
 }
 
 }  // namespace
@@ -50,7 +52,9 @@ std::vector<mesh::CornerUvs> transfer_corner_uvs(const mesh::TriMesh& from, cons
   // plane.
   std::vector<Vec3> nudged;
   nudged.reserve(3 * to.triangles.size());
-  const auto corner = [&](const mesh::Triangle& t, std::size_t k) -> const Vec3& { return to.vertices[static_cast<std::size_t>(t[k])]; };
+  const auto corner = [&](const mesh::Triangle& t, std::size_t k) -> const Vec3& {
+    return to.vertices[static_cast<std::size_t>(t[k])];
+  };
   for (const mesh::Triangle& t : to.triangles) {
     const Vec3 centroid = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
     for (std::size_t k = 0; k < 3; ++k) nudged.push_back(corner(t, k) + 1e-3 * (centroid - corner(t, k)));
@@ -58,7 +62,8 @@ std::vector<mesh::CornerUvs> transfer_corner_uvs(const mesh::TriMesh& from, cons
   const std::vector<int> nearest = nearest_triangles(from, nudged);
   std::vector<mesh::CornerUvs> uvs(to.triangles.size());
   for (std::size_t f = 0; f < to.triangles.size(); ++f) {
-    for (std::size_t k = 0; k < 3; ++k) uvs[f][k] = uv_at(corner(to.triangles[f], k), from, static_cast<std::size_t>(nearest[3 * f + k]));
+    for (std::size_t k = 0; k < 3; ++k)
+      uvs[f][k] = uv_at(corner(to.triangles[f], k), from, static_cast<std::size_t>(nearest[3 * f + k]));
   }
   return uvs;
 }

@@ -30,11 +30,12 @@ void check_degenerate_faces(const TriMesh& mesh) {
   const double min_area = 1e-14 * diagonal * diagonal;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    const double area = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+    const double area =
+        0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] || !(area > min_area)) {
       fail(MeshDefect::Degenerate, "triangle " + std::to_string(f) + " is degenerate (zero area" +
-           (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ? ", repeated vertex" : "") +
-           "): every face must span an area to carry pressure");
+                                       (t[0] == t[1] || t[1] == t[2] || t[2] == t[0] ? ", repeated vertex" : "") +
+                                       "): every face must span an area to carry pressure");
     }
   }
 }
@@ -76,24 +77,27 @@ EdgeCounts count_edges(const TriMesh& mesh) {
 
 void validate_closed(TriMesh& mesh, std::vector<std::string>& notes) {
   if (mesh.triangles.size() < 4 || mesh.vertices.size() < 4) {
-    fail(MeshDefect::TooSmall, "has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
+    fail(MeshDefect::TooSmall,
+         "has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
   }
   check_degenerate_faces(mesh);
   const EdgeCounts counts = count_edges(mesh);
   if (counts.boundary > 0) {
-    fail(MeshDefect::Open, "is not closed: " + std::to_string(counts.boundary) + " boundary edges (of " + std::to_string(counts.edges) +
-         "); pressure needs a closed surface");
+    fail(MeshDefect::Open, "is not closed: " + std::to_string(counts.boundary) + " boundary edges (of " +
+                               std::to_string(counts.edges) + "); pressure needs a closed surface");
   }
   if (counts.non_manifold > 0) {
-    fail(MeshDefect::NonManifold, "is not manifold: " + std::to_string(counts.non_manifold) + " edges are shared by more than two triangles");
+    fail(MeshDefect::NonManifold,
+         "is not manifold: " + std::to_string(counts.non_manifold) + " edges are shared by more than two triangles");
   }
   if (counts.misoriented > 0) {
     fail(MeshDefect::Winding, "has inconsistent winding: " + std::to_string(counts.misoriented) +
-         " edges are traversed in the same direction by both of their triangles");
+                                  " edges are traversed in the same direction by both of their triangles");
   }
   const double volume = signed_volume(mesh);
   const double diagonal = bounding_diagonal(mesh);
-  if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal)) fail(MeshDefect::NoVolume, "encloses no volume (flat or self-cancelling surface)");
+  if (!(std::abs(volume) > 1e-12 * diagonal * diagonal * diagonal))
+    fail(MeshDefect::NoVolume, "encloses no volume (flat or self-cancelling surface)");
   if (volume < 0.0) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
     for (CornerUvs& uv : mesh.corner_uvs) std::swap(uv[1], uv[2]);

@@ -22,10 +22,10 @@ class MeshDefectError : public softbody::InputError {
 };
 
 struct EdgeCounts {
-  std::size_t edges = 0;          // unique undirected edges
-  std::size_t boundary = 0;       // used by one triangle only (a hole)
-  std::size_t non_manifold = 0;   // used by three or more triangles
-  std::size_t misoriented = 0;    // used twice in the same direction (inconsistent winding)
+  std::size_t edges = 0;         // unique undirected edges
+  std::size_t boundary = 0;      // used by one triangle only (a hole)
+  std::size_t non_manifold = 0;  // used by three or more triangles
+  std::size_t misoriented = 0;   // used twice in the same direction (inconsistent winding)
 };
 
 // Counts the edge kinds above.

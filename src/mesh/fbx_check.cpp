@@ -30,7 +30,8 @@ enum class Entry { Other, Connection, ModelProperty };
 
 Entry entry_at(const std::vector<std::string_view>& blocks, std::string_view name) {
   if (name == "C" && blocks.size() == 1 && blocks[0] == "Connections") return Entry::Connection;
-  if (name == "P" && blocks.size() == 3 && blocks[0] == "Objects" && blocks[1] == "Model" && blocks[2] == "Properties70") {
+  if (name == "P" && blocks.size() == 3 && blocks[0] == "Objects" && blocks[1] == "Model" &&
+      blocks[2] == "Properties70") {
     return Entry::ModelProperty;
   }
   return Entry::Other;
@@ -157,13 +158,20 @@ std::size_t property_bytes_at(std::string_view bytes, std::size_t at, std::size_
   switch (type) {
     case 'C': size = 1; break;
     case 'Y': size = 2; break;
-    case 'I': case 'F': size = 4; break;
-    case 'D': case 'L': size = 8; break;
-    case 'S': case 'R':
+    case 'I':
+    case 'F': size = 4; break;
+    case 'D':
+    case 'L': size = 8; break;
+    case 'S':
+    case 'R':
       if (left < 4) return 0;
       size = 4 + static_cast<std::size_t>(std::min<std::uint64_t>(read_le(bytes, at, 4), left));
       break;
-    case 'f': case 'd': case 'l': case 'i': case 'b':
+    case 'f':
+    case 'd':
+    case 'l':
+    case 'i':
+    case 'b':
       if (left < 12 || read_le(bytes, at + 4, 4) > 1) return 0;
       size = 12 + static_cast<std::size_t>(std::min<std::uint64_t>(read_le(bytes, at + 8, 4), left));
       break;
@@ -218,7 +226,8 @@ std::vector<Connection> read_binary(std::string_view bytes) {
     const std::size_t name_bytes = static_cast<unsigned char>(bytes[at + 3 * width]);
     if (end <= at || end > limit) refuse(at, "ends at byte " + std::to_string(end) + ", outside its parent");
     const std::size_t properties_at = at + header + name_bytes;
-    if (properties_at > end || property_bytes > end - properties_at) refuse(at, "has more property bytes than it holds");
+    if (properties_at > end || property_bytes > end - properties_at)
+      refuse(at, "has more property bytes than it holds");
     const std::size_t nested_at = properties_at + static_cast<std::size_t>(property_bytes);
     FirstProperties first;
     std::size_t p = properties_at;
@@ -296,8 +305,8 @@ void check_acyclic_and_shallow(const std::vector<Connection>& connections) {
           while (path[first].object != parent) --first;
           const std::size_t links = path.size() - first;
           throw InputError("is an FBX file whose object connections form a cycle (object " + std::to_string(parent) +
-                           " is connected to itself through " + std::to_string(links) + (links == 1 ? " link" : " links") +
-                           "), which assimp's reader cannot follow");
+                           " is connected to itself through " + std::to_string(links) +
+                           (links == 1 ? " link" : " links") + "), which assimp's reader cannot follow");
         }
         if (parent_mark == Mark::Unseen) {
           mark[parent] = Mark::OnPath;
@@ -311,7 +320,8 @@ void check_acyclic_and_shallow(const std::vector<Connection>& connections) {
       }
       if (above > kMostFbxConnectionLevels) {
         throw InputError("is an FBX file whose object connections are nested more than " +
-                         std::to_string(kMostFbxConnectionLevels) + " levels deep, more than assimp's reader can follow");
+                         std::to_string(kMostFbxConnectionLevels) +
+                         " levels deep, more than assimp's reader can follow");
       }
       levels[frame.object] = above;
       mark[frame.object] = Mark::Done;

@@ -16,18 +16,25 @@ namespace {
 // A generator: its name, its integer arguments with their ranges, and how to build it.
 struct Generator {
   const char* name;
-  const char* usage;                       // e.g. "icosphere:L with L in 0..7"
-  std::vector<std::pair<int, int>> ranges; // inclusive range of each argument
+  const char* usage;                        // e.g. "icosphere:L with L in 0..7"
+  std::vector<std::pair<int, int>> ranges;  // inclusive range of each argument
   TriMesh (*build)(const std::vector<int>& arguments);
 };
 
 const std::vector<Generator>& generators() {
   static const std::vector<Generator> table = {
-      {"icosphere", "icosphere:L with L an integer in 0..7", {{0, 7}}, [](const std::vector<int>& a) { return icosphere(a[0]); }},
+      {"icosphere",
+       "icosphere:L with L an integer in 0..7",
+       {{0, 7}},
+       [](const std::vector<int>& a) { return icosphere(a[0]); }},
       {"cube", "cube:N with N an integer in 1..128", {{1, 128}}, [](const std::vector<int>& a) { return cube(a[0]); }},
-      {"torus", "torus:M,N with M (around the ring) in 3..512 and N (around the tube) in 3..256", {{3, 512}, {3, 256}},
+      {"torus",
+       "torus:M,N with M (around the ring) in 3..512 and N (around the tube) in 3..256",
+       {{3, 512}, {3, 256}},
        [](const std::vector<int>& a) { return torus(a[0], a[1]); }},
-      {"capsule", "capsule:N with N (segments around) an integer in 4..256", {{4, 256}},
+      {"capsule",
+       "capsule:N with N (segments around) an integer in 4..256",
+       {{4, 256}},
        [](const std::vector<int>& a) { return capsule(a[0]); }},
   };
   return table;
@@ -47,7 +54,8 @@ std::optional<std::vector<int>> parse_arguments(const Generator& generator, cons
   std::string text = spec.substr(spec.find(':') + 1) + ",";
   for (std::size_t start = 0, comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1) {
     const std::string part = text.substr(start, comma - start);
-    if (part.empty() || part.size() > 6 || part.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    if (part.empty() || part.size() > 6 || part.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
     arguments.push_back(std::stoi(part));
   }
   if (arguments.size() != generator.ranges.size()) return std::nullopt;
@@ -91,15 +99,14 @@ TriMesh generate(const std::string& spec) {
 TriMesh icosphere(int levels) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;  // golden ratio: icosahedron vertices (0, ±1, ±t) cycled
   TriMesh mesh;
-  for (const Vec3& v : {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0),
-                        Vec3(0, -1, t), Vec3(0, 1, t), Vec3(0, -1, -t), Vec3(0, 1, -t),
-                        Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)}) {
+  for (const Vec3& v :
+       {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0), Vec3(0, -1, t), Vec3(0, 1, t), Vec3(0, -1, -t),
+        Vec3(0, 1, -t), Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)}) {
     mesh.vertices.push_back(v.normalized());
   }
-  mesh.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  mesh.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                    {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int level = 0; level < levels; ++level) {
     std::map<std::pair<int, int>, int> cache;
     std::vector<Triangle> finer;
@@ -126,9 +133,9 @@ TriMesh cube(int divisions) {
     Vec3 origin, u, v;
   };
   const Face faces[6] = {
-      {{0.5, -0.5, -0.5}, {0, 1, 0}, {0, 0, 1}},  {{-0.5, -0.5, -0.5}, {0, 0, 1}, {0, 1, 0}},
-      {{-0.5, 0.5, -0.5}, {0, 0, 1}, {1, 0, 0}},  {{-0.5, -0.5, -0.5}, {1, 0, 0}, {0, 0, 1}},
-      {{-0.5, -0.5, 0.5}, {1, 0, 0}, {0, 1, 0}},  {{-0.5, -0.5, -0.5}, {0, 1, 0}, {1, 0, 0}},
+      {{0.5, -0.5, -0.5}, {0, 1, 0}, {0, 0, 1}}, {{-0.5, -0.5, -0.5}, {0, 0, 1}, {0, 1, 0}},
+      {{-0.5, 0.5, -0.5}, {0, 0, 1}, {1, 0, 0}}, {{-0.5, -0.5, -0.5}, {1, 0, 0}, {0, 0, 1}},
+      {{-0.5, -0.5, 0.5}, {1, 0, 0}, {0, 1, 0}}, {{-0.5, -0.5, -0.5}, {0, 1, 0}, {1, 0, 0}},
   };
   for (const Face& face : faces) {
     const int base = static_cast<int>(mesh.vertices.size());
@@ -190,7 +197,7 @@ TriMesh capsule(int segments) {
   const int latitude_steps = std::max(2, segments / 4);  // per hemisphere, pole excluded
   TriMesh mesh;
   mesh.vertices.emplace_back(0.0, kHalfLength + kRadius, 0.0);  // top pole
-  std::vector<std::pair<double, double>> rings;  // (y, ring radius) from top to bottom
+  std::vector<std::pair<double, double>> rings;                 // (y, ring radius) from top to bottom
   for (int k = 1; k <= latitude_steps; ++k) {
     const double polar = 0.5 * std::numbers::pi * k / latitude_steps;
     rings.emplace_back(kHalfLength + kRadius * std::cos(polar), kRadius * std::sin(polar));
@@ -216,7 +223,8 @@ TriMesh capsule(int segments) {
       mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
     }
   }
-  for (int j = 0; j < segments; ++j) mesh.triangles.push_back({bottom, ring(ring_count - 1, j + 1), ring(ring_count - 1, j)});
+  for (int j = 0; j < segments; ++j)
+    mesh.triangles.push_back({bottom, ring(ring_count - 1, j + 1), ring(ring_count - 1, j)});
   return mesh;
 }
 

@@ -69,7 +69,8 @@ void check_primitive(const json& primitive, const std::string& where, std::size_
     // assimp 5.2 reads an indexed line loop's indices without checking them against the vertex count (found by
     // fuzz_mesh_glb: SEGV); a body uses triangle primitives only, so such a primitive is refused, not skipped.
     if (mode->get<unsigned long long>() == 2 && primitive.contains("indices")) {
-      throw InputError("is a glTF document whose " + where + " is an indexed line loop (mode 2), which assimp's glTF "
+      throw InputError("is a glTF document whose " + where +
+                       " is an indexed line loop (mode 2), which assimp's glTF "
                        "reader cannot read safely; a body uses triangle primitives only (modes 4, 5, 6): remove it");
     }
   }

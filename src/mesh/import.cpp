@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <utility>
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
@@ -39,7 +39,8 @@ std::string head_of(const std::filesystem::path& file, std::uintmax_t bytes) {
 // A little-endian uint32 at `at` of `bytes` (which holds at least at + 4 bytes).
 std::uint32_t read_u32_le(std::string_view bytes, std::size_t at) {
   std::uint32_t value = 0;
-  for (int k = 3; k >= 0; --k) value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
+  for (int k = 3; k >= 0; --k)
+    value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
   return value;
 }
 
@@ -73,8 +74,9 @@ void check_obj_vertices_come_first(const std::filesystem::path& file) {
     const char keyword = line[0];  // assimp goes by the first character: a line that starts with a blank is none
     if (keyword == 'v' && line.size() > 1 && (line[1] == ' ' || line[1] == '\t')) return;
     if (keyword == 'f' || keyword == 'p' || keyword == 'l') {
-      throw InputError("is an OBJ file with a face, point or line element before its first vertex (expected 'v x y z' "
-                       "lines before the elements that name them)");
+      throw InputError(
+          "is an OBJ file with a face, point or line element before its first vertex (expected 'v x y z' "
+          "lines before the elements that name them)");
     }
   }
 }
@@ -161,10 +163,11 @@ TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& li
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
   // (triangulation reads the vertices a polygon's indices name).
-  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
+  const unsigned flags =
+      aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
   const aiScene* scene = bytes_for_assimp.empty() ? importer.ReadFile(file.string(), flags)
-                                                  : importer.ReadFileFromMemory(bytes_for_assimp.data(), bytes_for_assimp.size(),
-                                                                                flags, "ply");
+                                                  : importer.ReadFileFromMemory(bytes_for_assimp.data(),
+                                                                                bytes_for_assimp.size(), flags, "ply");
   if (scene == nullptr) throw InputError("cannot be read as a mesh: " + std::string(importer.GetErrorString()));
   TriMesh mesh;
   long long vertices = 0, triangles = 0;

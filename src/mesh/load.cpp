@@ -19,7 +19,8 @@ namespace {
 // union repair where it was not asked for ("" where it ran: its own note says why it could not).
 std::string union_hint(const RepairOptions& repair) {
   if (!repair.enabled) return "; \"repair\": true joins overlapping parts into one surface (their union)";
-  if (repair.parts != PartsPolicy::Union) return "; \"parts\": \"union\" (the default of \"repair\") joins overlapping parts into one surface";
+  if (repair.parts != PartsPolicy::Union)
+    return "; \"parts\": \"union\" (the default of \"repair\") joins overlapping parts into one surface";
   return "";
 }
 
@@ -33,9 +34,10 @@ void note_suspicious_shapes(const TriMesh& mesh, const RepairOptions& repair, st
     std::string sizes;
     for (std::size_t p = 0; p < triangles.size() && p < 8; ++p) sizes += (p ? ", " : "") + std::to_string(triangles[p]);
     if (triangles.size() > 8) sizes += ", ...";
-    notes.push_back("holds " + std::to_string(parts.count) + " separate closed parts (" + sizes +
-                    " triangles), simulated as one body whose gas fills all of them as one volume (\"split\": true on the "
-                    "body makes each its own body)");
+    notes.push_back(
+        "holds " + std::to_string(parts.count) + " separate closed parts (" + sizes +
+        " triangles), simulated as one body whose gas fills all of them as one volume (\"split\": true on the "
+        "body makes each its own body)");
   }
   const std::vector<int> pinched = pinched_vertices(mesh);
   if (!pinched.empty()) {
@@ -49,7 +51,8 @@ void note_suspicious_shapes(const TriMesh& mesh, const RepairOptions& repair, st
   if (crossing.pairs > 0) {
     notes.push_back("intersects itself: " + std::to_string(crossing.pairs) + " pairs of triangles cross (the first: " +
                     std::to_string(crossing.first.first) + " and " + std::to_string(crossing.first.second) +
-                    "), so the gas volume counts the overlap twice or not at all" + (parts.count > 1 ? union_hint(repair) : ""));
+                    "), so the gas volume counts the overlap twice or not at all" +
+                    (parts.count > 1 ? union_hint(repair) : ""));
   }
 }
 
@@ -77,7 +80,8 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
            file.string() + " OUT.obj)";
   }
   if (defect == MeshDefect::Open && !repair.holes) return "; repair.holes is false: set it to true to " + action;
-  if (defect == MeshDefect::Degenerate && !repair.degenerate) return "; repair.degenerate is false: set it to true to " + action;
+  if (defect == MeshDefect::Degenerate && !repair.degenerate)
+    return "; repair.degenerate is false: set it to true to " + action;
   if (repair_notes.empty()) return "; still so after \"repair\", which changed nothing";
   std::string done = "; still so after \"repair\", which did: ";
   for (std::size_t i = 0; i < repair_notes.size(); ++i) done += (i ? "; " : "") + repair_notes[i];
@@ -85,7 +89,8 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
 }
 
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits, const RepairOptions& repair, const softbody::AfterPhase& after_phase) {
+                            const MeshLimits& limits, const RepairOptions& repair,
+                            const softbody::AfterPhase& after_phase) {
   const std::string what = file.empty() ? spec : file.string();
   const auto phase_done = [&](const std::string& phase) {
     if (after_phase) after_phase(phase + " " + what);

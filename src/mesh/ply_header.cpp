@@ -18,9 +18,9 @@
 namespace mesh {
 namespace {
 
-using softbody::InputError;
 using ply::type_bytes;
 using ply::words_of;
+using softbody::InputError;
 
 // A decimal count of at most 18 digits, or -1.
 long long count_of(std::string_view word) {
@@ -34,8 +34,8 @@ long long count_of(std::string_view word) {
 }
 
 struct Property {
-  int bytes = 0;        // a scalar's bytes, or a list item's
-  int count_bytes = 0;  // a list's count: 1, 2 or 4 bytes; 0 for a scalar
+  int bytes = 0;                // a scalar's bytes, or a list item's
+  int count_bytes = 0;          // a list's count: 1, 2 or 4 bytes; 0 for a scalar
   bool vertex_indices = false;  // a face's vertex_index (or vertex_indices) list
   char item_kind = 'u';         // a list item's kind (type_bytes)
 };
@@ -79,8 +79,9 @@ double item_value(const unsigned char* p, int bytes, char kind, bool big_endian)
 void check_vertex_index(double index, long long row, long long vertices) {
   if (index >= 0.0 && index < static_cast<double>(vertices) && index == std::floor(index)) return;
   char text[160];
-  std::snprintf(text, sizeof text, "has face %lld with the vertex index %.17g, not one of the %lld vertices its header announces",
-                row, index, vertices);
+  std::snprintf(text, sizeof text,
+                "has face %lld with the vertex index %.17g, not one of the %lld vertices its header announces", row,
+                index, vertices);
   throw InputError(text);
 }
 
@@ -93,7 +94,8 @@ std::string_view assimp_array_of(std::string_view element) {
 
 // Walks a binary body row by row: every list's count must fit in the bytes that remain (assimp reads past
 // the end of the file otherwise), and every face's vertex index must name a vertex.
-void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian, long long vertices) {
+void check_binary_body(std::string_view body, const std::vector<Element>& elements, bool big_endian,
+                       long long vertices) {
   std::size_t at = 0;
   for (const Element& e : elements) {
     for (long long row = 0; row < e.count; ++row) {
@@ -113,7 +115,8 @@ void check_binary_body(std::string_view body, const std::vector<Element>& elemen
             list_count(reinterpret_cast<const unsigned char*>(body.data() + at), p.count_bytes, big_endian);
         at += static_cast<std::size_t>(p.count_bytes);
         if (p.vertex_indices && n < 3) {
-          throw InputError("has face " + std::to_string(row) + " of " + std::to_string(n) + " vertices (expected 3 or more)");
+          throw InputError("has face " + std::to_string(row) + " of " + std::to_string(n) +
+                           " vertices (expected 3 or more)");
         }
         if (n > (body.size() - at) / static_cast<std::size_t>(p.bytes)) {
           throw InputError("has " + e.name + " " + std::to_string(row) + " with a list of " + std::to_string(n) +
@@ -121,7 +124,8 @@ void check_binary_body(std::string_view body, const std::vector<Element>& elemen
         }
         if (p.vertex_indices) {
           for (unsigned long long i = 0; i < n; ++i) {
-            const auto* item = reinterpret_cast<const unsigned char*>(body.data() + at + i * static_cast<std::size_t>(p.bytes));
+            const auto* item =
+                reinterpret_cast<const unsigned char*>(body.data() + at + i * static_cast<std::size_t>(p.bytes));
             check_vertex_index(item_value(item, p.bytes, p.item_kind, big_endian), row, vertices);
           }
         }
@@ -171,8 +175,8 @@ bool is_number_word(std::string_view word, double* value = nullptr) {
 
 // Walks an ASCII body line by line, as assimp reads it (one element per line): every line holds exactly the
 // values its element announces, every value a number, every list count a whole number, every face of at
-// least 3 vertices, each of which it names. (A row split over two lines, or a face count that is not a number, made assimp's
-// triangulation abort on an ai_assert.)
+// least 3 vertices, each of which it names. (A row split over two lines, or a face count that is not a number, made
+// assimp's triangulation abort on an ai_assert.)
 void check_ascii_body(std::string_view body, const std::vector<Element>& elements, long long vertices) {
   std::size_t at = 0;
   for (const Element& e : elements) {
@@ -180,7 +184,8 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
       auto bad = [&](const std::string& what) {
         throw InputError("has " + e.name + " " + std::to_string(row) + " with " + what);
       };
-      if (at >= body.size()) throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
+      if (at >= body.size())
+        throw InputError("ends inside " + e.name + " " + std::to_string(row) + " (its header announces more)");
       const std::size_t end = std::min(body.find('\n', at), body.size());
       const std::vector<std::string_view> words = words_of(body.substr(at, end - at));
       at = end + 1;
@@ -195,7 +200,8 @@ void check_ascii_body(std::string_view body, const std::vector<Element>& element
         const long long n = count_of(word);
         if (n < 0) bad("a list count that is not a whole number: \"" + std::string(word.substr(0, 20)) + "\"");
         if (p.vertex_indices && n < 3) bad("a face of " + std::to_string(n) + " vertices (expected 3 or more)");
-        if (n > static_cast<long long>(words.size() - w)) bad("a list of " + std::to_string(n) + " items, more than its line holds");
+        if (n > static_cast<long long>(words.size() - w))
+          bad("a list of " + std::to_string(n) + " items, more than its line holds");
         for (long long i = 0; i < n; ++i) {
           const std::string_view item = words[w++];
           double value = 0.0;
@@ -224,8 +230,9 @@ void check_text_characters(std::string_view text, long long first_line, const ch
     if (c >= 0x20 || c == '\t' || (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) continue;
     char code[8];
     std::snprintf(code, sizeof code, "0x%02x", c);
-    throw InputError("is a PLY file with the control character " + std::string(code) + " in line " + std::to_string(line) +
-                     " (in its " + part + "; a PLY text line holds printable characters and tabs, and ends with LF or CR LF)");
+    throw InputError("is a PLY file with the control character " + std::string(code) + " in line " +
+                     std::to_string(line) + " (in its " + part +
+                     "; a PLY text line holds printable characters and tabs, and ends with LF or CR LF)");
   }
 }
 
@@ -235,8 +242,8 @@ bool looks_like_ply(std::string_view head) { return head.substr(0, 3) == "ply"; 
 
 std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, const MeshLimits& limits) {
   const std::size_t end = end_header_line(head);
-  if (end == std::string_view::npos) throw InputError("is a PLY file without an end_header line in its first " +
-                                                      std::to_string(head.size()) + " bytes");
+  if (end == std::string_view::npos)
+    throw InputError("is a PLY file without an end_header line in its first " + std::to_string(head.size()) + " bytes");
   std::size_t header_bytes = head.find('\n', end);
   header_bytes = header_bytes == std::string_view::npos ? head.size() : header_bytes + 1;
   const std::string_view header = head.substr(0, header_bytes);
@@ -267,7 +274,8 @@ std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, c
       // assimp reads a name that starts with digits as a count (found by fuzz_mesh_ply_binary: "element
       // 99999999999vertex 0" made it allocate 103 GB).
       const auto first = static_cast<unsigned char>(words[1][0]);
-      if (!std::isalpha(first) && first != '_') bad("expected element NAME COUNT with a NAME that starts with a letter");
+      if (!std::isalpha(first) && first != '_')
+        bad("expected element NAME COUNT with a NAME that starts with a letter");
       // assimp keeps one vertex array and one face array, sized by the first element that fills each, and writes
       // a later one's rows past their end (a heap overwrite, shown by an assimp built with ASan,
       // scripts/build-assimp-asan; most likely the fuzzers' earlier heap corruption).
@@ -285,11 +293,13 @@ std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, c
       char count_kind = 'f', item_kind = 'f';
       if (words.size() == 5 && words[1] == "list") {
         const int count_bytes = type_bytes(words[2], &count_kind);
-        if (count_bytes == 0 || count_kind == 'f') bad("expected property list COUNT_TYPE ITEM_TYPE NAME with an integer COUNT_TYPE");
+        if (count_bytes == 0 || count_kind == 'f')
+          bad("expected property list COUNT_TYPE ITEM_TYPE NAME with an integer COUNT_TYPE");
         const int item_bytes = type_bytes(words[3], &item_kind);
         if (item_bytes == 0) bad("unknown item type \"" + std::string(words[3]) + "\"");
         element.row_min_bytes += count_bytes;
-        element.layout.push_back({item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices", item_kind});
+        element.layout.push_back(
+            {item_bytes, count_bytes, words[4] == "vertex_index" || words[4] == "vertex_indices", item_kind});
       } else if (words.size() == 3) {
         const int bytes = type_bytes(words[1], nullptr);
         if (bytes == 0) bad("unknown property type \"" + std::string(words[1]) + "\"");
@@ -308,7 +318,8 @@ std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, c
   long double needed = 0.0L;
   std::string announced;
   for (const Element& e : elements) {
-    if (e.properties == 0 && e.count > 0) throw InputError("has a malformed PLY header (element " + e.name + " has no properties)");
+    if (e.properties == 0 && e.count > 0)
+      throw InputError("has a malformed PLY header (element " + e.name + " has no properties)");
     if (e.name == "vertex") {
       check_counts("vertices", e.count, limits.max_vertices, "max_vertices");
     } else if (e.name == "face") {
@@ -317,8 +328,8 @@ std::size_t check_ply_header(std::string_view head, std::uintmax_t file_bytes, c
       check_counts("\"" + e.name + "\" elements", e.count, limits.max_vertices, "max_vertices");
     }
     // ASCII: every value is at least one character and a separator; binary: the scalars' bytes.
-    const long double row = format == "ascii" ? 2.0L * static_cast<long double>(e.properties)
-                                              : static_cast<long double>(e.row_min_bytes);
+    const long double row =
+        format == "ascii" ? 2.0L * static_cast<long double>(e.properties) : static_cast<long double>(e.row_min_bytes);
     needed += row * static_cast<long double>(e.count);
     if (e.count > 0) announced += (announced.empty() ? "" : ", ") + std::to_string(e.count) + " \"" + e.name + "\"";
   }
@@ -379,7 +390,8 @@ void check_off_header(std::string_view head, std::uintmax_t file_bytes, const Me
   check_counts("vertices", counts[0], limits.max_vertices, "max_vertices");
   check_counts("faces", counts[1], limits.max_triangles, "max_triangles");
   // Each vertex is at least "0 0 0\n" (6 bytes), each face at least its count and a separator (2 bytes).
-  const long double needed = 6.0L * static_cast<long double>(counts[0]) + 2.0L * static_cast<long double>(counts[1]) - 1.0L;
+  const long double needed =
+      6.0L * static_cast<long double>(counts[0]) + 2.0L * static_cast<long double>(counts[1]) - 1.0L;
   const std::uintmax_t body = file_bytes > i ? file_bytes - i : 0;
   if (needed > 0.0L) {
     check_body_size(body, needed, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces");

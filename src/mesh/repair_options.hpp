@@ -12,9 +12,9 @@ enum class PartsPolicy { Union, Keep, Largest };
 // Always done when repair is on (a surface mesh cannot be built without it): non-manifold vertices and edges
 // split, the winding made consistent, and each closed part turned to face outward.
 struct RepairOptions {
-  bool enabled = false;       // the body asked for repair at all
-  bool degenerate = true;     // remove faces with a repeated vertex, duplicate faces, zero-area faces
-  bool holes = true;          // fill holes: triangulate, refine to the surrounding density, fair
+  bool enabled = false;                    // the body asked for repair at all
+  bool degenerate = true;                  // remove faces with a repeated vertex, duplicate faces, zero-area faces
+  bool holes = true;                       // fill holes: triangulate, refine to the surrounding density, fair
   PartsPolicy parts = PartsPolicy::Union;  // a mesh whose parts are apart is left as Keep leaves it
 };
 

@@ -2,8 +2,8 @@
 #include "mesh/self_intersection.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <tuple>
 
 namespace mesh {
@@ -121,12 +121,14 @@ SelfIntersections find_self_intersections(const TriMesh& mesh) {
         if ((olo.array() > hi.array()).any() || (lo.array() > ohi.array()).any()) continue;
         const std::array<long long, 3>& a = first_cell[static_cast<std::size_t>(other)];
         const std::array<long long, 3>& b = first_cell[static_cast<std::size_t>(f)];
-        if (std::array<long long, 3>{std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])} != here) continue;
+        if (std::array<long long, 3>{std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])} != here)
+          continue;
         const Triangle& s = mesh.triangles[static_cast<std::size_t>(other)];
         const Triangle& t = mesh.triangles[static_cast<std::size_t>(f)];
         if (share_a_vertex(s, t) || !triangles_cross(mesh, s, t)) continue;
         ++found.pairs;
-        const bool earlier_found = best.later >= 0 && std::tie(best.later, best.cell, best.earlier) < std::tie(f, here, other);
+        const bool earlier_found =
+            best.later >= 0 && std::tie(best.later, best.cell, best.earlier) < std::tie(f, here, other);
         if (!earlier_found) best = {f, here, other};
       }
     }

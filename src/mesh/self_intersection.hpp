@@ -11,9 +11,9 @@
 namespace mesh {
 
 struct SelfIntersections {
-  long long pairs = 0;                  // crossing pairs of triangles
-  std::pair<int, int> first{-1, -1};    // one crossing pair (the first found)
-  bool checked = false;                 // false when the mesh has more than kMaxTrianglesChecked triangles
+  long long pairs = 0;                // crossing pairs of triangles
+  std::pair<int, int> first{-1, -1};  // one crossing pair (the first found)
+  bool checked = false;               // false when the mesh has more than kMaxTrianglesChecked triangles
 };
 
 // Meshes larger than this are not checked (the grid's cost grows with the triangles' overlap).

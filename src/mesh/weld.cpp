@@ -24,7 +24,8 @@ struct CellHash {
 long long cell_coordinate(double quotient) {
   constexpr double kFarCell = 4.0e18;  // below 2^63 - 1, and +-1 from it stays in range
   const double q = std::floor(quotient);
-  if (!(q > -kFarCell && q < kFarCell)) return q < 0.0 ? -static_cast<long long>(kFarCell) : static_cast<long long>(kFarCell);
+  if (!(q > -kFarCell && q < kFarCell))
+    return q < 0.0 ? -static_cast<long long>(kFarCell) : static_cast<long long>(kFarCell);
   return std::llround(q);
 }
 

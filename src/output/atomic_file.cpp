@@ -1,13 +1,13 @@
 // Atomic file writes.
 #include "output/atomic_file.hpp"
 
+#include <signal.h>
+#include <unistd.h>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
-#include <signal.h>
-#include <unistd.h>
 
 namespace output {
 
@@ -74,8 +74,9 @@ void write_through(const std::filesystem::path& path, std::string_view bytes) {
   if (out == nullptr) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
   const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
   const bool flushed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
-  if (!written || !flushed) throw std::runtime_error((to_stdout ? std::string("standard output") : path.string()) +
-                                                     ": write failed (" + std::strerror(errno) + ")");
+  if (!written || !flushed)
+    throw std::runtime_error((to_stdout ? std::string("standard output") : path.string()) + ": write failed (" +
+                             std::strerror(errno) + ")");
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace {
 
 constexpr int kMaxColumns = 4;
 constexpr int kMaxSheetWidth_px = 2560;
-constexpr int kGap_px = 8;               // white space between and around the tiles
+constexpr int kGap_px = 8;  // white space between and around the tiles
 constexpr std::uint8_t kPaper = 255;
 constexpr int kLabelRowsPerFontPixel = 120;  // a 120 px tall tile gets a 1 px font pixel, 360 px gets 3
 
@@ -64,9 +64,7 @@ ContactSheet::ContactSheet(std::vector<int> frames, int frame_width_px, int fram
   std::fill(sheet_.rgb.begin(), sheet_.rgb.end(), kPaper);
 }
 
-bool ContactSheet::wants(int index) const {
-  return std::find(frames_.begin(), frames_.end(), index) != frames_.end();
-}
+bool ContactSheet::wants(int index) const { return std::find(frames_.begin(), frames_.end(), index) != frames_.end(); }
 
 bool ContactSheet::complete() const {
   return std::all_of(filled_.begin(), filled_.end(), [](bool filled) { return filled; });

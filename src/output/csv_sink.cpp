@@ -74,7 +74,8 @@ int CsvSink::journalled_through(const std::filesystem::path& journal, std::size_
     start = end + 1;
   }
   int through = -1;
-  while (through + 1 < static_cast<int>(rows.size()) && rows[static_cast<std::size_t>(through + 1)] == bodies) ++through;
+  while (through + 1 < static_cast<int>(rows.size()) && rows[static_cast<std::size_t>(through + 1)] == bodies)
+    ++through;
   return through;
 }
 

@@ -61,7 +61,9 @@ int turn_back(const Motion& motion, int from) {
 int farthest_back(const Motion& motion, int from) {
   const softbody::Vec3& v0 = motion.front().com_velocity;
   if (v0.x() * v0.x() + v0.z() * v0.z() == 0.0) return -1;
-  const auto along = [&](const MotionSample& s) { return (s.min.x() + s.max.x()) * v0.x() + (s.min.z() + s.max.z()) * v0.z(); };
+  const auto along = [&](const MotionSample& s) {
+    return (s.min.x() + s.max.x()) * v0.x() + (s.min.z() + s.max.z()) * v0.z();
+  };
   int best = from;
   for (int i = from; i < static_cast<int>(motion.size()); ++i) {
     if (along(motion[i]) < along(motion[best])) best = i;

@@ -18,7 +18,8 @@ namespace output {
 // horizontal velocity). Those that exist
 // and fit in `tiles`; the tiles left over take, one by one, the frame farthest from every frame chosen.
 // Sorted. Without a floor only frame 0, the last and the spread-out frames.
-std::vector<int> frames_from_motion(const std::vector<MotionSample>& motion, int tiles, std::optional<double> floor_height_m);
+std::vector<int> frames_from_motion(const std::vector<MotionSample>& motion, int tiles,
+                                    std::optional<double> floor_height_m);
 
 // Fraction of the bodies' height at frame 0: the lowest vertex this close to the floor touches it.
 constexpr double kContactTolerance = 0.01;

@@ -20,14 +20,18 @@ void check_frame_pattern(const std::string& pattern, const std::string& scene_fi
     }
     std::size_t j = i + 1;
     if (j < pattern.size() && pattern[j] == '0') ++j;
-    for (int digits = 0; j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && digits < 2; ++digits) ++j;
+    for (int digits = 0; j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && digits < 2;
+         ++digits)
+      ++j;
     well_formed = j < pattern.size() && pattern[j] == 'd';
     ++conversions;
     i = j;
   }
   if (!well_formed || conversions != 1) {
-    throw softbody::InputError(scene_file + ": output.pattern: expected a file name ending in .png with one frame "
-                               "number conversion such as %04d (and no '/'), got \"" + pattern + "\"");
+    throw softbody::InputError(scene_file +
+                               ": output.pattern: expected a file name ending in .png with one frame "
+                               "number conversion such as %04d (and no '/'), got \"" +
+                               pattern + "\"");
   }
 }
 

@@ -35,7 +35,8 @@ std::filesystem::path MeshExporter::frame_path(int index) const {
 }
 
 void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
-  write_file_atomically(frame_path(index), format_ == MeshFormat::Obj ? world_to_obj(world, time_s) : world_to_ply(world, time_s));
+  write_file_atomically(frame_path(index),
+                        format_ == MeshFormat::Obj ? world_to_obj(world, time_s) : world_to_ply(world, time_s));
 }
 
 void MeshExporter::finish(bool /*complete*/) {}
@@ -52,7 +53,8 @@ int append_obj_object(std::string& text, const sim::World& world, int body_index
   int uv_count = 0;
   const std::vector<std::array<int, 3>> uv = append_obj_uvs(text, world.model.shown_corner_uvs(body_index), uv_count);
   const std::span<const softbody::Triangle> faces = shown_triangles(world, body_index);
-  for (std::size_t f = 0; f < faces.size(); ++f) append_obj_face(text, faces[f], first_index, uv.empty() ? nullptr : &uv[f], first_uv_index);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    append_obj_face(text, faces[f], first_index, uv.empty() ? nullptr : &uv[f], first_uv_index);
   return uv_count;
 }
 

@@ -15,7 +15,8 @@
 namespace output {
 namespace {
 
-static_assert(std::endian::native == std::endian::little, "binary PLY and STL are written in native (little) endianness");
+static_assert(std::endian::native == std::endian::little,
+              "binary PLY and STL are written in native (little) endianness");
 
 template <typename T>
 void append_binary(std::string& out, T value) {
@@ -35,7 +36,8 @@ std::string one_line(std::string text) {
 
 std::optional<MeshFileFormat> mesh_file_format_of(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".obj") return MeshFileFormat::Obj;
   if (extension == ".ply") return MeshFileFormat::Ply;
   if (extension == ".stl") return MeshFileFormat::Stl;
@@ -52,7 +54,8 @@ std::string trimesh_to_obj(const mesh::TriMesh& mesh, const std::string& comment
   }
   int uv_count = 0;
   const std::vector<std::array<int, 3>> uv = append_obj_uvs(text, mesh.corner_uvs, uv_count);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) append_obj_face(text, mesh.triangles[f], 1, uv.empty() ? nullptr : &uv[f], 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    append_obj_face(text, mesh.triangles[f], 1, uv.empty() ? nullptr : &uv[f], 1);
   return text;
 }
 

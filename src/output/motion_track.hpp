@@ -12,9 +12,9 @@ namespace output {
 struct MotionSample {
   int frame = 0;
   double time_s = 0.0;
-  softbody::Vec3 min;                // m, over every vertex of every body
-  softbody::Vec3 max;                // m
-  softbody::Vec3 com_velocity;       // m/s, all bodies' centre of mass (vertex masses)
+  softbody::Vec3 min;           // m, over every vertex of every body
+  softbody::Vec3 max;           // m
+  softbody::Vec3 com_velocity;  // m/s, all bodies' centre of mass (vertex masses)
   double height_m() const { return max.y() - min.y(); }
 };
 

@@ -7,7 +7,8 @@
 
 namespace output {
 
-std::vector<std::array<int, 3>> append_obj_uvs(std::string& text, std::span<const softbody::CornerUvs> corner_uvs, int& count) {
+std::vector<std::array<int, 3>> append_obj_uvs(std::string& text, std::span<const softbody::CornerUvs> corner_uvs,
+                                               int& count) {
   std::map<std::pair<double, double>, int> index_of;  // ordered by value: the same file for the same UVs
   std::vector<std::array<int, 3>> corners(corner_uvs.size());
   char line[96];
@@ -30,10 +31,11 @@ void append_obj_face(std::string& text, const softbody::Triangle& face, int firs
                      int first_uv) {
   char line[128];
   if (uv == nullptr) {
-    std::snprintf(line, sizeof line, "f %d %d %d\n", face[0] + first_vertex, face[1] + first_vertex, face[2] + first_vertex);
+    std::snprintf(line, sizeof line, "f %d %d %d\n", face[0] + first_vertex, face[1] + first_vertex,
+                  face[2] + first_vertex);
   } else {
-    std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", face[0] + first_vertex, (*uv)[0] + first_uv, face[1] + first_vertex,
-                  (*uv)[1] + first_uv, face[2] + first_vertex, (*uv)[2] + first_uv);
+    std::snprintf(line, sizeof line, "f %d/%d %d/%d %d/%d\n", face[0] + first_vertex, (*uv)[0] + first_uv,
+                  face[1] + first_vertex, (*uv)[1] + first_uv, face[2] + first_vertex, (*uv)[2] + first_uv);
   }
   text += line;
 }

@@ -80,8 +80,8 @@ void PointCacheExporter::on_frame(int index, double time_s, const sim::World& wo
       bodies_.push_back({shown_vertex_count(world, static_cast<int>(b)), {}, {}});
     }
   } else if (index != last_frame_ + 1) {
-    throw std::logic_error("a point cache needs frames one after another, got " + std::to_string(index) +
-                           " after " + std::to_string(last_frame_));
+    throw std::logic_error("a point cache needs frames one after another, got " + std::to_string(index) + " after " +
+                           std::to_string(last_frame_));
   }
   last_frame_ = index;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {

@@ -22,16 +22,16 @@ namespace output {
 
 // What the render run writes.
 struct RenderOutputs {
-  std::filesystem::path dir;                  // PNG frames and figure.png
-  std::string pattern = "frame_%04d.png";     // checked with check_frame_pattern
-  bool write_frames = true;                   // the PNG sequence
-  std::optional<std::filesystem::path> video; // an MP4 when set
-  int fps = 30;                               // the video's frame rate
-  int figure_frames = 8;                      // tiles in figure.png, evenly spaced; 0: no figure
-  std::vector<int> figure_frame_list;         // when not empty: exactly these frames (chosen from the motion,
-                                              // or render.figure_frames as a list), instead of figure_frames
-  int last_frame = 0;                         // index of the run's last frame (frame 0 is the initial state)
-  bool remove_stale_frames = true;            // remove frame files numbered after last_frame (a longer earlier run's)
+  std::filesystem::path dir;                   // PNG frames and figure.png
+  std::string pattern = "frame_%04d.png";      // checked with check_frame_pattern
+  bool write_frames = true;                    // the PNG sequence
+  std::optional<std::filesystem::path> video;  // an MP4 when set
+  int fps = 30;                                // the video's frame rate
+  int figure_frames = 8;                       // tiles in figure.png, evenly spaced; 0: no figure
+  std::vector<int> figure_frame_list;          // when not empty: exactly these frames (chosen from the motion,
+                                               // or render.figure_frames as a list), instead of figure_frames
+  int last_frame = 0;                          // index of the run's last frame (frame 0 is the initial state)
+  bool remove_stale_frames = true;             // remove frame files numbered after last_frame (a longer earlier run's)
   // A resumed run (--resume): frames 0 .. resumed_after are already on disk (the figure takes its tiles of
   // them from there). With resume, the video is made when the run completes, from the PNG files, rather
   // than piped while rendering (a killed ffmpeg cannot be continued): the same frames into the same pipe.
@@ -42,14 +42,14 @@ struct RenderOutputs {
 // Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.
 struct RenderTimings {
   int frames = 0;
-  double snapshot_s = 0.0;   // World → FrameMesh
-  double render_s = 0.0;     // normals, uploads, shadow and main passes, MSAA resolve, glFinish
-  double read_back_s = 0.0;  // glReadPixels and the flip into an Image
-  double video_s = 0.0;      // render thread: handing frames to the video writer thread (a copy, or waiting
-                             // for its queue), and waiting for ffmpeg to finish
-  double figure_s = 0.0;     // shrinking frames into the contact sheet and writing figure.png
-  double queue_wait_s = 0.0; // render thread blocked on a full PNG queue
-  PngWriterTimings png;      // on the writer thread: encode and store
+  double snapshot_s = 0.0;    // World → FrameMesh
+  double render_s = 0.0;      // normals, uploads, shadow and main passes, MSAA resolve, glFinish
+  double read_back_s = 0.0;   // glReadPixels and the flip into an Image
+  double video_s = 0.0;       // render thread: handing frames to the video writer thread (a copy, or waiting
+                              // for its queue), and waiting for ffmpeg to finish
+  double figure_s = 0.0;      // shrinking frames into the contact sheet and writing figure.png
+  double queue_wait_s = 0.0;  // render thread blocked on a full PNG queue
+  PngWriterTimings png;       // on the writer thread: encode and store
 };
 
 class RenderSink final : public frames::CapturingFrameSink {

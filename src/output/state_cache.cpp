@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 #include <xxhash.h>
+#include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
@@ -122,10 +122,12 @@ sim::State read_cached_state(const std::filesystem::path& dir, int frame, std::u
     throw refuse("made from another scene or by another build of softbody (scene hash " + hex(hash) +
                  ", this scene's " + hex(scene_hash) + "): simulate this scene with --cache");
   }
-  if (file_frame != frame) throw refuse("holds frame " + std::to_string(file_frame) + ", expected " + std::to_string(frame));
+  if (file_frame != frame)
+    throw refuse("holds frame " + std::to_string(file_frame) + ", expected " + std::to_string(frame));
   if (bodies != model.bodies.size() || vertices != model.vertex_count()) {
-    throw refuse("holds " + std::to_string(bodies) + " bodies of " + std::to_string(vertices) + " vertices, the scene " +
-                 std::to_string(model.bodies.size()) + " of " + std::to_string(model.vertex_count()));
+    throw refuse("holds " + std::to_string(bodies) + " bodies of " + std::to_string(vertices) +
+                 " vertices, the scene " + std::to_string(model.bodies.size()) + " of " +
+                 std::to_string(model.vertex_count()));
   }
   if (bytes.size() - kHeaderBytes != payload_size) {
     throw refuse("truncated: the state has " + std::to_string(bytes.size() - kHeaderBytes) + " of its " +
@@ -141,17 +143,19 @@ sim::State read_cached_state(const std::filesystem::path& dir, int frame, std::u
 }
 
 void write_manifest(const std::filesystem::path& dir, const CacheManifest& manifest) {
-  nlohmann::json document = {{"format", kStateCacheFormat},   {"scene_hash", hex(manifest.scene_hash)},
-                             {"every", manifest.every},       {"last_frame", manifest.last_frame},
-                             {"fps", manifest.fps},           {"complete", manifest.complete}};
+  nlohmann::json document = {{"format", kStateCacheFormat}, {"scene_hash", hex(manifest.scene_hash)},
+                             {"every", manifest.every},     {"last_frame", manifest.last_frame},
+                             {"fps", manifest.fps},         {"complete", manifest.complete}};
   write_file_atomically(dir / "cache.json", document.dump(2) + "\n");
 }
 
 CacheManifest read_manifest(const std::filesystem::path& dir, std::uint64_t scene_hash) {
   const std::filesystem::path path = dir / "cache.json";
   const std::string text = read_whole_file(path);
-  if (text.empty()) throw softbody::InputError(path.string() + ": missing (not a state cache folder: make one with "
-                                               "softbody simulate SCENE --cache DIR)");
+  if (text.empty())
+    throw softbody::InputError(path.string() +
+                               ": missing (not a state cache folder: make one with "
+                               "softbody simulate SCENE --cache DIR)");
   CacheManifest manifest;
   try {
     const nlohmann::json document = nlohmann::json::parse(text);
@@ -168,7 +172,8 @@ CacheManifest read_manifest(const std::filesystem::path& dir, std::uint64_t scen
   } catch (const std::exception& e) {
     throw softbody::InputError(path.string() + ": unreadable manifest (" + e.what() + ")");
   }
-  if (manifest.every < 1 || manifest.last_frame < 0) throw softbody::InputError(path.string() + ": unreadable manifest");
+  if (manifest.every < 1 || manifest.last_frame < 0)
+    throw softbody::InputError(path.string() + ": unreadable manifest");
   if (manifest.scene_hash != scene_hash) {
     throw softbody::InputError(path.string() +
                                ": a cache of another scene or of another build of softbody (scene hash " +

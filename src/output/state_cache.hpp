@@ -25,10 +25,10 @@ inline constexpr std::uint32_t kStateCacheFormat = 1;
 
 struct CacheManifest {
   std::uint64_t scene_hash = 0;
-  int every = 1;         // a state for every frame index divisible by this, and for the last frame
-  int last_frame = 0;    // the run's last frame (frame 0 is the initial state)
+  int every = 1;       // a state for every frame index divisible by this, and for the last frame
+  int last_frame = 0;  // the run's last frame (frame 0 is the initial state)
   int fps = 30;
-  bool complete = false; // the run reached its last frame
+  bool complete = false;  // the run reached its last frame
 };
 
 std::filesystem::path cached_state_path(const std::filesystem::path& dir, int frame);
@@ -37,8 +37,8 @@ std::filesystem::path cached_state_path(const std::filesystem::path& dir, int fr
 std::string cached_state_file(int frame, std::uint64_t scene_hash, const sim::Model& model, const sim::State& state);
 
 // Writes frame `frame`'s state atomically. Throws std::runtime_error naming the file on I/O failure.
-void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash,
-                        const sim::Model& model, const sim::State& state);
+void write_cached_state(const std::filesystem::path& dir, int frame, std::uint64_t scene_hash, const sim::Model& model,
+                        const sim::State& state);
 
 // True when the file for `frame` exists (whatever its content).
 bool has_cached_state(const std::filesystem::path& dir, int frame);

@@ -1,18 +1,18 @@
 // ffmpeg as a child process: posix_spawnp with its stdin on a pipe and its stderr in a log file.
 #include "output/video_pipe.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
-#include <spawn.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 #include "output/atomic_file.hpp"
@@ -33,9 +33,8 @@ std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, i
           // BT.709 matrix, and the stream tagged so: untagged HD video is read as BT.709 by most players,
           // and converting with ffmpeg's default BT.601 matrix would shift the colours.
           "-vf", "scale=out_color_matrix=bt709:out_range=tv", "-colorspace", "bt709", "-color_primaries", "bt709",
-          "-color_trc", "bt709", "-color_range", "tv",
-          "-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
-          "-f", "mp4", output.string()};
+          "-color_trc", "bt709", "-color_range", "tv", "-c:v", "libx264", "-preset", "veryfast", "-crf", "18",
+          "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4", output.string()};
 }
 
 std::string tail_of_file(const std::filesystem::path& path) {
@@ -59,7 +58,8 @@ VideoPipe::VideoPipe(std::filesystem::path path, int width_px, int height_px, in
   std::signal(SIGPIPE, SIG_IGN);
 
   int ends[2];
-  if (::pipe2(ends, O_CLOEXEC) != 0) throw std::runtime_error("cannot create a pipe for ffmpeg: " + std::string(std::strerror(errno)));
+  if (::pipe2(ends, O_CLOEXEC) != 0)
+    throw std::runtime_error("cannot create a pipe for ffmpeg: " + std::string(std::strerror(errno)));
   ::fcntl(ends[1], F_SETPIPE_SZ, kPipeBytes);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);

@@ -2,8 +2,8 @@
 // ffmpeg writes a temporary file that is renamed to the requested name only when it succeeded.
 #pragma once
 
-#include <filesystem>
 #include <sys/types.h>
+#include <filesystem>
 
 #include "core/image.hpp"
 
@@ -40,7 +40,7 @@ class VideoPipe {
   std::filesystem::path log_;  // ffmpeg's stderr, quoted in errors
   int width_;
   int height_;
-  int input_fd_ = -1;          // the write end of ffmpeg's stdin
+  int input_fd_ = -1;  // the write end of ffmpeg's stdin
   pid_t ffmpeg_ = -1;
   bool finished_ = false;
 };

@@ -19,8 +19,7 @@ CameraMatrices camera_matrices(const CameraSettings& camera, float aspect) {
 glm::vec2 project_to_pixel(const CameraMatrices& matrices, const glm::vec3& world, int width_px, int height_px) {
   const glm::vec4 clip = matrices.projection * matrices.view * glm::vec4(world, 1.0f);
   const glm::vec2 ndc = glm::vec2(clip) / clip.w;  // −1..1, y up
-  return {(ndc.x * 0.5f + 0.5f) * static_cast<float>(width_px),
-          (0.5f - ndc.y * 0.5f) * static_cast<float>(height_px)};
+  return {(ndc.x * 0.5f + 0.5f) * static_cast<float>(width_px), (0.5f - ndc.y * 0.5f) * static_cast<float>(height_px)};
 }
 
 }  // namespace render

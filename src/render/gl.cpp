@@ -11,11 +11,12 @@ namespace render {
 #undef SOFTBODY_GL_FUNCTION
 
 void load_gl_functions(GlProcLookup lookup, const std::string& backend) {
-#define SOFTBODY_GL_FUNCTION(type, name)                                                                   \
-  name = reinterpret_cast<type>(lookup(#name));                                                            \
-  if (name == nullptr) {                                                                                   \
-    throw std::runtime_error(backend + " does not provide the OpenGL function " #name " (needs OpenGL 4.5 " \
-                                       "core, as Mesa's llvmpipe gives)");                                 \
+#define SOFTBODY_GL_FUNCTION(type, name)                                              \
+  name = reinterpret_cast<type>(lookup(#name));                                       \
+  if (name == nullptr) {                                                              \
+    throw std::runtime_error(backend + " does not provide the OpenGL function " #name \
+                                       " (needs OpenGL 4.5 "                          \
+                                       "core, as Mesa's llvmpipe gives)");            \
   }
 #include "render/gl_functions.inc"
 #undef SOFTBODY_GL_FUNCTION

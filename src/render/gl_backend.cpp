@@ -43,8 +43,9 @@ GlBackendRequest choose_gl_backend(GlBackend scene_backend, const char* environm
   if (environment_value == nullptr || *environment_value == '\0') return {scene_backend, "render.backend"};
   const std::optional<GlBackend> backend = parse_gl_backend(environment_value);
   if (!backend) {
-    throw softbody::InputError(std::string("SOFTBODY_GL: expected one of \"auto\" \"egl\" \"osmesa\" (or unset), got \"") +
-                               environment_value + "\"");
+    throw softbody::InputError(
+        std::string("SOFTBODY_GL: expected one of \"auto\" \"egl\" \"osmesa\" (or unset), got \"") + environment_value +
+        "\"");
   }
   return {*backend, "SOFTBODY_GL"};
 }

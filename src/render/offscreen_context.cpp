@@ -15,7 +15,8 @@ namespace {
 
 std::string built_names() {
   std::string names;
-  for (const GlBackend backend : built_gl_backends()) names += (names.empty() ? "" : ", ") + std::string(gl_backend_name(backend));
+  for (const GlBackend backend : built_gl_backends())
+    names += (names.empty() ? "" : ", ") + std::string(gl_backend_name(backend));
   return names;
 }
 
@@ -27,8 +28,8 @@ std::unique_ptr<GlContext> create_context_of(GlBackend backend) {
   // Any core profile of 3.3 or newer: Mesa answers with its highest, 4.5.
   if (backend == GlBackend::OsMesa) return std::make_unique<OsMesaContext>(3, 3);
 #endif
-  throw std::runtime_error("this build has no " + std::string(gl_backend_name(backend)) +
-                           " backend (it has: " + built_names() + "; see the CMake options SOFTBODY_EGL, SOFTBODY_OSMESA)");
+  throw std::runtime_error("this build has no " + std::string(gl_backend_name(backend)) + " backend (it has: " +
+                           built_names() + "; see the CMake options SOFTBODY_EGL, SOFTBODY_OSMESA)");
 }
 
 }  // namespace

@@ -11,12 +11,18 @@
 namespace render {
 
 OsMesaContext::OsMesaContext(int major, int minor) {
-  const int attributes[] = {OSMESA_FORMAT,        OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,    0,  // depth lives in the renderer's framebuffer objects
-                            OSMESA_STENCIL_BITS,  0,
-                            OSMESA_PROFILE,       OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, major,
-                            OSMESA_CONTEXT_MINOR_VERSION, minor,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,  // depth lives in the renderer's framebuffer objects
+                            OSMESA_STENCIL_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            major,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            minor,
                             0};
   context_ = OSMesaCreateContextAttribs(attributes, nullptr);
   if (context_ == nullptr) {

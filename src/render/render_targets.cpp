@@ -13,11 +13,13 @@
 namespace render {
 namespace {
 
-void attach_storage(GLuint framebuffer, GLuint renderbuffer, GLenum attachment, GLenum format, int samples,
-                    int width, int height) {
+void attach_storage(GLuint framebuffer, GLuint renderbuffer, GLenum attachment, GLenum format, int samples, int width,
+                    int height) {
   glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
-  if (samples > 1) glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
-  else glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+  if (samples > 1)
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+  else
+    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer);
 }
@@ -49,8 +51,8 @@ RenderTargets::RenderTargets(int width_px, int height_px, int samples)
   if (samples_ > 1) {
     attach_storage(multisampled_.get(), multisampled_color_.get(), GL_COLOR_ATTACHMENT0, GL_SRGB8_ALPHA8, samples_,
                    width_, height_);
-    attach_storage(multisampled_.get(), multisampled_depth_.get(), GL_DEPTH_ATTACHMENT, GL_DEPTH_COMPONENT24,
-                   samples_, width_, height_);
+    attach_storage(multisampled_.get(), multisampled_depth_.get(), GL_DEPTH_ATTACHMENT, GL_DEPTH_COMPONENT24, samples_,
+                   width_, height_);
     require_complete("multisample");
   }
   rgba_.resize(static_cast<std::size_t>(width_) * height_ * 4);

@@ -12,10 +12,10 @@
 namespace render {
 namespace {
 
-constexpr int kShadowMapSize_px = 1024;   // fitted around the bodies each frame: ~2 mm texels for a 1 m ball
+constexpr int kShadowMapSize_px = 1024;  // fitted around the bodies each frame: ~2 mm texels for a 1 m ball
 constexpr int kShadowTextureUnit = 0;
 constexpr float kShadowNormalOffset_texels = 1.5f;  // covers the PCF taps one texel either side
-constexpr float kSquareSize_m = 1.0f;     // checker squares
+constexpr float kSquareSize_m = 1.0f;               // checker squares
 const glm::vec3 kLightSquare{0.78f, 0.78f, 0.76f};  // linear RGB
 const glm::vec3 kDarkSquare{0.30f, 0.30f, 0.32f};
 const glm::vec3 kDefaultBodyColor{0.80f, 0.12f, 0.07f};  // the scene default (scene::Body::color)
@@ -24,7 +24,7 @@ const glm::vec3 kDefaultBodyColor{0.80f, 0.12f, 0.07f};  // the scene default (s
 // which hides the floor's edge and the aliasing near the horizon; the square reaches a bit beyond.
 constexpr float kFadeStart = 3.0f;
 constexpr float kFadeEnd = 7.0f;
-constexpr float kMaxFadeEnd_m = 400.0f;   // within the camera's far plane (500 m)
+constexpr float kMaxFadeEnd_m = 400.0f;  // within the camera's far plane (500 m)
 
 // Makes `context` current before any member touches GL.
 GlContext& made_current(GlContext& context) {

@@ -16,7 +16,7 @@ struct CameraSettings {
   glm::vec3 position{0.0f, 2.5f, 9.0f};  // m
   glm::vec3 target{0.0f, 1.2f, 0.0f};    // m
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_deg = 45.0f;                 // vertical field of view
+  float fov_deg = 45.0f;  // vertical field of view
 };
 
 struct LightSettings {
@@ -28,14 +28,14 @@ struct LightSettings {
 struct RenderSettings {
   int width_px = 1280;
   int height_px = 720;
-  int msaa_samples = 4;                            // 1 renders without multisampling
+  int msaa_samples = 4;  // 1 renders without multisampling
   bool shadows = true;
-  glm::vec3 background{0.62f, 0.72f, 0.85f};       // linear RGB
+  glm::vec3 background{0.62f, 0.72f, 0.85f};  // linear RGB
   CameraSettings camera;
   LightSettings light;
-  std::optional<float> floor_height_m;             // no floor drawn when empty
-  std::vector<glm::vec3> body_colors;              // linear RGB, one per body, in the scene's order
-  std::vector<int> body_patterns;                  // scene::Pattern as an int, one per body (0: plain)
+  std::optional<float> floor_height_m;  // no floor drawn when empty
+  std::vector<glm::vec3> body_colors;   // linear RGB, one per body, in the scene's order
+  std::vector<int> body_patterns;       // scene::Pattern as an int, one per body (0: plain)
 };
 
 // The scene's render, camera, light, floor and body colour keys, as the renderer takes them.

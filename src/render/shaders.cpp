@@ -19,11 +19,15 @@ std::string join_names(std::initializer_list<std::string_view> files) {
 
 std::string info_log(GLuint object, bool is_program) {
   GLint length = 0;
-  if (is_program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  if (is_program)
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
   std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-  if (is_program) glGetProgramInfoLog(object, length, nullptr, log.data());
-  else glGetShaderInfoLog(object, length, nullptr, log.data());
+  if (is_program)
+    glGetProgramInfoLog(object, length, nullptr, log.data());
+  else
+    glGetShaderInfoLog(object, length, nullptr, log.data());
   return log.c_str();
 }
 
@@ -87,9 +91,7 @@ ShaderProgram::~ShaderProgram() { glDeleteProgram(program_); }
 
 void ShaderProgram::use() const { glUseProgram(program_); }
 
-void ShaderProgram::set(const char* name, int value) const {
-  glUniform1i(glGetUniformLocation(program_, name), value);
-}
+void ShaderProgram::set(const char* name, int value) const { glUniform1i(glGetUniformLocation(program_, name), value); }
 void ShaderProgram::set(const char* name, float value) const {
   glUniform1f(glGetUniformLocation(program_, name), value);
 }

@@ -46,17 +46,13 @@ json parse_json_limited(const std::string& text, const std::string& what, bool c
         if (static_cast<int>(tracker.levels.size()) >= kMaxJsonDepth) throw TooDeep{};
         tracker.levels.push_back({event == json::parse_event_t::array_start, 0, ""});
         break;
-      case json::parse_event_t::key:
-        tracker.levels.back().key = parsed.get<std::string>();
-        break;
+      case json::parse_event_t::key: tracker.levels.back().key = parsed.get<std::string>(); break;
       case json::parse_event_t::object_end:
       case json::parse_event_t::array_end:
         tracker.levels.pop_back();
         tracker.element_done();
         break;
-      case json::parse_event_t::value:
-        tracker.element_done();
-        break;
+      case json::parse_event_t::value: tracker.element_done(); break;
     }
     return true;
   };
@@ -85,9 +81,11 @@ std::string describe_json(const json& value) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
     if (!node->is_structured()) continue;
-    if (depth >= kPrintDepth) return value.type_name() + std::string(" nested deeper than ") + std::to_string(kPrintDepth) + " levels";
+    if (depth >= kPrintDepth)
+      return value.type_name() + std::string(" nested deeper than ") + std::to_string(kPrintDepth) + " levels";
     for (const json& child : *node) stack.emplace_back(&child, depth + 1);
-    if (stack.size() > 4096) return value.type_name() + std::string(" of ") + std::to_string(value.size()) + " elements";
+    if (stack.size() > 4096)
+      return value.type_name() + std::string(" of ") + std::to_string(value.size()) + " elements";
   }
   // Invalid UTF-8 (a --set value is taken as bytes) is replaced, not thrown about.
   std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);

@@ -53,8 +53,7 @@ void apply_override(json& document, const std::string& assignment) {
       // At most 9 digits before converting: no index that large can exist (and stoul could overflow).
       const std::size_t index = part.size() > 9 ? node->size() : std::stoul(part);
       if (index >= node->size()) {
-        fail(assignment, walked + ": index out of range (the array has " +
-                             std::to_string(node->size()) + " elements)");
+        fail(assignment, walked + ": index out of range (the array has " + std::to_string(node->size()) + " elements)");
       }
       node = &(*node)[index];
     } else {

@@ -28,19 +28,19 @@ struct Body {
   Vec3 position_m = Vec3::Zero();    // where the mesh's origin is placed
   double scale = 1.0;                // uniform scale applied to the mesh before placing it
   Vec3 velocity_m_per_s = Vec3::Zero();
-  double mass_kg = 1.0;              // whole body, lumped to vertices by area (a third of each face)
-  double stiffness_N_per_m = 1000.0; // each edge spring (Hooke)
-  double damping_N_s_per_m = 1.0;    // each spring's damper, along the spring
-  double pressure_J = 50.0;          // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
-  double bending_N_per_m = 0.0;      // "bending": k_b of the bending links (sim/bending.hpp) [N/m]; 0: none
-  bool split = false;                // "split": each separate closed part of the mesh becomes its own body
-  mesh::RepairOptions repair;        // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
+  double mass_kg = 1.0;               // whole body, lumped to vertices by area (a third of each face)
+  double stiffness_N_per_m = 1000.0;  // each edge spring (Hooke)
+  double damping_N_s_per_m = 1.0;     // each spring's damper, along the spring
+  double pressure_J = 50.0;           // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
+  double bending_N_per_m = 0.0;       // "bending": k_b of the bending links (sim/bending.hpp) [N/m]; 0: none
+  bool split = false;                 // "split": each separate closed part of the mesh becomes its own body
+  mesh::RepairOptions repair;         // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
   // "resolution": N simulates the body on an isotropic remesh of its mesh with about N vertices (the proxy),
   // or {"edge_length": L} on one with edges of about L [m, placed]; the mesh itself follows the proxy for
   // render and export. Neither (0): the mesh is simulated as it is.
   int resolution_vertices = 0;
   double resolution_edge_length_m = 0.0;
-  Pattern pattern = Pattern::None;   // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
+  Pattern pattern = Pattern::None;  // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...},
                            // "bending": {"ratio": r}
                            // instead of numbers, resolved against the mesh by sim/intent.hpp
@@ -48,13 +48,13 @@ struct Body {
 };
 
 struct RenderSettings {
-  int width_px = 1280;   // even (video encoders need it)
-  int height_px = 720;   // even
-  int msaa = 4;          // samples per pixel: 1 (off), 2 or 4
-  bool shadows = true;   // the body casts a shadow-mapped shadow on the floor
+  int width_px = 1280;                                      // even (video encoders need it)
+  int height_px = 720;                                      // even
+  int msaa = 4;                                             // samples per pixel: 1 (off), 2 or 4
+  bool shadows = true;                                      // the body casts a shadow-mapped shadow on the floor
   std::array<float, 3> background = {0.62f, 0.72f, 0.85f};  // linear RGB
-  int figure_frames = 8; // frames in the contact sheet figure.png, chosen from the motion (0: no figure)
-  std::vector<int> figure_frame_list;  // "figure_frames": [0, 19, 24, ...] instead: exactly these frames
+  int figure_frames = 8;                // frames in the contact sheet figure.png, chosen from the motion (0: no figure)
+  std::vector<int> figure_frame_list;   // "figure_frames": [0, 19, 24, ...] instead: exactly these frames
   GlBackend backend = GlBackend::Auto;  // "auto" | "egl" | "osmesa"
 };
 
@@ -73,25 +73,25 @@ struct Light {
 };
 
 struct Output {
-  std::filesystem::path dir;          // default: out/<scene name>
+  std::filesystem::path dir;  // default: out/<scene name>
   std::string pattern = "frame_%04d.png";
 };
 
 struct Scene {
-  std::filesystem::path source;        // the scene file ("" when built in code)
+  std::filesystem::path source;  // the scene file ("" when built in code)
   // The validated document with --set applied, less the keys that do not change the simulation (name,
   // render, camera, light, output), as compact JSON: what a state cache's scene hash covers (with the
   // mesh files' bytes, setup/scene_hash.hpp).
   std::string simulation_json;
   std::string name = "scene";
-  double duration_s = 3.0;             // simulated seconds
-  int fps = 30;                        // frames per simulated second
+  double duration_s = 3.0;  // simulated seconds
+  int fps = 30;             // frames per simulated second
   sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
-  std::optional<sim::Floor> floor;     // no floor when absent
-  mesh::MeshLimits limits;             // "limits": the most a mesh file may hold (raisable)
+  std::optional<sim::Floor> floor;  // no floor when absent
+  mesh::MeshLimits limits;          // "limits": the most a mesh file may hold (raisable)
   std::vector<Body> bodies;
-  sim::BodyContact collisions;         // between bodies, when there are several
+  sim::BodyContact collisions;  // between bodies, when there are several
   RenderSettings render;
   Camera camera;
   Light light;

@@ -124,7 +124,8 @@ class ObjectReader {
   std::array<float, 3> color(const std::string& key, const std::array<float, 3>& fallback) {
     if (!has(key)) return fallback;
     const json& value = at(key);
-    if (!value.is_array() || value.size() != 3) fail(child(key), "expected an RGB array of 3 numbers in [0, 1]", &value);
+    if (!value.is_array() || value.size() != 3)
+      fail(child(key), "expected an RGB array of 3 numbers in [0, 1]", &value);
     std::array<float, 3> rgb{};
     for (int i = 0; i < 3; ++i) {
       rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), kUnitInterval));
@@ -162,7 +163,8 @@ sim::Solver read_solver(ObjectReader& top) {
   }
   solver.integrator = r.choice<sim::IntegratorKind>("integrator", solver.integrator, integrators);
   if (r.has("dt") && r.at("dt").is_string()) {
-    if (r.at("dt").get<std::string>() != "auto") r.fail(r.child("dt"), "expected a number > 0 or \"auto\"", &r.at("dt"));
+    if (r.at("dt").get<std::string>() != "auto")
+      r.fail(r.child("dt"), "expected a number > 0 or \"auto\"", &r.at("dt"));
     solver.dt_auto = true;
   } else {
     solver.dt_s = r.number("dt", solver.dt_s, kPositive);
@@ -196,9 +198,10 @@ std::optional<sim::Floor> read_floor(ObjectReader& top) {
   ObjectReader r(top.at("floor"), "floor", top.file());
   sim::Floor floor;
   floor.height_m = r.number("height", floor.height_m, kWorldMagnitude);
-  floor.contact = r.choice<sim::FloorContact>(
-      "contact", floor.contact,
-      {{"paper", sim::FloorContact::Paper}, {"friction", sim::FloorContact::Friction}, {"smooth", sim::FloorContact::Smooth}});
+  floor.contact = r.choice<sim::FloorContact>("contact", floor.contact,
+                                              {{"paper", sim::FloorContact::Paper},
+                                               {"friction", sim::FloorContact::Friction},
+                                               {"smooth", sim::FloorContact::Smooth}});
   floor.material.restitution = r.number("restitution", floor.material.restitution, kUnitInterval);
   floor.material.friction = r.number("friction", floor.material.friction, kNonNegative);
   read_smooth_contact(r, floor.smooth);
@@ -216,9 +219,10 @@ std::string read_mesh_spec(ObjectReader& r, Body& body) {
   }
   const fs::path file = r.file().parent_path() / spec;
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
-    r.fail(r.child("mesh"), "mesh file " + file.string() + " " + words +
-                                " (expected a mesh file path relative to the scene, "
-                                "or a generator: icosphere:L, cube:N)",
+    r.fail(r.child("mesh"),
+           "mesh file " + file.string() + " " + words +
+               " (expected a mesh file path relative to the scene, "
+               "or a generator: icosphere:L, cube:N)",
            nullptr);
   }
   body.mesh_file = file;
@@ -237,7 +241,8 @@ void read_stiffness(ObjectReader& body_reader, Body& body) {
   intent.thickness_m = r.number("thickness", intent.thickness_m, kPositive);
   intent.frequency_Hz = r.number("frequency", 0.0, kPositive);
   if ((intent.youngs_Pa > 0.0) == (intent.frequency_Hz > 0.0)) {
-    r.fail(body_reader.child("stiffness"), "expected exactly one of \"youngs\" (Pa, with \"thickness\" in m) or \"frequency\" (Hz)", nullptr);
+    r.fail(body_reader.child("stiffness"),
+           "expected exactly one of \"youngs\" (Pa, with \"thickness\" in m) or \"frequency\" (Hz)", nullptr);
   }
   r.reject_unknown();
   body.intent.stiffness = intent;
@@ -263,7 +268,8 @@ void read_pressure(ObjectReader& body_reader, Body& body) {
   }
   ObjectReader r(body_reader.at("pressure"), body_reader.child("pressure"), body_reader.file());
   sim::PressureIntent intent;
-  intent.inflation = r.number("inflation", intent.inflation, Range{[](double x) { return x >= 0.0 && x < 1.0; }, " in [0, 1)"});
+  intent.inflation =
+      r.number("inflation", intent.inflation, Range{[](double x) { return x >= 0.0 && x < 1.0; }, " in [0, 1)"});
   intent.start_at_equilibrium = r.choice<bool>("start", true, {{"equilibrium", true}, {"rest", false}});
   r.reject_unknown();
   body.intent.pressure = intent;
@@ -317,7 +323,8 @@ void read_bending(ObjectReader& body_reader, Body& body) {
     return;
   }
   ObjectReader r(body_reader.at("bending"), body_reader.child("bending"), body_reader.file());
-  if (!r.has("ratio")) r.fail(r.child("ratio"), "expected a ratio >= 0 of the bending links' stiffness to the edges'", nullptr);
+  if (!r.has("ratio"))
+    r.fail(r.child("ratio"), "expected a ratio >= 0 of the bending links' stiffness to the edges'", nullptr);
   body.intent.bending_ratio = r.number("ratio", 0.0, kNonNegative);
   r.reject_unknown();
 }
@@ -338,8 +345,8 @@ Body read_body(const json& node, const std::string& path, const fs::path& file) 
   read_repair(r, body);
   read_resolution(r, body);
   body.color = r.color("color", body.color);
-  body.pattern = r.choice<Pattern>("pattern", body.pattern,
-                                   {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
+  body.pattern = r.choice<Pattern>(
+      "pattern", body.pattern, {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
   r.reject_unknown();
   return body;
 }
@@ -360,7 +367,8 @@ sim::BodyContact read_collisions(ObjectReader& top) {
   if (!top.has("collisions")) return collisions;
   ObjectReader r(top.at("collisions"), "collisions", top.file());
   collisions.contact = r.choice<sim::BodyContactModel>(
-      "contact", collisions.contact, {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
+      "contact", collisions.contact,
+      {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
   collisions.material.restitution = r.number("restitution", collisions.material.restitution, kUnitInterval);
   collisions.material.friction = r.number("friction", collisions.material.friction, kNonNegative);
   collisions.push_speed_m_per_s = r.number("push_speed", collisions.push_speed_m_per_s, kPositive);
@@ -409,8 +417,8 @@ RenderSettings read_render(ObjectReader& top) {
   } else {
     render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
   }
-  render.backend = r.choice<GlBackend>("backend", render.backend,
-                                       {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
+  render.backend = r.choice<GlBackend>(
+      "backend", render.backend, {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
   r.reject_unknown();
   return render;
 }
@@ -423,8 +431,10 @@ Camera read_camera(ObjectReader& top) {
   camera.position_m = r.vec3("position", camera.position_m);
   camera.target_m = r.vec3("target", camera.target_m);
   camera.up = r.vec3("up", camera.up);
-  camera.fov_deg = r.number("fov", camera.fov_deg, Range{[](double x) { return x > 0 && x < 180; }, " in (0, 180) degrees"});
-  if ((camera.target_m - camera.position_m).norm() == 0.0) r.fail("camera.target", "expected a point other than camera.position", nullptr);
+  camera.fov_deg =
+      r.number("fov", camera.fov_deg, Range{[](double x) { return x > 0 && x < 180; }, " in (0, 180) degrees"});
+  if ((camera.target_m - camera.position_m).norm() == 0.0)
+    r.fail("camera.target", "expected a point other than camera.position", nullptr);
   if (camera.up.norm() == 0.0 || camera.up.cross(camera.target_m - camera.position_m).norm() == 0.0) {
     r.fail("camera.up", "expected a non-zero vector not parallel to the view direction", nullptr);
   }

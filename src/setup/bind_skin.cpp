@@ -30,7 +30,8 @@ std::vector<int> matching_proxy_parts(const std::vector<int>& detailed_part, int
            [static_cast<std::size_t>(proxy_parts.part_of_triangle[static_cast<std::size_t>(nearest[i])])];
   }
   std::vector<int> match;
-  for (const std::vector<int>& v : votes) match.push_back(static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin()));
+  for (const std::vector<int>& v : votes)
+    match.push_back(static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin()));
   return match;
 }
 
@@ -38,9 +39,9 @@ std::vector<int> matching_proxy_parts(const std::vector<int>& detailed_part, int
 // detailed vertex of one part can lie nearest to another part's surface; anchored there, it would be torn
 // off with that part. Each detailed part is anchored on the proxy part that most of its vertices are nearest
 // to, and the vertices nearest to another part are anchored on the nearest triangle of their own.
-void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x, const std::vector<softbody::Triangle>& detailed_faces,
-                      const std::vector<softbody::Vec3>& proxy_x, const std::vector<softbody::Triangle>& proxy_faces,
-                      std::vector<int>& nearest) {
+void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x,
+                      const std::vector<softbody::Triangle>& detailed_faces, const std::vector<softbody::Vec3>& proxy_x,
+                      const std::vector<softbody::Triangle>& proxy_faces, std::vector<int>& nearest) {
   const mesh::MeshParts proxy_parts = mesh::edge_connected_parts(mesh::TriMesh{proxy_x, proxy_faces, {}});
   if (proxy_parts.count < 2) return;
   const mesh::MeshParts detailed_parts = mesh::edge_connected_parts(mesh::TriMesh{detailed_x, detailed_faces, {}});
@@ -71,8 +72,9 @@ void keep_parts_apart(const std::vector<softbody::Vec3>& detailed_x, const std::
 
 }  // namespace
 
-sim::Skin bind_skin(const std::vector<softbody::Vec3>& detailed_x, const std::vector<softbody::Triangle>& detailed_faces,
-                    const std::vector<softbody::Vec3>& proxy_x, const std::vector<softbody::Triangle>& proxy_faces, int body) {
+sim::Skin bind_skin(const std::vector<softbody::Vec3>& detailed_x,
+                    const std::vector<softbody::Triangle>& detailed_faces, const std::vector<softbody::Vec3>& proxy_x,
+                    const std::vector<softbody::Triangle>& proxy_faces, int body) {
   std::vector<int> nearest = geometry::nearest_triangles(mesh::TriMesh{proxy_x, proxy_faces, {}}, detailed_x);
   keep_parts_apart(detailed_x, detailed_faces, proxy_x, proxy_faces, nearest);
   std::vector<softbody::Vec3> normals;

@@ -12,7 +12,8 @@ namespace setup {
 // `body` (vertices `proxy_x`, triangles `proxy_faces`, placed): each detailed vertex anchored on its nearest
 // proxy triangle (geometry::nearest_triangles, an AABB tree). On the proxy at `proxy_x` the skin gives back
 // `detailed_x` to round-off.
-sim::Skin bind_skin(const std::vector<softbody::Vec3>& detailed_x, const std::vector<softbody::Triangle>& detailed_faces,
-                    const std::vector<softbody::Vec3>& proxy_x, const std::vector<softbody::Triangle>& proxy_faces, int body);
+sim::Skin bind_skin(const std::vector<softbody::Vec3>& detailed_x,
+                    const std::vector<softbody::Triangle>& detailed_faces, const std::vector<softbody::Vec3>& proxy_x,
+                    const std::vector<softbody::Triangle>& proxy_faces, int body);
 
 }  // namespace setup

@@ -32,13 +32,17 @@ void check_placed(const std::vector<softbody::Vec3>& x, const std::string& key_p
   const double size = (hi - lo).norm();
   char text[320];
   if (!(reach <= kMaxReach_m)) {
-    std::snprintf(text, sizeof text, "%s: the placed mesh reaches %.3g m from the origin (position + scale x mesh "
-                  "coordinates), beyond the limit of %.0e m: expected a smaller scale or position", key_path.c_str(), reach, kMaxReach_m);
+    std::snprintf(text, sizeof text,
+                  "%s: the placed mesh reaches %.3g m from the origin (position + scale x mesh "
+                  "coordinates), beyond the limit of %.0e m: expected a smaller scale or position",
+                  key_path.c_str(), reach, kMaxReach_m);
     throw softbody::InputError(text);
   }
   if (!(size >= kMinSize_m)) {
-    std::snprintf(text, sizeof text, "%s: the placed mesh is %.3g m across (scale x the mesh's size), below the limit "
-                  "of %.0e m: expected a larger scale", key_path.c_str(), size, kMinSize_m);
+    std::snprintf(text, sizeof text,
+                  "%s: the placed mesh is %.3g m across (scale x the mesh's size), below the limit "
+                  "of %.0e m: expected a larger scale",
+                  key_path.c_str(), size, kMinSize_m);
     throw softbody::InputError(text);
   }
 }
@@ -47,7 +51,9 @@ double surface_area(const mesh::TriMesh& m) {
   double area = 0.0;  // Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²]
   for (const softbody::Triangle& t : m.triangles) {
     const auto& a = m.vertices[static_cast<std::size_t>(t[0])];
-    area += 0.5 * (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
+    area +=
+        0.5 *
+        (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
   }
   return area;
 }
@@ -128,11 +134,13 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       phase_done("resolving the parameters of " + key);
       if (proxied) {
         const int index = static_cast<int>(model.bodies.size());
-        model.skins.push_back(bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));
+        model.skins.push_back(
+            bind_skin(place_mesh(part.mesh, spec), part.mesh.triangles, x0, simulated.triangles, index));
         model.skins.back().corner_uvs = part.mesh.corner_uvs;
         phase_done("binding the mesh of " + key + " to its proxy");
       }
-      if (!proxied && part.mesh.has_uvs()) model.surface_uvs.push_back({static_cast<int>(model.bodies.size()), part.mesh.corner_uvs});
+      if (!proxied && part.mesh.has_uvs())
+        model.surface_uvs.push_back({static_cast<int>(model.bodies.size()), part.mesh.corner_uvs});
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));

@@ -18,7 +18,9 @@ double area_of(const mesh::TriMesh& m) {
   double area = 0.0;  // Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²]
   for (const softbody::Triangle& t : m.triangles) {
     const auto& a = m.vertices[static_cast<std::size_t>(t[0])];
-    area += 0.5 * (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
+    area +=
+        0.5 *
+        (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
   }
   return area;
 }
@@ -30,9 +32,10 @@ mesh::TriMesh remesh_for(const mesh::TriMesh& detailed, const scene::Body& spec,
   const double expected_vertices = 2.0 * area_of(detailed) / (std::sqrt(3.0) * edge * edge);
   if (!(expected_vertices <= kMostProxyVertices)) {
     char text[256];
-    std::snprintf(text, sizeof text, "%s.edge_length: expected an edge length giving at most %.0f vertices, got %g m "
-                  "(about %.3g vertices on this surface)", key.c_str(), kMostProxyVertices, spec.resolution_edge_length_m,
-                  expected_vertices);
+    std::snprintf(text, sizeof text,
+                  "%s.edge_length: expected an edge length giving at most %.0f vertices, got %g m "
+                  "(about %.3g vertices on this surface)",
+                  key.c_str(), kMostProxyVertices, spec.resolution_edge_length_m, expected_vertices);
     throw softbody::InputError(text);
   }
   return geometry::remesh_to_edge_length(detailed, edge);
@@ -63,9 +66,11 @@ mesh::TriMesh simulation_proxy(const mesh::TriMesh& detailed, const scene::Body&
   }
   const double volume_change = mesh::signed_volume(proxy) / mesh::signed_volume(detailed) - 1.0;
   char text[320];
-  std::snprintf(text, sizeof text, "%s: simulated on an isotropic remesh of %zu vertices and %zu triangles (volume %+.2f %%); "
-                "the mesh's %zu vertices follow it for render and export", key.c_str(), proxy.vertices.size(),
-                proxy.triangles.size(), 100.0 * volume_change, detailed.vertices.size());
+  std::snprintf(text, sizeof text,
+                "%s: simulated on an isotropic remesh of %zu vertices and %zu triangles (volume %+.2f %%); "
+                "the mesh's %zu vertices follow it for render and export",
+                key.c_str(), proxy.vertices.size(), proxy.triangles.size(), 100.0 * volume_change,
+                detailed.vertices.size());
   notes.push_back(text);
   return proxy;
 }

@@ -7,7 +7,8 @@
 
 namespace sim {
 
-std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass) {
+std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::vector<Triangle>& faces,
+                                        double total_mass) {
   std::vector<double> area_share(x.size(), 0.0);
   double total_area = 0.0;
   for (const Triangle& f : faces) {

@@ -24,26 +24,26 @@ struct Topology {
 
 // The shape the springs and the gas rest at (the initial, placed shape unless intent changed it).
 struct RestShape {
-  std::vector<double> edge_length_m;  // per edge: L0 of its spring
-  double volume_m3 = 0.0;             // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
-  double mean_edge_m = 0.0;           // the mean of edge_length_m: sets body contact's search distance
+  std::vector<double> edge_length_m;     // per edge: L0 of its spring
+  double volume_m3 = 0.0;                // V0, the gas energy's reference: E_gas = -nRT ln(V / V0)
+  double mean_edge_m = 0.0;              // the mean of edge_length_m: sets body contact's search distance
   std::vector<double> bending_length_m;  // per bending link: its length in the placed mesh [m]
   std::vector<Vec3> position_m;          // the placed mesh [m]: where render paints the body's pattern
 };
 
 // Lumped vertex masses: each face gives a third of its area share of the body's mass to each corner.
 struct VertexMasses {
-  std::vector<double> kg;        // per vertex
-  std::vector<double> inverse;   // per vertex, 1 / kg [1/kg]
+  std::vector<double> kg;       // per vertex
+  std::vector<double> inverse;  // per vertex, 1 / kg [1/kg]
   double total_kg = 0.0;
 };
 
 // Per-body constants of the force model.
 struct Params {
-  double stiffness_N_per_m = 0.0;   // k: Hooke spring, F = -k (|d| - L0) d̂
-  double damping_N_s_per_m = 0.0;   // c: damper along the spring, F = -c ((v_i - v_j)·d̂) d̂
-  double pressure_J = 0.0;          // nRT: ideal gas, P = nRT / V  [Pa = J/m³]
-  double bending_N_per_m = 0.0;     // k_b: Hooke spring along each bending link (0: no links, no cost)
+  double stiffness_N_per_m = 0.0;          // k: Hooke spring, F = -k (|d| - L0) d̂
+  double damping_N_s_per_m = 0.0;          // c: damper along the spring, F = -c ((v_i - v_j)·d̂) d̂
+  double pressure_J = 0.0;                 // nRT: ideal gas, P = nRT / V  [Pa = J/m³]
+  double bending_N_per_m = 0.0;            // k_b: Hooke spring along each bending link (0: no links, no cost)
   double bending_damping_N_s_per_m = 0.0;  // c_b = c k_b / k: the links' dampers, the edges' damping time c/k
 };
 
@@ -57,7 +57,8 @@ struct Body {
 };
 
 // Lumped vertex masses: each triangle gives a third of its area share of `total_mass` to each corner.
-std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass);
+std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::vector<Triangle>& faces,
+                                        double total_mass);
 
 // The body of the placed mesh `x` (world coordinates) and its triangles: unique edges as springs resting at
 // their present lengths, area-lumped masses of `total_mass` [kg], the rest volume. Params are left zero and

@@ -2,8 +2,8 @@
 #include "sim/body_collision.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <numbers>
 
 #include "sim/contact_response.hpp"
@@ -12,10 +12,10 @@ namespace sim {
 namespace {
 
 // Search range around a vertex and contact thickness, as fractions of the surface body's mean rest edge.
-constexpr double kSearchFraction = 0.5;    // deepest penetration still pushed back out
-constexpr double kThicknessFraction = 0.02; // gap kept between a vertex and another body's surface
+constexpr double kSearchFraction = 0.5;      // deepest penetration still pushed back out
+constexpr double kThicknessFraction = 0.02;  // gap kept between a vertex and another body's surface
 
-constexpr double kCellFraction = 1.0;      // grid cell size over the surface body's mean rest edge
+constexpr double kCellFraction = 1.0;  // grid cell size over the surface body's mean rest edge
 
 struct ClosestPoint {
   Vec3 point;
@@ -101,7 +101,8 @@ void BodyCollider::build_grid(const Body& surface, std::span<const Vec3> x_all, 
     grid_triangles_.push_back({static_cast<int>(f), first, last});
     for (int cx = first.x(); cx <= last.x(); ++cx) {
       for (int cy = first.y(); cy <= last.y(); ++cy) {
-        for (int cz = first.z(); cz <= last.z(); ++cz) ++cell_start_[static_cast<std::size_t>(cell_index(cx, cy, cz)) + 1];
+        for (int cz = first.z(); cz <= last.z(); ++cz)
+          ++cell_start_[static_cast<std::size_t>(cell_index(cx, cy, cz)) + 1];
       }
     }
   }
@@ -126,11 +127,11 @@ void BodyCollider::build_grid(const Body& surface, std::span<const Vec3> x_all, 
 namespace {
 
 struct Contact {
-  int vertex;                    // global index of the vertex of the moving body
-  std::array<int, 3> corners;    // global indices of the surface triangle's corners
-  Vec3 weights;                  // barycentric weights of the closest point
-  Vec3 normal;                   // the surface's outward unit normal
-  double depth;                  // how far the vertex must move along the normal to sit `thickness` outside
+  int vertex;                  // global index of the vertex of the moving body
+  std::array<int, 3> corners;  // global indices of the surface triangle's corners
+  Vec3 weights;                // barycentric weights of the closest point
+  Vec3 normal;                 // the surface's outward unit normal
+  double depth;                // how far the vertex must move along the normal to sit `thickness` outside
 };
 
 // Applies one contact: the vertex moved out along the normal (within the push limit, sim::PushLimit, and for an
@@ -209,7 +210,8 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
             // which can neither beat the best nor tie it with a lower index.
             if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
             tested_by_[static_cast<std::size_t>(f)] = i;
-            const Box& box = triangle_boxes_[static_cast<std::size_t>(f)];  // cheap reject: the box is farther than the best
+            const Box& box =
+                triangle_boxes_[static_cast<std::size_t>(f)];  // cheap reject: the box is farther than the best
             if ((p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm() > best_distance * best_distance) continue;
             const Triangle& t = surface.topology.faces[static_cast<std::size_t>(f)];
             const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
@@ -249,7 +251,9 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
     if (height >= thickness) return;
     const Contact contact{vertex,
                           {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]},
-                          best.weights, normal, thickness - height};
+                          best.weights,
+                          normal,
+                          thickness - height};
     apply_contact(contact, inverse_mass, state, step_velocity_, material, push, 0.1 * search);
     ++contacts;
   });
@@ -319,8 +323,8 @@ Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surfa
   return sum;
 }
 
-BodyCollider::SmoothFrame BodyCollider::contact_frame(const Body& surface, std::span<const Vec3> x,
-                                                      int vertex, const Nearest& best, double search) {
+BodyCollider::SmoothFrame BodyCollider::contact_frame(const Body& surface, std::span<const Vec3> x, int vertex,
+                                                      const Nearest& best, double search) {
   const Vec3* x_surface = x.data() + surface.first_vertex;
   const Triangle& t = surface.topology.faces[best.triangle];
   const Vec3 offset = x[vertex] - best.point;
@@ -356,9 +360,10 @@ int BodyCollider::add_smooth_pair_forces(const Body& moving, const Body& surface
     const double normal_speed = relative.dot(direction);
     const Vec3 tangential = relative - normal_speed * direction;
     const double m = mass_kg[vertex];
-    const double elastic = m * smooth_elastic_per_mass(contact, depth);                                // [N]
+    const double elastic = m * smooth_elastic_per_mass(contact, depth);                                       // [N]
     const double dashpot = -m * contact.damping_rate * normal_speed * smooth_dashpot_weight(contact, depth);  // [N]
-    const double per_slip = contact.friction * elastic / std::sqrt(tangential.squaredNorm() + eps2);   // μ N / √(v_t² + ε²)
+    const double per_slip =
+        contact.friction * elastic / std::sqrt(tangential.squaredNorm() + eps2);  // μ N / √(v_t² + ε²)
     const Vec3 f = (elastic + dashpot) * direction - per_slip * tangential;
     force[vertex] += f;
     for (int k = 0; k < 3; ++k) force[frame.corners[k]] -= frame.weights[k] * f;

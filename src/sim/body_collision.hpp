@@ -61,11 +61,11 @@ class BodyCollider {
 
   // Where the smooth model looks (the same search as add_smooth_forces): one vertex near another body's surface.
   struct SmoothFrame {
-    int vertex = 0;                   // world index
-    std::array<int, 3> corners{};     // the nearest triangle's corners, world indices
-    Vec3 weights = Vec3::Zero();      // barycentric weights of the closest point q on it
-    Vec3 direction = Vec3::Zero();    // unit: the way the contact pushes the vertex, ±(x − q)/|x − q| (outward)
-    double signed_distance_m = 0.0;   // direction·(x − q): < 0 inside the surface body
+    int vertex = 0;                  // world index
+    std::array<int, 3> corners{};    // the nearest triangle's corners, world indices
+    Vec3 weights = Vec3::Zero();     // barycentric weights of the closest point q on it
+    Vec3 direction = Vec3::Zero();   // unit: the way the contact pushes the vertex, ±(x − q)/|x − q| (outward)
+    double signed_distance_m = 0.0;  // direction·(x − q): < 0 inside the surface body
   };
   // Every vertex of each body with a triangle of another body within the contact's search (half the surface's
   // mean edge), nearest triangle first found, in the order add_smooth_forces visits them; `frames` is overwritten.
@@ -123,21 +123,21 @@ class BodyCollider {
   Eigen::Vector3i cell_of(const Vec3& p) const;
   int cell_index(int cx, int cy, int cz) const { return (cx * grid_cells_.y() + cy) * grid_cells_.z() + cz; }
 
-  std::vector<Box> boxes_;          // per body, this step
-  std::vector<Vec3> step_velocity_; // every vertex's velocity before this call's impulses: its travel is v h
-  std::size_t moving_index_ = 0;    // the body whose vertices are tested
-  std::size_t surface_index_ = 0;   // the body whose triangles the grid holds
+  std::vector<Box> boxes_;           // per body, this step
+  std::vector<Vec3> step_velocity_;  // every vertex's velocity before this call's impulses: its travel is v h
+  std::size_t moving_index_ = 0;     // the body whose vertices are tested
+  std::size_t surface_index_ = 0;    // the body whose triangles the grid holds
   // The grid over the pair's overlap region, dense and compressed (counting sort): cell c holds the surface
   // triangles cell_triangles_[cell_start_[c] .. cell_start_[c + 1]), in ascending index order.
-  std::vector<int> cell_start_;       // grid_cells_ product + 1 entries
+  std::vector<int> cell_start_;  // grid_cells_ product + 1 entries
   std::vector<int> cell_triangles_;
   struct TriangleCells {
     int triangle;
     Eigen::Vector3i first, last;  // the cells its box covers (inclusive)
   };
   std::vector<TriangleCells> grid_triangles_;  // the surface triangles whose boxes meet the region
-  std::vector<Box> triangle_boxes_;   // per surface triangle in the grid
-  std::vector<int> tested_by_;        // per surface triangle: the last moving vertex that tested it (-1: none)
+  std::vector<Box> triangle_boxes_;            // per surface triangle in the grid
+  std::vector<int> tested_by_;                 // per surface triangle: the last moving vertex that tested it (-1: none)
   Eigen::Vector3i grid_cells_ = Eigen::Vector3i::Ones();  // cells per axis
   Vec3 grid_origin_ = Vec3::Zero();
   double cell_size_ = 1.0;

@@ -7,7 +7,8 @@
 
 namespace sim {
 
-FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>& reversed) {
+FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v,
+                                      std::vector<int>& reversed) {
   FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].y() >= height_m) continue;

@@ -24,7 +24,8 @@ struct FloorContactFound {
 // gets the impulse J = m Δv with Δv = −2v, i.e. its whole velocity is reflected (v ← −v), and it is put
 // back on the floor. Appends the indices of the vertices below to `reversed` (symplectic Euler needs to know
 // whose motion was reversed: State::coasting).
-FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v, std::vector<int>& reversed);
+FloorContactFound resolve_floor_paper(double height_m, std::span<Vec3> x, std::span<Vec3> v,
+                                      std::vector<int>& reversed);
 
 // Velocity-level impulse per vertex below the floor (per unit mass, so masses cancel), by the rule of
 // sim/contact_response.hpp:

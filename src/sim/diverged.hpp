@@ -10,10 +10,10 @@
 namespace sim {
 
 struct DivergenceReport {
-  Divergence finding;       // what the guard found, in which body and vertex
-  double time_s = 0.0;      // the time of the state found diverged
-  long long step = 0;       // the step that produced it (counting from 1)
-  double dt_s = 0.0;        // the step size that produced it
+  Divergence finding;   // what the guard found, in which body and vertex
+  double time_s = 0.0;  // the time of the state found diverged
+  long long step = 0;   // the step that produced it (counting from 1)
+  double dt_s = 0.0;    // the step size that produced it
   IntegratorKind integrator = IntegratorKind::Euler;
   // The stable-dt estimate at the model's initial state (sim/stability.hpp): for `integrator`, and for the
   // implicit method (0: no stable dt; infinite: any dt).

@@ -98,8 +98,8 @@ class Dynamics {
   // so all are found before any body's net force is handed out). False when there are none to add.
   bool body_contact_forces(const State& state);
 
-  std::optional<SmoothFloor> smooth_floor_;     // the floor's constants when its contact is a force
-  std::optional<SmoothResponse> smooth_bodies_; // the bodies' contact constants when theirs is a force
+  std::optional<SmoothFloor> smooth_floor_;      // the floor's constants when its contact is a force
+  std::optional<SmoothResponse> smooth_bodies_;  // the bodies' contact constants when theirs is a force
 };
 
 }  // namespace sim

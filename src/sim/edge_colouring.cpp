@@ -27,7 +27,8 @@ EdgeColouring colour_edges(std::span<const std::array<int, 2>> edges, int vertex
   EdgeColouring colouring;
   colouring.colour_start.assign(static_cast<std::size_t>(colours) + 1, 0);
   for (int c : colour_of) ++colouring.colour_start[static_cast<std::size_t>(c) + 1];
-  for (std::size_t c = 1; c < colouring.colour_start.size(); ++c) colouring.colour_start[c] += colouring.colour_start[c - 1];
+  for (std::size_t c = 1; c < colouring.colour_start.size(); ++c)
+    colouring.colour_start[c] += colouring.colour_start[c - 1];
   colouring.edges.resize(edges.size());
   std::vector<int> next(colouring.colour_start.begin(), colouring.colour_start.end() - 1);
   for (std::size_t e = 0; e < edges.size(); ++e) {

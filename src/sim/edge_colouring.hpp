@@ -9,8 +9,8 @@
 namespace sim {
 
 struct EdgeColouring {
-  std::vector<int> edges;          // edge indices, colour by colour (ascending index inside a colour)
-  std::vector<int> colour_start;   // colour c holds edges[colour_start[c] .. colour_start[c + 1]); colours + 1 entries
+  std::vector<int> edges;         // edge indices, colour by colour (ascending index inside a colour)
+  std::vector<int> colour_start;  // colour c holds edges[colour_start[c] .. colour_start[c + 1]); colours + 1 entries
   int colours() const { return static_cast<int>(colour_start.size()) - 1; }
 };
 

@@ -29,7 +29,8 @@ std::optional<Divergence> non_finite(int b, std::span<const Vec3> x, std::span<c
   if (all_finite(x) && all_finite(v)) return std::nullopt;  // the common case, in one vectorised pass
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (x[i].allFinite() && v[i].allFinite()) continue;
-    if (!x[i].allFinite()) return Divergence{DivergenceKind::NonFinitePosition, b, static_cast<int>(i), "has a non-finite position"};
+    if (!x[i].allFinite())
+      return Divergence{DivergenceKind::NonFinitePosition, b, static_cast<int>(i), "has a non-finite position"};
     return Divergence{DivergenceKind::NonFiniteVelocity, b, static_cast<int>(i), "has a non-finite velocity"};
   }
   return std::nullopt;

@@ -146,7 +146,8 @@ ClosestEquilibrium closest_equilibrium(const Body& body, std::span<const Vec3> x
   const Eigen::VectorXd gas = nRT * system.b;  // the gas force per vertex [N]
   const std::vector<double>& L = body.rest.edge_length_m;
   Eigen::VectorXd membrane(static_cast<Eigen::Index>(L.size()));
-  for (std::size_t e = 0; e < L.size(); ++e) membrane[static_cast<Eigen::Index>(e)] = k * L[e] * inflation / (1.0 + inflation);
+  for (std::size_t e = 0; e < L.size(); ++e)
+    membrane[static_cast<Eigen::Index>(e)] = k * L[e] * inflation / (1.0 + inflation);
   // Bisect log α between a weight that is nearly exact and one that is nearly the membrane (feasible for f < 1).
   double low = -6.0, high = 4.0;  // log10 α
   Eigen::VectorXd best = membrane;
@@ -202,7 +203,8 @@ void set_equilibrium_rest_lengths(const PressureIntent& intent, const GasPerStif
     notes.push_back(key_path + ".pressure: no exact equilibrium at inflation " + inflation + " on this mesh (" +
                     std::to_string(negative) + " of " + std::to_string(rest.size()) +
                     " springs would need a rest length at or below zero); starting from the closest one with every "
-                    "rest length at least " + percent(kShortestRestFraction) + " of its spring's length: inflation " + reached +
+                    "rest length at least " +
+                    percent(kShortestRestFraction) + " of its spring's length: inflation " + reached +
                     ", residual force " + percent(closest.residual_fraction) +
                     " of the gas force (RMS), from which the body moves to its own balance at the start");
   }
@@ -236,9 +238,8 @@ Params resolve_params(const Params& raw, const BodyIntent& intent, Body& body, s
   // The breathing mode's stiffness per unit k [1/kg]: the springs' λ_b, plus, when the body starts at the
   // gas's equilibrium, the gas: E_gas = −nRT ln V with V ∝ (1 + s)³ gives d²E_gas/ds² = 3 nRT, i.e.
   // ω_b² = k (λ_b + 3 (nRT/k) / I) = k λ_b (1 + f/(1 + f)) for inflation f (3 nRT = k f/(1+f) Σ L²).
-  const double lambda = lambda_b + (gas && pressure->start_at_equilibrium
-                                        ? 3.0 * gas->nRT_per_k / breathing_inertia(body, x)
-                                        : 0.0);
+  const double lambda =
+      lambda_b + (gas && pressure->start_at_equilibrium ? 3.0 * gas->nRT_per_k / breathing_inertia(body, x) : 0.0);
   if (intent.stiffness) params.stiffness_N_per_m = stiffness_from_intent(*intent.stiffness, lambda);
   if (intent.damping_ratio) {
     // Dampers act along the springs: the breathing mode's damping rate is γ = c λ_b, and ζ = γ / (2 ω_b).
@@ -254,7 +255,8 @@ Params resolve_params(const Params& raw, const BodyIntent& intent, Body& body, s
   }
   if (intent.bending_ratio) params.bending_N_per_m = *intent.bending_ratio * params.stiffness_N_per_m;
   if (params.bending_N_per_m > 0.0) {
-    if (params.stiffness_N_per_m <= 0.0) throw softbody::InputError(key_path + ".bending: needs springs (stiffness > 0)");
+    if (params.stiffness_N_per_m <= 0.0)
+      throw softbody::InputError(key_path + ".bending: needs springs (stiffness > 0)");
     // c_b = c k_b / k: the links damp on the edges' time scale c/k, so the damping stays proportional.
     params.bending_damping_N_s_per_m = params.damping_N_s_per_m * params.bending_N_per_m / params.stiffness_N_per_m;
   }

@@ -26,7 +26,7 @@ struct StiffnessIntent {
   double frequency_Hz = 0.0;  // "frequency": the springs' breathing-mode frequency (> 0 picks this)
 };
 struct PressureIntent {
-  double inflation = 0.1;     // "inflation": springs stretched by this fraction at equilibrium (0: no gas)
+  double inflation = 0.1;            // "inflation": springs stretched by this fraction at equilibrium (0: no gas)
   bool start_at_equilibrium = true;  // "start": "equilibrium" (mesh = equilibrium shape, no pop) or
                                      // "rest" (mesh = the springs' rest shape: the gas inflates it, the pop)
 };

@@ -18,12 +18,12 @@ struct Model {
   std::vector<double> mass_kg;       // per vertex, all bodies (the bodies' masses, side by side)
   std::vector<double> inverse_mass;  // per vertex, all bodies [1/kg]
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
-  std::optional<Floor> floor;        // none: no floor
-  BodyContact body_contact;          // between bodies (searched only when there are several)
-  Solver solver;                     // the integrator and its options (dt_s: the step a run asks for)
-  std::vector<Vec3> initial_x;       // every vertex where the model placed it: the stable-dt advice's state
-  std::vector<Skin> skins;           // detailed meshes carried by bodies simulated on a proxy ("resolution");
-                                     // read by render and export only, in body order
+  std::optional<Floor> floor;           // none: no floor
+  BodyContact body_contact;             // between bodies (searched only when there are several)
+  Solver solver;                        // the integrator and its options (dt_s: the step a run asks for)
+  std::vector<Vec3> initial_x;          // every vertex where the model placed it: the stable-dt advice's state
+  std::vector<Skin> skins;              // detailed meshes carried by bodies simulated on a proxy ("resolution");
+                                        // read by render and export only, in body order
   std::vector<SurfaceUvs> surface_uvs;  // texture coordinates of the bodies simulated on their own mesh (the
                                         // file's UVs); export only, in body order
 

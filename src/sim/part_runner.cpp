@@ -59,7 +59,8 @@ void PartRunner::run_erased(int parts, Call call, void* context) {
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
   run_my_parts(0);
-  for (int busy = busy_workers_.load(std::memory_order_acquire); busy != 0;) busy = wait_for_change(busy_workers_, busy);
+  for (int busy = busy_workers_.load(std::memory_order_acquire); busy != 0;)
+    busy = wait_for_change(busy_workers_, busy);
 }
 
 void PartRunner::work(int thread) {

@@ -30,7 +30,8 @@ class PartRunner {
       return;
     }
     using Callable = std::remove_reference_t<Body>;
-    run_erased(parts, [](void* context, int part) { (*static_cast<Callable*>(context))(part); }, &body);
+    run_erased(
+        parts, [](void* context, int part) { (*static_cast<Callable*>(context))(part); }, &body);
   }
 
  private:

@@ -21,8 +21,6 @@ std::string to_string(FloorContact contact) {
   return "?";
 }
 
-std::string to_string(BodyContactModel contact) {
-  return contact == BodyContactModel::Smooth ? "smooth" : "impulse";
-}
+std::string to_string(BodyContactModel contact) { return contact == BodyContactModel::Smooth ? "smooth" : "impulse"; }
 
 }  // namespace sim

@@ -47,14 +47,18 @@ inline constexpr std::array<IntegratorInfo, 8> kIntegrators = {{
     {IntegratorKind::Newton, "newton", 1, false, false, false},
     {IntegratorKind::Xpbd, "xpbd", 1, false, false, true},
 }};
-static_assert([] {
-  for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
-    if (static_cast<int>(kIntegrators[i].kind) != i) return false;
-  }
-  return true;
-}(), "kIntegrators lists the integrators in the order of the enum");
+static_assert(
+    [] {
+      for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
+        if (static_cast<int>(kIntegrators[i].kind) != i) return false;
+      }
+      return true;
+    }(),
+    "kIntegrators lists the integrators in the order of the enum");
 
-constexpr const IntegratorInfo& integrator_info(IntegratorKind integrator) { return kIntegrators[static_cast<int>(integrator)]; }
+constexpr const IntegratorInfo& integrator_info(IntegratorKind integrator) {
+  return kIntegrators[static_cast<int>(integrator)];
+}
 std::string to_string(IntegratorKind integrator);
 // The integrator called `name`, or nothing.
 std::optional<IntegratorKind> integrator_named(std::string_view name);
@@ -63,7 +67,7 @@ std::optional<IntegratorKind> integrator_named(std::string_view name);
 enum class FloorContact {
   Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
   Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
-  Smooth,    // a penalty spring-damper with regularised Coulomb friction, a force inside a(x, v) (sim/smooth_contact.hpp)
+  Smooth,  // a penalty spring-damper with regularised Coulomb friction, a force inside a(x, v) (sim/smooth_contact.hpp)
 };
 std::string to_string(FloorContact contact);
 
@@ -124,18 +128,18 @@ struct BodyContact {
 
 struct Solver {
   IntegratorKind integrator = IntegratorKind::Euler;
-  double dt_s = 1e-4;  // requested time step; the run uses the largest dt <= this that divides 1/fps
-                       // (rk45: only the first trial step; it then chooses its own)
+  double dt_s = 1e-4;    // requested time step; the run uses the largest dt <= this that divides 1/fps
+                         // (rk45: only the first trial step; it then chooses its own)
   bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/stability.hpp)
   // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps; 0: dt_s
   // decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy sim::auto_substeps states.
   int substeps = 0;
   bool substeps_auto = false;
-  bool retry = false;    // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
+  bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
-  int threads = 0;  // threads for the force passes of large bodies; 0: one per core. Results do not depend
-                    // on it (sim::kParallelMinVertices)
+  int threads = 0;          // threads for the force passes of large bodies; 0: one per core. Results do not depend
+                            // on it (sim::kParallelMinVertices)
 };
 
 }  // namespace sim

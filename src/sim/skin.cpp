@@ -19,7 +19,8 @@ struct Corners {
   Vec3 n0, n1, n2;  // unit vertex normals
 };
 
-Corners corners_of(int triangle, std::span<const Vec3> x, std::span<const Triangle> faces, std::span<const Vec3> normals) {
+Corners corners_of(int triangle, std::span<const Vec3> x, std::span<const Triangle> faces,
+                   std::span<const Vec3> normals) {
   const Triangle& t = faces[static_cast<std::size_t>(triangle)];
   const auto at = [](std::span<const Vec3> a, int i) { return a[static_cast<std::size_t>(i)]; };
   return {at(x, t[0]), at(x, t[1]), at(x, t[2]), at(normals, t[0]), at(normals, t[1]), at(normals, t[2])};

@@ -26,9 +26,9 @@ struct SkinAnchor {
 };
 
 struct Skin {
-  int body = 0;                      // the model's body whose surface carries this skin
-  std::vector<Triangle> triangles;   // the detailed mesh's own triangles, counter-clockwise seen from outside
-  std::vector<SkinAnchor> anchors;   // one per detailed vertex, in the detailed mesh's vertex order
+  int body = 0;                     // the model's body whose surface carries this skin
+  std::vector<Triangle> triangles;  // the detailed mesh's own triangles, counter-clockwise seen from outside
+  std::vector<SkinAnchor> anchors;  // one per detailed vertex, in the detailed mesh's vertex order
   std::vector<softbody::CornerUvs> corner_uvs;  // per detailed triangle, the file's UVs; empty when it has none
   std::size_t vertex_count() const { return anchors.size(); }
 };

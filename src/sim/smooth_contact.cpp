@@ -69,7 +69,8 @@ void add_smooth_floor_forces(const SmoothFloor& floor, std::span<const double> m
     const double depth = floor.height_m - x[i].y();
     if (depth <= 0.0) continue;
     const double elastic = mass_kg[i] * smooth_elastic_per_mass(floor, depth);  // m ω² δ P [N]
-    const double dashpot = -mass_kg[i] * floor.damping_rate * v[i].y() * smooth_dashpot_weight(floor, depth);  // −m 2ζω v_n s [N]
+    const double dashpot =
+        -mass_kg[i] * floor.damping_rate * v[i].y() * smooth_dashpot_weight(floor, depth);  // −m 2ζω v_n s [N]
     force[i].y() += elastic + dashpot;
     if (floor.friction == 0.0) continue;
     const double vx = v[i].x(), vz = v[i].z();

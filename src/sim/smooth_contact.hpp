@@ -33,11 +33,11 @@ using softbody::Vec3;
 
 // A smooth contact's constants per unit mass, resolved from the intent (the floor's and the bodies' alike).
 struct SmoothResponse {
-  double omega2 = 0.0;          // ω² = 1/τ² [1/s²]: the contact spring per unit mass
-  double damping_rate = 0.0;    // 2ζω [1/s]: the contact dashpot per unit mass
-  double friction = 0.0;        // μ
+  double omega2 = 0.0;        // ω² = 1/τ² [1/s²]: the contact spring per unit mass
+  double damping_rate = 0.0;  // 2ζω [1/s]: the contact dashpot per unit mass
+  double friction = 0.0;      // μ
   double slip_speed_m_per_s = 0.0;
-  double smoothing_m = 0.0;     // δ [m]
+  double smoothing_m = 0.0;  // δ [m]
 };
 
 struct SmoothFloor : SmoothResponse {

@@ -143,9 +143,12 @@ Mat3 amplification(IntegratorKind integrator, double h, double mu, double gamma)
   const Mat3 hA = h * A;
   Mat3 G = Mat3::Zero();
   switch (integrator) {
-    case IntegratorKind::Euler: G = Mat3::Identity() + hA; G(2, 2) = 0.0; break;
+    case IntegratorKind::Euler:
+      G = Mat3::Identity() + hA;
+      G(2, 2) = 0.0;
+      break;
     case IntegratorKind::Symplectic:
-      G(1, 0) = -h * mu, G(1, 1) = 1.0 - h * gamma;             // v' = v + h a(x, v)
+      G(1, 0) = -h * mu, G(1, 1) = 1.0 - h * gamma;                 // v' = v + h a(x, v)
       G(0, 0) = 1.0 - h * h * mu, G(0, 1) = h * (1.0 - h * gamma);  // x' = x + h v'
       break;
     case IntegratorKind::Verlet:
@@ -337,7 +340,8 @@ void add_smooth_contact(StabilityEstimate& estimate, const SmoothResponse& conta
 
 void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
   if (floor.contact == FloorContact::Smooth) {
-    add_smooth_contact(estimate, resolve_smooth_floor(floor));  // a force like the others: no projection, no projection margins
+    add_smooth_contact(estimate,
+                       resolve_smooth_floor(floor));  // a force like the others: no projection, no projection margins
     return;
   }
   const FloorContact contact = floor.contact;
@@ -348,11 +352,11 @@ void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
   estimate.stable_dt_s[static_cast<int>(IntegratorKind::Symplectic)] *= kSymplecticProjectionFactor;
   double& euler = estimate.stable_dt_s[static_cast<int>(IntegratorKind::Euler)];
   for (const ModeBounds& b : estimate.bodies) {
-    if (b.damping_rate == 0.0 || b.omega2_springs == 0.0) continue;  // no dampers: already 0 (unstable)
-    const double c_over_k = b.damping_rate / b.omega2_springs;       // γ/ω² = cλ/(kλ) [s]
+    if (b.damping_rate == 0.0 || b.omega2_springs == 0.0) continue;            // no dampers: already 0 (unstable)
+    const double c_over_k = b.damping_rate / b.omega2_springs;                 // γ/ω² = cλ/(kλ) [s]
     const double zeta = b.damping_rate / (2.0 * std::sqrt(b.omega2_springs));  // of the fastest mode
-    euler = std::min(euler, c_over_k * (zeta < kPaperEulerZeta ? kPaperEulerFractionLightDamping
-                                                                : kPaperEulerFractionHeavyDamping));
+    euler = std::min(
+        euler, c_over_k * (zeta < kPaperEulerZeta ? kPaperEulerFractionLightDamping : kPaperEulerFractionHeavyDamping));
   }
 }
 
@@ -384,8 +388,7 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
                const std::string& scene_file) {
   const double limit = estimate.stable_dt(integrator);
   if (limit == 0.0) {
-    throw softbody::InputError(scene_file + ": solver.dt: \"auto\" found no stable dt for " +
-                               to_string(integrator) +
+    throw softbody::InputError(scene_file + ": solver.dt: \"auto\" found no stable dt for " + to_string(integrator) +
                                " (forward Euler needs dampers: give every body damping > 0, or choose "
                                "solver.integrator symplectic, verlet, rk4, rk45 or implicit)");
   }

@@ -3,8 +3,8 @@
 // Design note. Linearised about the initial state, each body is M ẍ = −K x − C ẋ + gas, with K the
 // spring stiffness matrix, C = (c/k) K_dd the damper matrix (dampers act along the springs, so C has the
 // pattern of the springs' axial part K_dd) and a gas term. The bending links (sim/bending.hpp) are springs
-// with k_b and c_b = (c/k) k_b: K and C take them with the weight k_b / k, and C stays (c/k) K_dd. A mode of M⁻¹K_dd with eigenvalue λ [1/kg]
-// therefore has
+// with k_b and c_b = (c/k) k_b: K and C take them with the weight k_b / k, and C stays (c/k) K_dd. A mode of M⁻¹K_dd
+// with eigenvalue λ [1/kg] therefore has
 //     μ = k λ (1 + r_gas)   squared frequency [1/s²], r_gas = the gas's share relative to the springs
 //     γ = c λ              damping rate [1/s]           (ζ ω = γ / 2: proportional damping)
 // and obeys ẍ = −μ x − γ ẋ. A step of size h multiplies (x, v) of that mode by the integrator's
@@ -28,9 +28,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/settings.hpp"
 #include "sim/body.hpp"
 #include "sim/model.hpp"
+#include "sim/settings.hpp"
 #include "sim/state.hpp"
 
 namespace sim {
@@ -41,13 +41,13 @@ inline constexpr int kPowerIterations = 100;
 
 // What the estimate knows about one body's fastest modes.
 struct ModeBounds {
-  double lambda_max_per_kg = 0.0;       // λ_max of M⁻¹K_dd with k = 1 (links k_b/k), from power iterations [1/kg]
-  double lambda_gershgorin_per_kg = 0.0;// Gershgorin's upper bound on the same: max_i (‖K_ii‖ + Σ_j ‖K_ij‖) / m_i
-  double omega2_springs = 0.0;          // k λ [1/s²], with the stretched springs' geometric stiffness
-  double omega2_gas = 0.0;              // the gas's local and breathing stiffness over the mass [1/s²]
-  double damping_rate = 0.0;            // γ = c λ of the fastest mode [1/s] (+ the smooth contact's 2ζω)
-  double omega2_contact = 0.0;          // the smooth floor contact's spring per unit mass, 1/τ² [1/s²]
-  double omega_max() const;             // √(ω²_springs + ω²_gas + ω²_contact) [rad/s]
+  double lambda_max_per_kg = 0.0;         // λ_max of M⁻¹K_dd with k = 1 (links k_b/k), from power iterations [1/kg]
+  double lambda_gershgorin_per_kg = 0.0;  // Gershgorin's upper bound on the same: max_i (‖K_ii‖ + Σ_j ‖K_ij‖) / m_i
+  double omega2_springs = 0.0;            // k λ [1/s²], with the stretched springs' geometric stiffness
+  double omega2_gas = 0.0;                // the gas's local and breathing stiffness over the mass [1/s²]
+  double damping_rate = 0.0;              // γ = c λ of the fastest mode [1/s] (+ the smooth contact's 2ζω)
+  double omega2_contact = 0.0;            // the smooth floor contact's spring per unit mass, 1/τ² [1/s²]
+  double omega_max() const;               // √(ω²_springs + ω²_gas + ω²_contact) [rad/s]
 };
 
 // Mesh statistics the `info` command prints with the estimate.
@@ -62,11 +62,11 @@ struct BodyStats {
 // The stable dt of every integrator, smallest over the model's bodies.
 struct StabilityEstimate {
   static constexpr double kUnlimited = std::numeric_limits<double>::infinity();
-  std::vector<ModeBounds> bodies;                      // per body
+  std::vector<ModeBounds> bodies;                         // per body
   std::array<double, kIntegrators.size()> stable_dt_s{};  // indexed by IntegratorKind; 0: unstable at every dt
-  double travel_dt_s = kUnlimited;                     // contact limit (with a floor), already in stable_dt_s
-  int limiting_body = 0;                               // the body with the highest ω_max
-  double impact_speed_m_per_s = 0.0;                   // the fastest vertex, plus a fall to the floor if any
+  double travel_dt_s = kUnlimited;                        // contact limit (with a floor), already in stable_dt_s
+  int limiting_body = 0;                                  // the body with the highest ω_max
+  double impact_speed_m_per_s = 0.0;                      // the fastest vertex, plus a fall to the floor if any
   double stable_dt(IntegratorKind integrator) const { return stable_dt_s[static_cast<int>(integrator)]; }
 };
 
@@ -138,8 +138,8 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
 // fitted by bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower (within 10 % of each
 // point from 0.85 to 3.5); xpbd_bias_dt solves it for h (auto used it before the carried form). A fit of two
 // meshes and one material: a stiffer or softer body moves ω_max, which the fit follows, but it was not measured.
-constexpr double kXpbdVolumeBias = 0.005;     // the bias xpbd_bias_dt aims for (0.5 % of the volume)
-constexpr double kXpbdBiasScale = 0.0048;     // bias at h ω_max = 1 on icosphere:3
+constexpr double kXpbdVolumeBias = 0.005;  // the bias xpbd_bias_dt aims for (0.5 % of the volume)
+constexpr double kXpbdBiasScale = 0.0048;  // bias at h ω_max = 1 on icosphere:3
 constexpr double kXpbdBiasPower = 1.25;
 constexpr double kXpbdBiasMeshPower = 0.43;
 constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
@@ -169,6 +169,5 @@ int auto_substeps(const Model& model, const StabilityEstimate& estimate, double 
 void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor);
 // The floor's (if any) and the smooth body contact's (with several bodies) costs.
 void scale_for_contacts(StabilityEstimate& estimate, const Model& model);
-
 
 }  // namespace sim

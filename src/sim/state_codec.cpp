@@ -60,8 +60,9 @@ class Reader {
     return v;
   }
   void expect_end() const {
-    if (offset_ != bytes_.size()) throw softbody::InputError("state has " + std::to_string(bytes_.size() - offset_) +
-                                                             " bytes after its last field");
+    if (offset_ != bytes_.size())
+      throw softbody::InputError("state has " + std::to_string(bytes_.size() - offset_) +
+                                 " bytes after its last field");
   }
 
  private:
@@ -118,7 +119,8 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.last_dt_s = r.scalar<double>("last dt");
   state.carry.acceleration = r.vectors("carried acceleration", n);
   const std::vector<double> change = r.array<double>("carried velocity change", 3 * n);
-  state.carry.velocity_change = Eigen::Map<const Eigen::VectorXd>(change.data(), static_cast<Eigen::Index>(change.size()));
+  state.carry.velocity_change =
+      Eigen::Map<const Eigen::VectorXd>(change.data(), static_cast<Eigen::Index>(change.size()));
   std::size_t constraints = 0;
   for (const Body& body : model.bodies) constraints += body.topology.edges.size() + body.topology.bending_links.size();
   state.carry.edge_tension_N = r.array<double>("carried edge tensions", constraints);
@@ -129,7 +131,8 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.coasting.resize(coasting_count);
   for (int& vertex : state.coasting) {
     vertex = r.scalar<std::int32_t>("coasting vertices");
-    if (vertex < 0 || static_cast<std::size_t>(vertex) >= n) throw softbody::InputError("state names a vertex outside the model");
+    if (vertex < 0 || static_cast<std::size_t>(vertex) >= n)
+      throw softbody::InputError("state names a vertex outside the model");
   }
   state.guard.budget_J = r.array<double>("guard budget", model.bodies.size());
   state.guard.steps_since_full_check = r.scalar<std::int32_t>("guard counter");

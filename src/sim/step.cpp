@@ -30,7 +30,8 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // force inside phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
-  const PushLimit push{h, model.body_contact.push_speed_m_per_s, !integrator_info(model.solver.integrator).position_based};
+  const PushLimit push{h, model.body_contact.push_speed_m_per_s,
+                       !integrator_info(model.solver.integrator).position_based};
   return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material, push);
 }
 
@@ -171,7 +172,12 @@ bool advance_to(const Model& model, State& state, Workspace& workspace, double e
       std::ostringstream what;
       what << "the adaptive step size fell to " << dt << " s; the motion is unstable or solver.tolerance is too small";
       throw DivergedError(DivergenceReport{{DivergenceKind::StepUnderflow, 0, -1, what.str()},
-                                           state.time_s, state.steps, dt, model.solver.integrator, 0.0, 0.0});
+                                           state.time_s,
+                                           state.steps,
+                                           dt,
+                                           model.solver.integrator,
+                                           0.0,
+                                           0.0});
     }
     // Phase 1 with the error estimate; a rejected attempt returns to the saved state.
     save_before_step(model, state, workspace);

@@ -6,8 +6,8 @@
 namespace sim {
 
 struct StepSizeDecision {
-  bool accepted = false;  // the attempt's error was within the tolerance
-  double next_dt_s = 0.0; // the step to try next
+  bool accepted = false;   // the attempt's error was within the tolerance
+  double next_dt_s = 0.0;  // the step to try next
 };
 
 // After an attempt of dt with scaled error norm `error` (<= 1: within the tolerance). Accepted: PI control

@@ -11,8 +11,7 @@ namespace sim {
 
 struct World {
   // Takes the model (const from here on) and its state, and builds the workspace for the model.
-  World(Model model_in, State state_in)
-      : model(std::move(model_in)), state(std::move(state_in)), workspace(model) {}
+  World(Model model_in, State state_in) : model(std::move(model_in)), state(std::move(state_in)), workspace(model) {}
 
   Model model;  // never changed during a run: the step functions take it const
   State state;

@@ -90,9 +90,9 @@ TEST(BendingForce, IsMinusTheGradientOfTheEnergy) {
 
 TEST(BendingForce, SumsToZeroForceAndTorqueAndVanishesAtRest) {
   const mesh::TriMesh sphere = mesh::icosphere(2);
-  sim::World at_rest = sim::one_body_world(Vec3::Zero(), std::nullopt, sim::Solver{},
-                                           links_only_body(sphere.vertices, sphere.triangles, 500.0), sphere.vertices,
-                                           Vec3::Zero());
+  sim::World at_rest =
+      sim::one_body_world(Vec3::Zero(), std::nullopt, sim::Solver{},
+                          links_only_body(sphere.vertices, sphere.triangles, 500.0), sphere.vertices, Vec3::Zero());
   for (const Vec3& f : forces_of(at_rest)) EXPECT_EQ(f.norm(), 0.0);  // |d| = ℓ0 exactly: no stretch
 
   const std::vector<Vec3> x = perturbed(sphere.vertices, 0.03);
@@ -119,7 +119,9 @@ TEST(BendingForce, SumsToZeroForceAndTorqueAndVanishesAtRest) {
 // (the edges' stiffness k shifts it by O(k_b/k), the axis' mass by O(m/M)).
 TEST(BendingHinge, FoldsAtTheAnalyticFrequency) {
   const double h = 0.3, alpha = 0.6, m = 0.01, k_b = 4.0, k = 4e5, heavy = 1e5;
-  const std::vector<Vec3> x0 = {{0, 0, 0}, {0, 0, 1}, {h * std::sin(alpha), h * std::cos(alpha), 0.5},
+  const std::vector<Vec3> x0 = {{0, 0, 0},
+                                {0, 0, 1},
+                                {h * std::sin(alpha), h * std::cos(alpha), 0.5},
                                 {-h * std::sin(alpha), h * std::cos(alpha), 0.5}};
   sim::Body body;
   body.vertex_count = 4;

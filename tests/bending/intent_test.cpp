@@ -21,7 +21,8 @@ using softbody::Vec3;
 
 sim::World world_of(const std::string& body_json, std::vector<std::string>* notes_out = nullptr) {
   const std::string text = R"({"name": "t", "solver": {"integrator": "symplectic", "dt": 1e-4},
-                               "bodies": [)" + body_json + "]}";
+                               "bodies": [)" +
+                           body_json + "]}";
   const scene::Scene s = scene::scene_from_json(scene::parse_scene_text(text, "t.json"), "t.json");
   std::vector<std::string> notes;
   sim::World world = setup::build_world(s, notes);
@@ -105,7 +106,8 @@ TEST(PressureIntent, ConvexBallKeepsItsExactEquilibriumAndNoNote) {
   sim::BodyIntent intent;
   intent.pressure = sim::PressureIntent{0.05, true};
   std::vector<std::string> notes;
-  body.params = sim::resolve_params(sim::Params{1000.0, 0.0, 0.0}, intent, body, ball.vertices, "t.json: bodies.0", notes);
+  body.params =
+      sim::resolve_params(sim::Params{1000.0, 0.0, 0.0}, intent, body, ball.vertices, "t.json: bodies.0", notes);
   EXPECT_TRUE(notes.empty());
   EXPECT_LT(residual_fraction(body, ball.vertices), 1e-6);
 }
@@ -121,7 +123,8 @@ TEST(PressureIntent, NonConvexMeshGetsTheClosestEquilibriumAndANote) {
   sim::BodyIntent intent;
   intent.pressure = sim::PressureIntent{inflation, true};
   std::vector<std::string> notes;
-  body.params = sim::resolve_params(sim::Params{1000.0, 0.0, 0.0}, intent, body, ball.vertices, "t.json: bodies.0", notes);
+  body.params =
+      sim::resolve_params(sim::Params{1000.0, 0.0, 0.0}, intent, body, ball.vertices, "t.json: bodies.0", notes);
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("t.json: bodies.0.pressure: no exact equilibrium"), std::string::npos) << notes[0];
   double shortest = 1.0;

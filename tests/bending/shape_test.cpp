@@ -56,7 +56,8 @@ double deviation_now(const sim::World& world, const std::vector<Vec3>& rest) {
 // substep of its "substeps": "auto" in frames of `cap`.
 double auto_dt(const sim::World& world, double cap) {
   const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-  if (world.model.solver.integrator == sim::IntegratorKind::Xpbd) return cap / sim::auto_substeps(world.model, estimate, cap);
+  if (world.model.solver.integrator == sim::IntegratorKind::Xpbd)
+    return cap / sim::auto_substeps(world.model, estimate, cap);
   return std::min(cap, sim::kAutoDtSafety * estimate.stable_dt(world.model.solver.integrator));
 }
 
@@ -133,7 +134,8 @@ TEST(BendingStability, EstimateFollowsTheLinksStiffness) {
   auto energy_growth = [&](double factor) {
     sim::World world = dented_world(stiff, sim::IntegratorKind::Symplectic, std::nullopt, Vec3::Zero(), 0.0);
     const std::vector<Vec3> rest = world.state.x;
-    for (std::size_t i = 0; i < world.state.x.size(); ++i) world.state.v[i] = 0.01 * Vec3(std::sin(3.0 * static_cast<double>(i)), 0, 0);
+    for (std::size_t i = 0; i < world.state.x.size(); ++i)
+      world.state.v[i] = 0.01 * Vec3(std::sin(3.0 * static_cast<double>(i)), 0, 0);
     const double e0 = sim::diagnose(world.model, world.state, 0).total_J();
     try {
       for (int s = 0; s < 3000; ++s) world.step(factor * dt_stiff);

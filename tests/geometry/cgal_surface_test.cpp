@@ -21,8 +21,8 @@ TEST(CgalSurface, RoundTripKeepsVerticesTrianglesAndVolume) {
     // A face may start at another corner; the cyclic order (the orientation) must be the same.
     const mesh::Triangle& a = sphere.triangles[t];
     const mesh::Triangle& b = back.triangles[t];
-    const bool same_cycle = (a == b) || (a == mesh::Triangle{b[1], b[2], b[0]}) ||
-                            (a == mesh::Triangle{b[2], b[0], b[1]});
+    const bool same_cycle =
+        (a == b) || (a == mesh::Triangle{b[1], b[2], b[0]}) || (a == mesh::Triangle{b[2], b[0], b[1]});
     EXPECT_TRUE(same_cycle) << "triangle " << t;
   }
   EXPECT_DOUBLE_EQ(mesh::signed_volume(back), mesh::signed_volume(sphere));

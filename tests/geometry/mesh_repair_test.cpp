@@ -24,7 +24,8 @@ double cap_volume(double r, double h) { return std::numbers::pi * h * h * (3.0 *
 
 Vec3 centroid(const TriMesh& m, const Triangle& t) {
   return (m.vertices[static_cast<std::size_t>(t[0])] + m.vertices[static_cast<std::size_t>(t[1])] +
-          m.vertices[static_cast<std::size_t>(t[2])]) / 3.0;
+          m.vertices[static_cast<std::size_t>(t[2])]) /
+         3.0;
 }
 
 // The sphere with every triangle whose centroid lies above y = `top` or below y = `bottom` removed: two holes.
@@ -53,7 +54,8 @@ std::string validation_error(TriMesh m) {
 }
 
 bool any_note_contains(const geometry::RepairedMesh& r, const std::string& words) {
-  return std::any_of(r.notes.begin(), r.notes.end(), [&](const std::string& n) { return n.find(words) != std::string::npos; });
+  return std::any_of(r.notes.begin(), r.notes.end(),
+                     [&](const std::string& n) { return n.find(words) != std::string::npos; });
 }
 
 TEST(MeshRepair, FilledHolesCloseTheSphereAndRestoreItsVolume) {
@@ -69,7 +71,8 @@ TEST(MeshRepair, FilledHolesCloseTheSphereAndRestoreItsVolume) {
   // within a tenth of that loss of the closed icosphere's.
   const double flat_loss = cap_volume(1.0, 0.2) + cap_volume(1.0, 0.1);
   const double error = std::abs(mesh::signed_volume(repaired.mesh) - mesh::signed_volume(sphere));
-  EXPECT_LT(error, 0.1 * flat_loss) << "volume " << mesh::signed_volume(repaired.mesh) << " vs " << mesh::signed_volume(sphere);
+  EXPECT_LT(error, 0.1 * flat_loss) << "volume " << mesh::signed_volume(repaired.mesh) << " vs "
+                                    << mesh::signed_volume(sphere);
   // Refinement: the patches have vertices inside, not one fan over each rim.
   std::vector<bool> used(holed.vertices.size(), false);
   for (const Triangle& t : holed.triangles) {
@@ -90,7 +93,8 @@ TEST(MeshRepair, IsDeterministic) {
 TEST(MeshRepair, FlippedFacesAreTurnedOutward) {
   const TriMesh sphere = mesh::icosphere(2);
   TriMesh flipped = sphere;
-  for (std::size_t t = 0; t < flipped.triangles.size(); t += 7) std::swap(flipped.triangles[t][1], flipped.triangles[t][2]);
+  for (std::size_t t = 0; t < flipped.triangles.size(); t += 7)
+    std::swap(flipped.triangles[t][1], flipped.triangles[t][2]);
   ASSERT_GT(mesh::count_edges(flipped).misoriented, 0u);
   const geometry::RepairedMesh repaired = geometry::repair_mesh(flipped, every_step());
   EXPECT_EQ(validation_error(repaired.mesh), "");
@@ -111,13 +115,14 @@ TEST(MeshRepair, AnInsideOutSphereIsTurnedOutward) {
 TEST(MeshRepair, DuplicateFacesAndRepeatedVerticesAreRemoved) {
   const TriMesh sphere = mesh::icosphere(2);
   TriMesh extra = sphere;
-  extra.triangles.push_back(sphere.triangles[0]);                                               // the same face
+  extra.triangles.push_back(sphere.triangles[0]);                                                       // the same face
   extra.triangles.push_back({sphere.triangles[5][0], sphere.triangles[5][2], sphere.triangles[5][1]});  // reversed
-  extra.triangles.push_back({3, 3, 7});                                                          // a repeated vertex
+  extra.triangles.push_back({3, 3, 7});  // a repeated vertex
   const geometry::RepairedMesh repaired = geometry::repair_mesh(extra, every_step());
   EXPECT_EQ(validation_error(repaired.mesh), "");
   EXPECT_EQ(repaired.mesh.triangles.size(), sphere.triangles.size());
-  EXPECT_TRUE(any_note_contains(repaired, "1 face with a repeated vertex and 2 duplicate faces")) << repaired.notes.front();
+  EXPECT_TRUE(any_note_contains(repaired, "1 face with a repeated vertex and 2 duplicate faces"))
+      << repaired.notes.front();
   EXPECT_NEAR(mesh::signed_volume(repaired.mesh), mesh::signed_volume(sphere), 1e-12);
 }
 
@@ -169,7 +174,8 @@ TriMesh spheres_joined_at_an_edge(int levels) {
   TriMesh joined = a;
   const int offset = static_cast<int>(a.vertices.size());
   for (const Vec3& x : a.vertices) joined.vertices.push_back(x - 2.0 * (x - p).dot(n) * n);  // mirrored
-  for (const Triangle& t : a.triangles) joined.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});  // a mirror inverts
+  for (const Triangle& t : a.triangles)
+    joined.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});  // a mirror inverts
   return joined;
 }
 
@@ -236,7 +242,8 @@ TEST(MeshRepair, OverlappingPartsBecomeTheirUnion) {
   EXPECT_EQ(validation_error(repaired.mesh), "");
   EXPECT_EQ(mesh::edge_connected_parts(repaired.mesh).count, 1);
   EXPECT_NEAR(mesh::signed_volume(repaired.mesh), 2.0 - 0.5 * 0.75 * 0.875, 1e-12);
-  EXPECT_TRUE(any_note_contains(repaired, "repair: joined 2 overlapping parts into 1 surface")) << ::testing::PrintToString(repaired.notes);
+  EXPECT_TRUE(any_note_contains(repaired, "repair: joined 2 overlapping parts into 1 surface"))
+      << ::testing::PrintToString(repaired.notes);
   // "parts": "keep" leaves both, the overlap counted twice.
   mesh::RepairOptions keep = every_step();
   keep.parts = mesh::PartsPolicy::Keep;
@@ -258,7 +265,8 @@ TEST(MeshRepair, TheUnionDoesNotDependOnTheHeapsLayout) {
   ASSERT_EQ(mesh::edge_connected_parts(first).count, 1);
   std::vector<std::vector<char>> held;
   for (int layout = 1; layout <= 6; ++layout) {
-    for (int i = 0; i < 40 * layout; ++i) held.emplace_back(static_cast<std::size_t>(24 + 72 * ((i * 7 + layout) % 13)));
+    for (int i = 0; i < 40 * layout; ++i)
+      held.emplace_back(static_cast<std::size_t>(24 + 72 * ((i * 7 + layout) % 13)));
     held.emplace_back(static_cast<std::size_t>(50000 * layout));
     const TriMesh again = geometry::repair_mesh(two, every_step()).mesh;
     ASSERT_EQ(again.vertices.size(), first.vertices.size()) << "layout " << layout;
@@ -296,7 +304,8 @@ mesh::Uv linear_uv(const Vec3& x) { return {x.x() + 2.0 * x.z(), x.y() - x.z()};
 TriMesh with_linear_uvs(TriMesh m) {
   m.corner_uvs.clear();
   for (const Triangle& t : m.triangles) {
-    m.corner_uvs.push_back({linear_uv(m.vertices[static_cast<std::size_t>(t[0])]), linear_uv(m.vertices[static_cast<std::size_t>(t[1])]),
+    m.corner_uvs.push_back({linear_uv(m.vertices[static_cast<std::size_t>(t[0])]),
+                            linear_uv(m.vertices[static_cast<std::size_t>(t[1])]),
                             linear_uv(m.vertices[static_cast<std::size_t>(t[2])])});
   }
   return m;
@@ -322,7 +331,8 @@ TEST(MeshRepair, UvsAreCarriedThroughTheUnion) {
   EXPECT_LT(worst, 1e-12);
   EXPECT_GT(exact, repaired.mesh.triangles.size());  // most corners are the input's own
   // Without UVs in, none out.
-  EXPECT_TRUE(geometry::repair_mesh(with_part(mesh::cube(2), mesh::cube(2), 1.0, Vec3(0.5, 0.25, 0.125)), every_step()).mesh.corner_uvs.empty());
+  EXPECT_TRUE(geometry::repair_mesh(with_part(mesh::cube(2), mesh::cube(2), 1.0, Vec3(0.5, 0.25, 0.125)), every_step())
+                  .mesh.corner_uvs.empty());
 }
 
 TEST(MeshRepair, AClosedMeshIsLeftAsItIs) {

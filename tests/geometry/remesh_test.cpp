@@ -106,7 +106,9 @@ TEST(Remesh, EdgeLengthFormGivesEdgesOfAboutThatLength) {
   int edges = 0;
   for (const mesh::Triangle& t : proxy.triangles) {
     for (int corner = 0; corner < 3; ++corner) {
-      sum += (proxy.vertices[static_cast<std::size_t>(t[corner])] - proxy.vertices[static_cast<std::size_t>(t[(corner + 1) % 3])]).norm();
+      sum += (proxy.vertices[static_cast<std::size_t>(t[corner])] -
+              proxy.vertices[static_cast<std::size_t>(t[(corner + 1) % 3])])
+                 .norm();
       ++edges;
     }
   }

@@ -49,19 +49,21 @@ TEST_P(ContactConvergenceOrder, MatchesTheMethodsOrderThroughAnImpact) {
   EXPECT_LT(impact().reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SmoothFloorImpact, ContactConvergenceOrder,
-    ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Verlet, 1e-4, 2.0},
-                      OrderCase{sim::IntegratorKind::Rk4, 4e-4, 4.0},
-                      OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Newton, 1e-4, 1.0}),
-    [](const ::testing::TestParamInfo<OrderCase>& test) { return sim::to_string(test.param.integrator); });
+INSTANTIATE_TEST_SUITE_P(SmoothFloorImpact, ContactConvergenceOrder,
+                         ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Verlet, 1e-4, 2.0},
+                                           OrderCase{sim::IntegratorKind::Rk4, 4e-4, 4.0},
+                                           OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Newton, 1e-4, 1.0}),
+                         [](const ::testing::TestParamInfo<OrderCase>& test) {
+                           return sim::to_string(test.param.integrator);
+                         });
 
 // rk45 chooses its steps: through the impact its error should still follow the tolerance.
 TEST(ContactAdaptiveTolerance, ErrorFollowsTheToleranceThroughAnImpact) {
-  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kImpactScene, kSpan, impact().reference(), 4, 8);
+  const integrator_tests::ToleranceSweep sweep =
+      integrator_tests::rk45_tolerance_sweep(kImpactScene, kSpan, impact().reference(), 4, 8);
   EXPECT_NEAR(sweep.slope, 1.0, 0.3);
 }
 

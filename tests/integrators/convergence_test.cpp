@@ -39,26 +39,29 @@ class ConvergenceOrder : public ::testing::TestWithParam<OrderCase> {};
 TEST_P(ConvergenceOrder, MatchesTheMethodsOrder) {
   const OrderCase c = GetParam();
   const std::vector<double> errors = breathing().errors(c.integrator, c.coarsest_dt, 4);
-  const double order = integrator_tests::report_observed_order(c.integrator, errors, breathing().reference_uncertainty());
+  const double order =
+      integrator_tests::report_observed_order(c.integrator, errors, breathing().reference_uncertainty());
   EXPECT_NEAR(order, c.expected_order, 0.2);
   EXPECT_GT(errors.back(), 1e-11) << "the finest error must stay far above round-off";
   EXPECT_LT(breathing().reference_uncertainty(), 1e-3 * errors.back()) << "the reference is not converged enough";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SmoothBreathingSphere, ConvergenceOrder,
-    ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Verlet, 4e-4, 2.0},
-                      OrderCase{sim::IntegratorKind::Rk4, 1.28e-3, 4.0},
-                      OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0},
-                      OrderCase{sim::IntegratorKind::Newton, 4e-4, 1.0}),
-    [](const ::testing::TestParamInfo<OrderCase>& test) { return sim::to_string(test.param.integrator); });
+INSTANTIATE_TEST_SUITE_P(SmoothBreathingSphere, ConvergenceOrder,
+                         ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Verlet, 4e-4, 2.0},
+                                           OrderCase{sim::IntegratorKind::Rk4, 1.28e-3, 4.0},
+                                           OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0},
+                                           OrderCase{sim::IntegratorKind::Newton, 4e-4, 1.0}),
+                         [](const ::testing::TestParamInfo<OrderCase>& test) {
+                           return sim::to_string(test.param.integrator);
+                         });
 
 // rk45 has no step to halve: its global error should follow the tolerance, roughly proportionally
 // (Dormand–Prince's local error ∝ h⁵ and h ∝ tol^(1/5) make the error per unit time ∝ tol).
 TEST(AdaptiveTolerance, ErrorFollowsTheTolerance) {
-  const integrator_tests::ToleranceSweep sweep = integrator_tests::rk45_tolerance_sweep(kSmoothScene, kSpan, breathing().reference(), 4, 9);
+  const integrator_tests::ToleranceSweep sweep =
+      integrator_tests::rk45_tolerance_sweep(kSmoothScene, kSpan, breathing().reference(), 4, 9);
   for (std::size_t k = 0; k < sweep.errors.size(); ++k) {
     EXPECT_LT(sweep.errors[k], 10.0 * sweep.tolerances[k]) << "the error should stay near the requested tolerance";
   }

@@ -23,10 +23,10 @@ constexpr const char* kConservativeScene = R"({
 })";
 
 struct EnergyTrace {
-  double max_kinetic_J = 0.0;         // the scale of the motion's energy
-  double max_deviation_J = 0.0;       // max |E(t) − E(0)| over the run
-  double early_mean_J = 0.0;          // mean E − E(0) over the first tenth of the run
-  double late_mean_J = 0.0;           // ... and the last tenth
+  double max_kinetic_J = 0.0;    // the scale of the motion's energy
+  double max_deviation_J = 0.0;  // max |E(t) − E(0)| over the run
+  double early_mean_J = 0.0;     // mean E − E(0) over the first tenth of the run
+  double late_mean_J = 0.0;      // ... and the last tenth
 };
 
 EnergyTrace trace_energy(sim::IntegratorKind integrator, double dt, long long steps) {
@@ -83,9 +83,10 @@ INSTANTIATE_TEST_SUITE_P(SymplecticMethods, BoundedEnergy,
 // symplectic methods' bounded oscillation at the same step.
 TEST(ForwardEulerEnergy, GrowsOnTheSphereWhereSymplecticMethodsStayBounded) {
   const EnergyTrace euler = trace_energy(sim::IntegratorKind::Euler, 5e-5, 4000);
-  std::printf("euler on the sphere, h = 5e-5 s, 4000 steps: mean E - E0 first tenth %.3e J, last tenth %.3e J "
-              "(max kinetic %.3e J)\n",
-              euler.early_mean_J, euler.late_mean_J, euler.max_kinetic_J);
+  std::printf(
+      "euler on the sphere, h = 5e-5 s, 4000 steps: mean E - E0 first tenth %.3e J, last tenth %.3e J "
+      "(max kinetic %.3e J)\n",
+      euler.early_mean_J, euler.late_mean_J, euler.max_kinetic_J);
   EXPECT_GT(euler.late_mean_J, euler.early_mean_J + 0.01 * euler.max_kinetic_J);
 }
 

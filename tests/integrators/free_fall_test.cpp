@@ -45,8 +45,8 @@ TEST_P(ExactFreeFall, CentreOfMassOfAThrownBreathingSphere) {
   const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, 0);
   const double error = (d.com_m - free_fall(com0, kDuration)).norm();
   const double velocity_error = (d.com_velocity_m_per_s - (kV0 + kG * kDuration)).norm();
-  std::printf("%s: |COM - exact| = %.2e m, |v_COM - exact| = %.2e m/s\n", sim::to_string(GetParam()).c_str(),
-              error, velocity_error);
+  std::printf("%s: |COM - exact| = %.2e m, |v_COM - exact| = %.2e m/s\n", sim::to_string(GetParam()).c_str(), error,
+              velocity_error);
   EXPECT_LT(error, kRoundOff);
   EXPECT_LT(velocity_error, kRoundOff);
 }

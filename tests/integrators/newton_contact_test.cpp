@@ -59,7 +59,8 @@ struct PressedPotential {
   std::array<int, 3> contacts_by_depth() const {
     std::array<int, 3> count{};
     const double skin = world.model.body_contact.smooth.smoothing_m;
-    for (const auto& f : frames) ++count[skin - f.signed_distance_m <= 0.0 ? 0 : skin - f.signed_distance_m < skin ? 1 : 2];
+    for (const auto& f : frames)
+      ++count[skin - f.signed_distance_m <= 0.0 ? 0 : skin - f.signed_distance_m < skin ? 1 : 2];
     return count;
   }
 
@@ -78,7 +79,8 @@ struct PressedPotential {
 TEST(NewtonContactPotential, GradientMatchesFiniteDifferencesOfTheEnergy) {
   PressedPotential p(1.0 / 60);
   const std::array<int, 3> by_depth = p.contacts_by_depth();
-  std::printf("contacts: %d outside the skin, %d in the smoothing band, %d past it\n", by_depth[0], by_depth[1], by_depth[2]);
+  std::printf("contacts: %d outside the skin, %d in the smoothing band, %d past it\n", by_depth[0], by_depth[1],
+              by_depth[2]);
   ASSERT_GT(by_depth[1], 0);
   ASSERT_GT(by_depth[2], 0);
   std::vector<int> checked;
@@ -122,7 +124,8 @@ TEST(NewtonContactPotential, MinusTheGradientIsTheSmoothContactForce) {
   contact.add_derivatives(model, p.x, p.world.state.x, gradient);
   std::vector<Vec3> velocity(p.x.size()), force(p.x.size(), Vec3::Zero());
   for (std::size_t i = 0; i < p.x.size(); ++i) velocity[i] = (p.x[i] - p.world.state.x[i]) / p.h;
-  const sim::SmoothResponse response = sim::resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
+  const sim::SmoothResponse response =
+      sim::resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
   sim::BodyCollider collider;
   ASSERT_GT(collider.add_smooth_forces(model.bodies, model.mass_kg, p.x, velocity, response, force), 0);
   double worst = 0.0, largest = 0.0;
@@ -164,7 +167,8 @@ StackDepth stack_depth(const sim::World& world) {
     if (f.vertex >= top.first_vertex) result.skin_depth_m = std::max(result.skin_depth_m, skin - f.signed_distance_m);
   }
   for (const Vec3& p : world.model.of(top, world.state.x)) {
-    if (sim::winding_number(world.model.of(bottom, world.state.x), bottom.topology.faces, p) > 0.5) result.inside = true;
+    if (sim::winding_number(world.model.of(bottom, world.state.x), bottom.topology.faces, p) > 0.5)
+      result.inside = true;
   }
   return result;
 }
@@ -206,10 +210,11 @@ TEST(NewtonContact, TwoBallsStackAtOneSixtiethOfASecondWithoutSinkingIn) {
   constexpr int kSamples = 120;  // 2 s
   const StackRun newton = run_stack(sim::IntegratorKind::Newton, 1.0 / 60, kSamples);
   const StackRun converged = run_stack(sim::IntegratorKind::Rk4, 1e-4, kSamples);
-  std::printf("top ball in the bottom one's contact skin, deepest: newton 1/60 s %.3f mm, rk4 0.1 ms %.3f mm; "
-              "top centre at 2 s %.4f m (newton), mean over 1-2 s %.4f m (rk4); samples with a vertex inside: %d, %d\n",
-              1e3 * newton.deepest_m, 1e3 * converged.deepest_m, newton.top_centre_m, converged.mean_top_centre_m,
-              newton.samples_inside, converged.samples_inside);
+  std::printf(
+      "top ball in the bottom one's contact skin, deepest: newton 1/60 s %.3f mm, rk4 0.1 ms %.3f mm; "
+      "top centre at 2 s %.4f m (newton), mean over 1-2 s %.4f m (rk4); samples with a vertex inside: %d, %d\n",
+      1e3 * newton.deepest_m, 1e3 * converged.deepest_m, newton.top_centre_m, converged.mean_top_centre_m,
+      newton.samples_inside, converged.samples_inside);
   EXPECT_EQ(newton.samples_inside, 0);
   EXPECT_LT(newton.deepest_m, 1.1 * converged.deepest_m);
   EXPECT_NEAR(newton.top_centre_m, converged.mean_top_centre_m, 0.02);

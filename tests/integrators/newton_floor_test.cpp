@@ -121,10 +121,13 @@ TEST(NewtonFloor, NoPassThroughAtFiveMetresPerSecondAndOneSixtiethOfASecond) {
 
   const auto& stats = dynamic_cast<const sim::NewtonEuler&>(*world.workspace.integrator).statistics();
   const double centre = sim::centre_of_mass(world.model.bodies[0], world.state.x).y();
-  std::printf("deepest vertex %.4f m below the floor (converged motion: %.4f m); centre lowest %.3f m, at 1.5 s %.3f m; Newton %.2f iterations per "
-              "step (most %d), %lld unconverged\n",
-              deepest, converged_deepest(0.3), lowest_centre, centre, static_cast<double>(stats.iterations) / static_cast<double>(stats.steps),
-              stats.most_iterations, stats.unconverged_steps);
+  std::printf(
+      "deepest vertex %.4f m below the floor (converged motion: %.4f m); centre lowest %.3f m, at 1.5 s %.3f m; Newton "
+      "%.2f iterations per "
+      "step (most %d), %lld unconverged\n",
+      deepest, converged_deepest(0.3), lowest_centre, centre,
+      static_cast<double>(stats.iterations) / static_cast<double>(stats.steps), stats.most_iterations,
+      stats.unconverged_steps);
   EXPECT_LT(deepest, converged_deepest(0.3)) << "deeper than the converged motion of the same contact";
   EXPECT_GT(lowest_centre, 0.3) << "the ball was crushed or passed through";
   EXPECT_GT(centre, 0.5);

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "sim/diagnostics.hpp"
 #include "sim/integrators/block_system.hpp"
@@ -77,9 +77,9 @@ TEST(IncrementalPotential, GradientMatchesFiniteDifferencesOfTheEnergy) {
       plus[i][c] += kStep;
       minus[i][c] -= kStep;
       double energy_scale = 0.0;
-      const double numeric =
-          (p.potential.energy(p.world.model, plus, energy_scale) - p.potential.energy(p.world.model, minus, energy_scale)) /
-          (2.0 * kStep);
+      const double numeric = (p.potential.energy(p.world.model, plus, energy_scale) -
+                              p.potential.energy(p.world.model, minus, energy_scale)) /
+                             (2.0 * kStep);
       const double analytic = p.gradient[p.hessian.dof(static_cast<int>(i)) + c];
       worst = std::max(worst, std::abs(numeric - analytic));
       scale = std::max(scale, std::abs(analytic));
@@ -116,7 +116,8 @@ double smallest_eigenvalue(const PotentialAtAState& p) {
   }
   for (const sim::IncrementalPotential::GasTerm& term : p.potential.gas_terms()) {
     Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
-    for (std::size_t i = 0; i < term.direction.size(); ++i) u.segment<3>(p.hessian.dof(static_cast<int>(i))) = term.direction[i];
+    for (std::size_t i = 0; i < term.direction.size(); ++i)
+      u.segment<3>(p.hessian.dof(static_cast<int>(i))) = term.direction[i];
     dense += u * u.transpose();
   }
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues().minCoeff();
@@ -130,7 +131,8 @@ TEST(IncrementalPotential, DefiniteFormIsPositiveDefiniteWhereTheExactOneIsNot) 
   p.potential.assemble(p.world.model, p.x, sim::IncrementalPotential::Hessian::Definite, p.hessian, p.gradient);
   const double definite = smallest_eigenvalue(p);
   const double inertia = *std::min_element(p.world.model.mass_kg.begin(), p.world.model.mass_kg.end()) / (0.1 * 0.1);
-  std::printf("smallest eigenvalue: exact %.4g N/m, definite %.4g N/m (min m/h^2 = %.4g N/m)\n", exact, definite, inertia);
+  std::printf("smallest eigenvalue: exact %.4g N/m, definite %.4g N/m (min m/h^2 = %.4g N/m)\n", exact, definite,
+              inertia);
   EXPECT_LT(exact, 0.0) << "the exact Hessian of a sphere squeezed to 0.7 of its size is indefinite";
   EXPECT_GE(definite, inertia * (1.0 - 1e-9));
 }
@@ -145,7 +147,8 @@ TEST(NewtonFreeFall, MissesByHalfGHTLikeEveryFirstOrderMethod) {
   const Vec3 x0 = world.state.x[0], v0(1.5, 4, -0.5), g(0, -9.81, 0);
   constexpr double kDt = 1e-3, kDuration = 1.0;
   integrator_tests::run_for(world, kDuration, kDt);
-  const Vec3 leading = x0 + v0 * kDuration + 0.5 * g * kDuration * (kDuration + kDt);  // x_n = x0 + v0 t + ½ g t (t + h)
+  const Vec3 leading =
+      x0 + v0 * kDuration + 0.5 * g * kDuration * (kDuration + kDt);  // x_n = x0 + v0 t + ½ g t (t + h)
   // v' = (x' − x_n)/h loses ε|x|/h ≈ 1e-12 m/s a step to cancellation at x ≈ 5 m: 1e-9 m after 1000 steps.
   EXPECT_LT((world.state.x[0] - leading).norm(), 1e-9);
   EXPECT_EQ(newton_of(world).statistics().unconverged_steps, 0);
@@ -171,10 +174,11 @@ TEST_P(NewtonStiffnessRange, StableAtOneSixtiethOfASecondEnergyNeverGrows) {
     highest = std::max(highest, total_energy(world));
   }
   const sim::NewtonEuler::Statistics& stats = newton_of(world).statistics();
-  std::printf("k = %.0e N/m: E0 = %.4f J, highest %.4f J, end %.4f J; Newton iterations %.2f per step (most %d), "
-              "%lld halvings, %lld unconverged\n",
-              k, e0, highest, total_energy(world), static_cast<double>(stats.iterations) / static_cast<double>(stats.steps),
-              stats.most_iterations, stats.halvings, stats.unconverged_steps);
+  std::printf(
+      "k = %.0e N/m: E0 = %.4f J, highest %.4f J, end %.4f J; Newton iterations %.2f per step (most %d), "
+      "%lld halvings, %lld unconverged\n",
+      k, e0, highest, total_energy(world), static_cast<double>(stats.iterations) / static_cast<double>(stats.steps),
+      stats.most_iterations, stats.halvings, stats.unconverged_steps);
   EXPECT_LE(highest, e0 + 1e-9 * std::abs(e0));
   EXPECT_EQ(stats.unconverged_steps, 0);
 }
@@ -208,8 +212,8 @@ TEST(NewtonEnergy, NumericalDampingHalvesWithTheStep) {
     return e0 - total_energy(world);
   };
   const double coarse = energy_lost(2e-5), fine = energy_lost(1e-5);
-  std::printf("energy lost in %.0f ms: %.4e J at 2e-5 s, %.4e J at 1e-5 s, ratio %.3f\n", 1e3 * kDuration, coarse,
-              fine, coarse / fine);
+  std::printf("energy lost in %.0f ms: %.4e J at 2e-5 s, %.4e J at 1e-5 s, ratio %.3f\n", 1e3 * kDuration, coarse, fine,
+              coarse / fine);
   EXPECT_GT(fine, 0.0);
   EXPECT_NEAR(coarse / fine, 2.0, 0.15);
 }

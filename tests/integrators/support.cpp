@@ -43,7 +43,8 @@ double rms_position_difference(const sim::State& a, const sim::State& b) {
 
 double total_energy(const sim::World& world) {
   double energy = 0.0;
-  for (std::size_t b = 0; b < world.model.bodies.size(); ++b) energy += sim::diagnose(world.model, world.state, b).total_J();
+  for (std::size_t b = 0; b < world.model.bodies.size(); ++b)
+    energy += sim::diagnose(world.model, world.state, b).total_J();
   return energy;
 }
 
@@ -66,14 +67,16 @@ const sim::State& HalvingSweep::reference() {
 }
 
 double HalvingSweep::reference_uncertainty() {
-  if (!uncertainty_) uncertainty_ = rms_position_difference(state_after(sim::IntegratorKind::Rk45, 2 * reference_dt_s_), reference());
+  if (!uncertainty_)
+    uncertainty_ = rms_position_difference(state_after(sim::IntegratorKind::Rk45, 2 * reference_dt_s_), reference());
   return *uncertainty_;
 }
 
 std::vector<double> HalvingSweep::errors(sim::IntegratorKind integrator, double coarsest_dt, int halvings) {
   std::vector<double> errors;
   double dt = coarsest_dt;
-  for (int k = 0; k <= halvings; ++k, dt /= 2.0) errors.push_back(rms_position_difference(state_after(integrator, dt), reference()));
+  for (int k = 0; k <= halvings; ++k, dt /= 2.0)
+    errors.push_back(rms_position_difference(state_after(integrator, dt), reference()));
   return errors;
 }
 

@@ -20,8 +20,8 @@
 
 namespace {
 
-using softbody::Vec3;
 using integrator_tests::rms_position_difference;
+using softbody::Vec3;
 
 // Two particles joined by one spring-damper along x, no gravity, no gas. For one constraint along a line,
 // XPBD's substep is exactly backward Euler for the spring-damper (xpbd.hpp): with the reduced mass
@@ -59,13 +59,9 @@ void expect_one_spring_substep_is_backward_euler(double h) {
   EXPECT_NEAR(m1 * world.state.v[0].x() + m2 * world.state.v[1].x(), -0.55, 1e-12);
 }
 
-TEST(Xpbd, OneSpringSubstepIsBackwardEuler) {
-  expect_one_spring_substep_is_backward_euler(0.05);
-}
+TEST(Xpbd, OneSpringSubstepIsBackwardEuler) { expect_one_spring_substep_is_backward_euler(0.05); }
 
-TEST(Xpbd, OneSpringCarriedSubstepIsBackwardEuler) {
-  expect_one_spring_substep_is_backward_euler(0.03);
-}
+TEST(Xpbd, OneSpringCarriedSubstepIsBackwardEuler) { expect_one_spring_substep_is_backward_euler(0.03); }
 
 // A pressurised ball (icosphere:2, k 1000 N/m, c 2 N·s/m, nRT 50 J, 1 kg) without gravity or floor, released
 // from its rest shape: it inflates and settles at the volume where the springs balance the gas. The carried
@@ -90,18 +86,19 @@ TEST(Xpbd, CarriedFormSettlesAtTheEquilibriumVolume) {
   ASSERT_GE(classical_substeps, 1);
   const double converged = settled_volume(32 * carried_substeps);
   const double carried = settled_volume(carried_substeps), classical = settled_volume(classical_substeps);
-  std::printf("settled volume (omega_max %.0f rad/s): carried at %d substeps %.6f, classical at %d %.6f, at %d %.6f "
-              "m^3 (%.4f %%, %.4f %%)\n", omega_max, carried_substeps, carried, classical_substeps, classical,
-              32 * carried_substeps, converged, 100.0 * (carried / converged - 1.0),
-              100.0 * (classical / converged - 1.0));
+  std::printf(
+      "settled volume (omega_max %.0f rad/s): carried at %d substeps %.6f, classical at %d %.6f, at %d %.6f "
+      "m^3 (%.4f %%, %.4f %%)\n",
+      omega_max, carried_substeps, carried, classical_substeps, classical, 32 * carried_substeps, converged,
+      100.0 * (carried / converged - 1.0), 100.0 * (classical / converged - 1.0));
   EXPECT_LT(std::abs(carried / converged - 1.0), 5e-4) << "the carried form: within 0.05 % of the equilibrium";
   EXPECT_GT(classical / converged - 1.0, 2e-3) << "the classical form: inflated (what the carried form removes)";
 }
 
 // Every edge once; no two edges of a colour share a vertex; at most 2Δ − 1 colours (the greedy bound).
 TEST(Xpbd, EdgeColouringSeparatesEdgesThatShareAVertex) {
-  const sim::World world = integrator_tests::make_world(R"({ "bodies": [ { "mesh": "icosphere:3" } ] })",
-                                                        sim::IntegratorKind::Xpbd);
+  const sim::World world =
+      integrator_tests::make_world(R"({ "bodies": [ { "mesh": "icosphere:3" } ] })", sim::IntegratorKind::Xpbd);
   const sim::Body& body = world.model.bodies[0];
   const sim::EdgeColouring colouring = sim::colour_edges(body.topology.edges, body.vertex_count);
   std::vector<int> valence(static_cast<std::size_t>(body.vertex_count), 0);
@@ -128,7 +125,7 @@ TEST(Xpbd, EdgeColouringSeparatesEdgesThatShareAVertex) {
 // rk4 with c = 0.01 but die under xpbd even at h = 0.26 ms, which leaves an error floor of about 1 cm RMS
 // (measured: 3.8e-2, 1.4e-2, 1.1e-2, 1.0e-2 m at 16 .. 128 substeps). With c = 0.5 they die within
 // milliseconds under every method (γ = c λ_max ≈ 1000 1/s), and the comparison measures the motion both keep.
-constexpr double kSpan = 1.0;  // s: 30 frames, about one breathing period
+constexpr double kSpan = 1.0;              // s: 30 frames, about one breathing period
 constexpr double kBreathingDamping = 0.5;  // N·s/m
 sim::State breathing_state(sim::IntegratorKind integrator, double dt) {
   scene::Scene scene = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/breathing.json");
@@ -156,8 +153,8 @@ TEST(Xpbd, ConvergesToRk4AsTheSubstepsGrow) {
   std::printf("xpbd on breathing.json (c = %.2g), %.1f s, against rk4 at 1e-4 s (uncertainty %.1e m):",
               kBreathingDamping, kSpan, uncertainty);
   for (int substeps = 8; substeps <= 2048; substeps *= 2) {
-    errors.push_back(rms_position_difference(breathing_state(sim::IntegratorKind::Xpbd, frames::substep_dt(30, substeps)),
-                                             reference));
+    errors.push_back(rms_position_difference(
+        breathing_state(sim::IntegratorKind::Xpbd, frames::substep_dt(30, substeps)), reference));
     std::printf(" %d: %.3e", substeps, errors.back());
   }
   std::printf("\n  pairwise orders:");
@@ -198,8 +195,10 @@ TEST(Xpbd, BallAt5MetresPerSecondStaysOnTheFloorAtSixtyFramesPerSecond) {
       lowest = std::min(lowest, d.min_y_m);
       if (world.state.time_s > 0.5) highest_after_bounce = std::max(highest_after_bounce, d.com_m.y());
     }
-    std::printf("substeps %2d (h %.3g ms): deepest before the projection %.4f m (travel bound %.4f m), fastest "
-                "vertex %.2f m/s\n", substeps, 1e3 * h, deepest, fastest * h, fastest);
+    std::printf(
+        "substeps %2d (h %.3g ms): deepest before the projection %.4f m (travel bound %.4f m), fastest "
+        "vertex %.2f m/s\n",
+        substeps, 1e3 * h, deepest, fastest * h, fastest);
     EXPECT_GE(lowest, 0.0) << "a vertex below the floor after a step";
     EXPECT_LE(deepest, fastest * h * (1.0 + 1e-9)) << "deeper than one substep's travel";
     EXPECT_GT(fastest, 4.9) << "the ball did arrive at speed";

@@ -33,11 +33,11 @@ struct Case {
 
 TEST(CameraFraming, EveryCornerInsideTheMarginAndTheFitTight) {
   const Case cases[] = {
-      {{{-1.0f, 0.0f, -1.0f}, {2.6f, 4.0f, 1.0f}}, 16.0f / 9.0f},    // the bounce: wide and tall
-      {{{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}}, 16.0f / 9.0f},    // a ball at rest
-      {{{-6.0f, 0.0f, -1.0f}, {6.0f, 1.0f, 1.0f}}, 4.0f / 3.0f},     // a long roll: width decides
-      {{{-0.5f, 0.0f, -0.5f}, {0.5f, 8.0f, 0.5f}}, 16.0f / 9.0f},    // a high drop: height decides
-      {{{-1.0f, 0.0f, -8.0f}, {1.0f, 1.0f, 3.0f}}, 1.0f},            // along the view: depth decides
+      {{{-1.0f, 0.0f, -1.0f}, {2.6f, 4.0f, 1.0f}}, 16.0f / 9.0f},  // the bounce: wide and tall
+      {{{-0.5f, 0.0f, -0.5f}, {0.5f, 1.0f, 0.5f}}, 16.0f / 9.0f},  // a ball at rest
+      {{{-6.0f, 0.0f, -1.0f}, {6.0f, 1.0f, 1.0f}}, 4.0f / 3.0f},   // a long roll: width decides
+      {{{-0.5f, 0.0f, -0.5f}, {0.5f, 8.0f, 0.5f}}, 16.0f / 9.0f},  // a high drop: height decides
+      {{{-1.0f, 0.0f, -8.0f}, {1.0f, 1.0f, 3.0f}}, 1.0f},          // along the view: depth decides
   };
   const float edge = 1.0f - render::kFramingMargin;
   for (const Case& c : cases) {
@@ -54,8 +54,8 @@ TEST(CameraFraming, TheFloorsHorizonIsInView) {
   const render::Bounds box{{-1.0f, 0.0f, -1.0f}, {2.6f, 4.0f, 1.0f}};
   const render::CameraSettings camera = render::frame_swept_box(box, 16.0f / 9.0f, 45.0f);
   // A floor point far ahead of the camera along its view direction projects inside the picture's height.
-  const glm::vec3 ahead = glm::normalize(glm::vec3(camera.target.x - camera.position.x, 0.0f,
-                                                   camera.target.z - camera.position.z));
+  const glm::vec3 ahead =
+      glm::normalize(glm::vec3(camera.target.x - camera.position.x, 0.0f, camera.target.z - camera.position.z));
   const glm::vec3 far_floor = glm::vec3(camera.position.x, 0.0f, camera.position.z) + 300.0f * ahead;
   const render::CameraMatrices matrices = render::camera_matrices(camera, 16.0f / 9.0f);
   const glm::vec4 clip = matrices.projection * matrices.view * glm::vec4(far_floor, 1.0f);

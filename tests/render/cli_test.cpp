@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "background_run.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/png_codec.hpp"
-#include "background_run.hpp"
 #include "test_context.hpp"
 #include "test_helpers.hpp"
 
@@ -34,8 +34,9 @@ std::string quoted(const std::filesystem::path& path) {
 }
 
 std::string render_command(const std::filesystem::path& out, const std::string& extra = "") {
-  return quoted(SOFTBODY_EXE) + " render " + quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") +
-         " -o " + quoted(out) + " " + extra;
+  return quoted(SOFTBODY_EXE) + " render " +
+         quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") + " -o " + quoted(out) + " " +
+         extra;
 }
 
 int count_frame_files(const std::filesystem::path& dir) {
@@ -69,7 +70,8 @@ TEST(RenderCommand, ExplicitFigureFramesAreCheckedAgainstTheRun) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_figure_list") / "never";
   // render_track.json has frames 0..10.
   for (const char* list : {"[3,3]", "[-1]", "[0,11]", "[]"}) {
-    const CommandResult result = run_shell(render_command(out, std::string("--set 'render.figure_frames=") + list + "'"));
+    const CommandResult result =
+        run_shell(render_command(out, std::string("--set 'render.figure_frames=") + list + "'"));
     EXPECT_EQ(result.exit_status, 2) << list << ": " << result.output;
     EXPECT_NE(result.output.find("render.figure_frames"), std::string::npos) << result.output;
   }
@@ -120,8 +122,10 @@ TEST(RenderCommand, VideoHasAsManyFramesAsThePngSequence) {
   const std::filesystem::path video = out / "track.mp4";
   const CommandResult result = run_shell(render_command(out, "--video " + quoted(video)));
   ASSERT_EQ(result.exit_status, 0) << result.output;
-  const CommandResult probe = run_shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                          "stream=nb_read_frames,width,height,pix_fmt -of csv=p=0 " + quoted(video));
+  const CommandResult probe = run_shell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames,width,height,pix_fmt -of csv=p=0 " +
+      quoted(video));
   ASSERT_EQ(probe.exit_status, 0) << probe.output;
   EXPECT_EQ(count_frame_files(out), 11);
   EXPECT_EQ(probe.output, "160,120,yuv420p,11\n");
@@ -139,7 +143,8 @@ TEST(RenderCommand, VideoWithoutPngsWritesNoFrames) {
 
 TEST(RenderCommand, MissingFfmpegIsAClearFailureAndLeavesNoVideo) {
   const std::filesystem::path out = render_test::fresh_output_dir("cli_no_ffmpeg");
-  const CommandResult result = run_shell("PATH=/nonexistent " + render_command(out, "--video " + quoted(out / "v.mp4")));
+  const CommandResult result =
+      run_shell("PATH=/nonexistent " + render_command(out, "--video " + quoted(out / "v.mp4")));
   EXPECT_EQ(result.exit_status, 1) << result.output;
   EXPECT_NE(result.output.find("ffmpeg"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(out / "v.mp4"));
@@ -148,8 +153,8 @@ TEST(RenderCommand, MissingFfmpegIsAClearFailureAndLeavesNoVideo) {
 TEST(RenderCommand, DivergedRunKeepsItsValidFramesAndWritesNoVideo) {
   // A time step far too large for the stiffness: the run diverges after a few frames (exit status 3).
   const std::filesystem::path out = render_test::fresh_output_dir("cli_diverged");
-  const CommandResult result = run_shell(render_command(
-      out, "--set solver.dt=0.01 --set bodies.0.stiffness=1e6 --video " + quoted(out / "v.mp4")));
+  const CommandResult result = run_shell(
+      render_command(out, "--set solver.dt=0.01 --set bodies.0.stiffness=1e6 --video " + quoted(out / "v.mp4")));
   EXPECT_EQ(result.exit_status, 3) << result.output;
   const int frames = count_frame_files(out);
   EXPECT_GE(frames, 1);
@@ -171,25 +176,29 @@ TEST(RenderCommand, DivergedRunKeepsItsValidFramesAndWritesNoVideo) {
 // the figure's moments (a 10,000 s run), before any frame is drawn: 0 complete.
 TEST(RenderCommand, SigintKeepsOnlyCompleteFramesAndSaysHowMany) {
   for (const bool with_figure : {false, true}) {
-  const std::filesystem::path out = render_test::fresh_output_dir(with_figure ? "cli_sigint_pass" : "cli_sigint");
-  const std::string figure = with_figure ? "" : "--set render.figure_frames=0 ";
-  const CommandResult result = run_shell("timeout --preserve-status -s INT 4 " +
-                                         render_command(out, figure + "--set duration=10000 --video " + quoted(out / "v.mp4")));
-  EXPECT_EQ(result.exit_status, 130) << result.output;
-  const std::size_t at = result.output.find("interrupted: SIGINT: stopped after ");
-  ASSERT_NE(at, std::string::npos) << result.output;
-  const int frames = std::stoi(result.output.substr(at + 35));
-  if (with_figure) EXPECT_EQ(frames, 0) << result.output; else EXPECT_GT(frames, 0) << result.output;
-  EXPECT_EQ(count_frame_files(out), frames);
-  for (const auto& entry : std::filesystem::directory_iterator(out)) {
-    const std::string name = entry.path().filename().string();
-    EXPECT_EQ(name.rfind("frame_", 0), 0u) << "left behind: " << name;
-  }
-  for (int i = 0; i < frames; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.png", i);
-    EXPECT_NO_THROW(output::read_png(out / name)) << name;
-  }
+    const std::filesystem::path out = render_test::fresh_output_dir(with_figure ? "cli_sigint_pass" : "cli_sigint");
+    const std::string figure = with_figure ? "" : "--set render.figure_frames=0 ";
+    const CommandResult result =
+        run_shell("timeout --preserve-status -s INT 4 " +
+                  render_command(out, figure + "--set duration=10000 --video " + quoted(out / "v.mp4")));
+    EXPECT_EQ(result.exit_status, 130) << result.output;
+    const std::size_t at = result.output.find("interrupted: SIGINT: stopped after ");
+    ASSERT_NE(at, std::string::npos) << result.output;
+    const int frames = std::stoi(result.output.substr(at + 35));
+    if (with_figure)
+      EXPECT_EQ(frames, 0) << result.output;
+    else
+      EXPECT_GT(frames, 0) << result.output;
+    EXPECT_EQ(count_frame_files(out), frames);
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_EQ(name.rfind("frame_", 0), 0u) << "left behind: " << name;
+    }
+    for (int i = 0; i < frames; ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04d.png", i);
+      EXPECT_NO_THROW(output::read_png(out / name)) << name;
+    }
   }
 }
 
@@ -200,14 +209,16 @@ TEST(RenderCommand, SigintKeepsOnlyCompleteFramesAndSaysHowMany) {
 TEST(RenderCommand, SigtermEndsAFrameInProgressWithinAStep) {
   for (const bool with_figure : {false, true}) {
     SCOPED_TRACE(with_figure ? "silent pass" : "overlapped frames");
-    const std::filesystem::path out = render_test::fresh_output_dir(with_figure ? "cli_sigterm_pass" : "cli_sigterm_step");
+    const std::filesystem::path out =
+        render_test::fresh_output_dir(with_figure ? "cli_sigterm_pass" : "cli_sigterm_step");
     testing_support::BackgroundRun run(
         {"render", "scenes/bounce.json", "-o", out.string(), "--set", "duration=1", "--set", "fps=1", "--set",
          "bodies.0.mesh=icosphere:5", "--set", "solver.dt=1.1e-6", "--set", "render.width=160", "--set",
          "render.height=120", "--set", std::string("render.figure_frames=") + (with_figure ? "4" : "0")},
         testing_support::scratch_dir(with_figure ? "cli_sigterm_pass_log" : "cli_sigterm_step_log"));
     const auto started = [&] {
-      return with_figure ? run.errors().find("note: ") != std::string::npos : std::filesystem::exists(out / "frame_0000.png");
+      return with_figure ? run.errors().find("note: ") != std::string::npos
+                         : std::filesystem::exists(out / "frame_0000.png");
     };
     ASSERT_TRUE(run.wait_until(started, std::chrono::seconds(60))) << run.errors();
     run.signal(SIGTERM);
@@ -217,7 +228,8 @@ TEST(RenderCommand, SigtermEndsAFrameInProgressWithinAStep) {
     const std::string expected = with_figure ? "stopped after 0 complete frames" : "stopped after 1 complete frames";
     EXPECT_NE(run.errors().find("interrupted: SIGTERM: " + expected), std::string::npos) << run.errors();
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(out)) files.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(out))
+      files.push_back(entry.path().filename().string());
     EXPECT_EQ(files, with_figure ? std::vector<std::string>{} : std::vector<std::string>{"frame_0000.png"});
     if (!with_figure) {
       EXPECT_NO_THROW(output::read_png(out / "frame_0000.png"));
@@ -247,9 +259,10 @@ TEST(SimulationSide, CoreLibraryCallsNoOpenGl) {
   while (line_start < symbols.output.size()) {
     const std::size_t line_end = symbols.output.find('\n', line_start);
     const std::string symbol = symbols.output.substr(line_start, line_end - line_start);
-    const bool gl_call = symbol.rfind("OSMesa", 0) == 0 ||
-                         (symbol.size() > 3 && symbol.rfind("egl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[3]))) ||
-                         (symbol.size() > 2 && symbol.rfind("gl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[2])));
+    const bool gl_call =
+        symbol.rfind("OSMesa", 0) == 0 ||
+        (symbol.size() > 3 && symbol.rfind("egl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[3]))) ||
+        (symbol.size() > 2 && symbol.rfind("gl", 0) == 0 && std::isupper(static_cast<unsigned char>(symbol[2])));
     EXPECT_FALSE(gl_call) << "softbody_core needs " << symbol;
     if (line_end == std::string::npos) break;
     line_start = line_end + 1;
@@ -260,10 +273,9 @@ TEST(SimulationSide, SimulateRunsWithoutADisplayOrRenderer) {
   // With GALLIUM_DRIVER naming no driver, Mesa 22's OSMesa cannot make a context (`render` crashes in
   // OSMesaCreateContextAttribs), so a `simulate` that made one would fail here.
   const std::filesystem::path out = render_test::fresh_output_dir("cli_simulate");
-  const CommandResult result =
-      run_shell("DISPLAY= GALLIUM_DRIVER=none " + quoted(SOFTBODY_EXE) + " simulate " +
-                  quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") + " --csv " +
-                  quoted(out / "track.csv"));
+  const CommandResult result = run_shell("DISPLAY= GALLIUM_DRIVER=none " + quoted(SOFTBODY_EXE) + " simulate " +
+                                         quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") +
+                                         " --csv " + quoted(out / "track.csv"));
   EXPECT_EQ(result.exit_status, 0) << result.output;
   EXPECT_TRUE(std::filesystem::exists(out / "track.csv"));
 }
@@ -285,8 +297,9 @@ TEST(RenderCommand, FramesFromTheStateCacheAreTheFullRendersBytes) {
   const std::filesystem::path cache = render_test::fresh_output_dir("cli_cache_states");
   ASSERT_EQ(run_shell(render_command(full)).exit_status, 0);
   const std::string scene = quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json");
-  const CommandResult simulate = run_shell(quoted(SOFTBODY_EXE) + " simulate " + scene + " --csv " +
-                                           quoted(cache / "sim.csv") + " --cache " + quoted(cache) + " --cache-every 4");
+  const CommandResult simulate =
+      run_shell(quoted(SOFTBODY_EXE) + " simulate " + scene + " --csv " + quoted(cache / "sim.csv") + " --cache " +
+                quoted(cache) + " --cache-every 4");
   ASSERT_EQ(simulate.exit_status, 0) << simulate.output;
   const CommandResult render = run_shell(render_command(chunk, "--from-cache " + quoted(cache) + " --frames 3-6,9"));
   ASSERT_EQ(render.exit_status, 0) << render.output;
@@ -297,7 +310,8 @@ TEST(RenderCommand, FramesFromTheStateCacheAreTheFullRendersBytes) {
     EXPECT_EQ(file_bytes(chunk / name), file_bytes(full / name)) << name;
   }
   // The cache of another scene is refused with exit status 2, naming the manifest.
-  const CommandResult other = run_shell(render_command(chunk, "--from-cache " + quoted(cache) + " --set gravity=[0,-5,0]"));
+  const CommandResult other =
+      run_shell(render_command(chunk, "--from-cache " + quoted(cache) + " --set gravity=[0,-5,0]"));
   EXPECT_EQ(other.exit_status, 2) << other.output;
   EXPECT_NE(other.output.find("a cache of another scene"), std::string::npos) << other.output;
 }

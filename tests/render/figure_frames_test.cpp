@@ -14,7 +14,8 @@ namespace {
 // its horizontal velocity turns negative at frame 8.
 std::vector<output::MotionSample> made_up_bounce() {
   std::vector<output::MotionSample> motion;
-  const double lowest[] = {3.0, 2.6, 2.0, 1.3, 0.6, 0.0, 0.0, 0.0, 0.0, 0.2, 0.5, 0.7, 0.8, 0.85, 0.8, 0.6, 0.3, 0.0, 0.0, 0.0, 0.0};
+  const double lowest[] = {3.0, 2.6, 2.0,  1.3, 0.6, 0.0, 0.0, 0.0, 0.0, 0.2, 0.5,
+                           0.7, 0.8, 0.85, 0.8, 0.6, 0.3, 0.0, 0.0, 0.0, 0.0};
   const double height[] = {1, 1, 1, 1, 1, 0.9, 0.8, 0.7, 0.85, 1, 1, 1, 1, 1, 1, 1, 1, 0.95, 0.9, 0.95, 0.95};
   for (int i = 0; i <= 20; ++i) {
     output::MotionSample s;
@@ -39,7 +40,9 @@ TEST(FigureFrames, TheEndOfTheGoingBackIsChosen) {
   // The body moves +x until frame 8, then back until frame 15 (its box centre smallest there), then on again.
   std::vector<output::MotionSample> motion = made_up_bounce();
   for (output::MotionSample& s : motion) {
-    const double x = s.frame <= 8 ? 0.1 * s.frame : s.frame <= 15 ? 0.8 - 0.05 * (s.frame - 8) : 0.45 + 0.01 * (s.frame - 15);
+    const double x = s.frame <= 8    ? 0.1 * s.frame
+                     : s.frame <= 15 ? 0.8 - 0.05 * (s.frame - 8)
+                                     : 0.45 + 0.01 * (s.frame - 15);
     s.min.x() = x;
     s.max.x() = x + 1.0;
   }

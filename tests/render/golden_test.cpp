@@ -55,8 +55,8 @@ TEST(Golden, BallInTheAirOverTheFloor) {
 TEST(Golden, SquashedBallOnTheFloor) {
   // The landing: a flattened ball touching the floor. Its normals come from the deformed mesh, so the
   // highlight sits on the flat top, not where a sphere's would be.
-  const softbody::Image image = render_once(
-      small_settings(), {placed(mesh::icosphere(3), glm::vec3(1.35f, 0.6f, 1.35f), {1.5f, 0.6f, 0.0f})});
+  const softbody::Image image =
+      render_once(small_settings(), {placed(mesh::icosphere(3), glm::vec3(1.35f, 0.6f, 1.35f), {1.5f, 0.6f, 0.0f})});
   const std::string failure = render_test::check_against_golden(image, "squashed_ball", kGoldenTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
@@ -66,9 +66,8 @@ TEST(Golden, TwoBodiesWithoutFloorShadowsOrMultisampling) {
   settings.floor_height_m.reset();
   settings.shadows = false;
   settings.msaa_samples = 1;
-  const softbody::Image image =
-      render_once(settings, {placed(mesh::icosphere(2), glm::vec3(0.8f), {-1.2f, 1.5f, 0.0f}),
-                             placed(mesh::cube(2), glm::vec3(1.4f), {1.3f, 1.0f, 0.5f})});
+  const softbody::Image image = render_once(settings, {placed(mesh::icosphere(2), glm::vec3(0.8f), {-1.2f, 1.5f, 0.0f}),
+                                                       placed(mesh::cube(2), glm::vec3(1.4f), {1.3f, 1.0f, 0.5f})});
   const std::string failure = render_test::check_against_golden(image, "two_bodies_plain", kGoldenTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }

@@ -25,8 +25,7 @@ bool updating_goldens() {
 
 }  // namespace
 
-Comparison compare_images(const softbody::Image& actual, const softbody::Image& expected,
-                          const Tolerance& tolerance) {
+Comparison compare_images(const softbody::Image& actual, const softbody::Image& expected, const Tolerance& tolerance) {
   Comparison result;
   result.same_size = actual.width == expected.width && actual.height == expected.height;
   if (!result.same_size) return result;
@@ -60,8 +59,7 @@ softbody::Image difference_image(const softbody::Image& actual, const softbody::
   return diff;
 }
 
-std::string check_against_golden(const softbody::Image& actual, const std::string& name,
-                                 const Tolerance& tolerance) {
+std::string check_against_golden(const softbody::Image& actual, const std::string& name, const Tolerance& tolerance) {
   const std::filesystem::path golden = std::filesystem::path(SOFTBODY_GOLDEN_DIR) / (name + ".png");
   if (updating_goldens()) {
     output::write_file_atomically(golden, output::encode_png(actual));
@@ -90,8 +88,8 @@ std::string check_against_golden(const softbody::Image& actual, const std::strin
                   comparison.differing_pixels, 100.0 * comparison.differing_fraction, tolerance.channel_threshold,
                   100.0 * tolerance.allowed_fraction, comparison.max_channel_difference);
   } else {
-    std::snprintf(summary, sizeof summary, "size %dx%d, expected %dx%d", actual.width, actual.height,
-                  expected.width, expected.height);
+    std::snprintf(summary, sizeof summary, "size %dx%d, expected %dx%d", actual.width, actual.height, expected.width,
+                  expected.height);
   }
   return name + " does not match " + golden.string() + ": " + summary + "; see " + (dir / name).string() +
          "_{actual,expected,diff}.png (SOFTBODY_UPDATE_GOLDEN=1 accepts the new image)";

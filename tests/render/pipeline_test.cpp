@@ -13,8 +13,8 @@
 #include "output/tile_label.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
-#include "sim/diagnostics.hpp"
 #include "setup/build_world.hpp"
+#include "sim/diagnostics.hpp"
 #include "test_context.hpp"
 
 namespace {
@@ -22,7 +22,9 @@ namespace {
 // Records each frame's centre of mass, for comparison with where the body appears in the image.
 class CentreOfMassSink final : public frames::FrameSink {
  public:
-  void on_frame(int, double, const sim::World& world) override { centres.push_back(sim::diagnose(world.model, world.state, 0).com_m); }
+  void on_frame(int, double, const sim::World& world) override {
+    centres.push_back(sim::diagnose(world.model, world.state, 0).com_m);
+  }
   void finish(bool) override {}
   std::vector<softbody::Vec3> centres;
 };
@@ -67,7 +69,8 @@ class RenderPipeline : public testing::Test {
     run_ = Run{};
     run_->scene = scene::load_scene(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json");
     run_->dir = render_test::fresh_output_dir("pipeline");
-    const frames::FrameClock clock = frames::plan_frames(run_->scene.duration_s, run_->scene.fps, run_->scene.solver.dt_s);
+    const frames::FrameClock clock =
+        frames::plan_frames(run_->scene.duration_s, run_->scene.fps, run_->scene.solver.dt_s);
     std::vector<std::string> notes;
     sim::World world = setup::build_world(run_->scene, notes);
     render::Renderer renderer(render_test::gl_context(), render::settings_from_scene(run_->scene));
@@ -150,8 +153,9 @@ TEST_F(RenderPipeline, BodyAppearsWhereTheSimulationHasIt) {
   // projected centre by a fraction of a pixel here, and squashing moves mass and silhouette alike.
   for (std::size_t i = 0; i < run_->frames.size(); ++i) {
     const softbody::Vec3& c = run_->centres[i];
-    const glm::vec2 expected = render::project_to_pixel(run_->camera, glm::vec3(float(c.x()), float(c.y()), float(c.z())),
-                                                        run_->frames[i].width, run_->frames[i].height);
+    const glm::vec2 expected =
+        render::project_to_pixel(run_->camera, glm::vec3(float(c.x()), float(c.y()), float(c.z())),
+                                 run_->frames[i].width, run_->frames[i].height);
     const BodyPixels body = find_body(run_->frames[i]);
     EXPECT_NEAR(body.x, expected.x, 2.0) << "frame " << i;
     EXPECT_NEAR(body.y, expected.y, 2.0) << "frame " << i;
@@ -177,7 +181,8 @@ TEST_F(RenderPipeline, FigureHoldsTheChosenFramesInReadingOrder) {
           ink += tile[0] < 64 ? 1 : 0;
           continue;
         }
-        for (int c = 0; c < 3; ++c) largest_difference = std::max(largest_difference, std::abs(tile[c] - frame.pixel(x, y)[c]));
+        for (int c = 0; c < 3; ++c)
+          largest_difference = std::max(largest_difference, std::abs(tile[c] - frame.pixel(x, y)[c]));
       }
     }
     EXPECT_LE(largest_difference, 1) << "tile " << k << " is not frame " << shown[k];

@@ -29,8 +29,9 @@ std::string file_bytes(const std::filesystem::path& path) {
 }
 
 std::string export_command(const std::filesystem::path& out, const std::string& format) {
-  return quoted(SOFTBODY_EXE) + " export " + quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") +
-         " -o " + quoted(out) + " --format " + format;
+  return quoted(SOFTBODY_EXE) + " export " +
+         quoted(std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json") + " -o " + quoted(out) +
+         " --format " + format;
 }
 
 std::uint32_t little_endian_at(const std::string& bytes, std::size_t at) {
@@ -65,8 +66,8 @@ TEST(PointCacheExport, EverySampleIsThePlyFrame) {
   const std::string mdd = file_bytes(out / "cache" / "body0.mdd");
   ASSERT_GE(pc2.size(), 32u);
   const std::uint32_t points = little_endian_at(pc2, 16), samples = little_endian_at(pc2, 28);
-  EXPECT_EQ(points, 162u);   // icosphere:2
-  EXPECT_EQ(samples, 11u);   // 1 s at 10 fps, frame 0 included
+  EXPECT_EQ(points, 162u);  // icosphere:2
+  EXPECT_EQ(samples, 11u);  // 1 s at 10 fps, frame 0 included
   EXPECT_EQ(pc2.size(), 32u + samples * points * 12);
   EXPECT_EQ(big_endian_at(mdd, 0), samples);
   EXPECT_EQ(big_endian_at(mdd, 4), points);

@@ -56,7 +56,8 @@ softbody::Image scene_at(const std::string& scene_file, double time_s) {
 }
 
 TEST(SceneGolden, RollingBallAfterLanding) {
-  const std::string failure = render_test::check_against_golden(scene_at("roll.json", 1.2), "roll_scene", kGoldenTolerance);
+  const std::string failure =
+      render_test::check_against_golden(scene_at("roll.json", 1.2), "roll_scene", kGoldenTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 
@@ -76,7 +77,8 @@ TEST(SceneGolden, PatternIsPaintedOnTheRestShapeWhicheverFrameComesFirst) {
 }
 
 TEST(SceneGolden, PileStacked) {
-  const std::string failure = render_test::check_against_golden(scene_at("pile.json", 0.45), "pile_scene", kGoldenTolerance);
+  const std::string failure =
+      render_test::check_against_golden(scene_at("pile.json", 0.45), "pile_scene", kGoldenTolerance);
   EXPECT_TRUE(failure.empty()) << failure;
 }
 

@@ -10,8 +10,7 @@
 namespace render_test {
 
 render::GlContext& gl_context() {
-  static const std::unique_ptr<render::GlContext> context =
-      render::create_offscreen_context(requested_backend());
+  static const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(requested_backend());
   context->make_current();
   return *context;
 }

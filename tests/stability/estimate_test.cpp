@@ -12,7 +12,9 @@ namespace {
 
 using sim::IntegratorKind;
 
-sim::StabilityEstimate estimate_of(const sim::World& world) { return sim::estimate_stability(world.model, world.state); }
+sim::StabilityEstimate estimate_of(const sim::World& world) {
+  return sim::estimate_stability(world.model, world.state);
+}
 
 // A coarse damped ball and an undamped one: small meshes, so a 5000-step bisection takes about a second.
 const analysis::LimitBody kDamped{"coarse damped", "icosphere:1", 1e4, 2.0, 30.0};
@@ -35,19 +37,19 @@ TEST_P(EstimateAgainstMeasurement, IsConservativeAndWithinTwiceTheMeasuredLimit)
   EXPECT_GE(estimate, 0.5 * measured.stable_dt_s) << "the estimate must be within a factor 2";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Bodies, EstimateAgainstMeasurement,
-    ::testing::Combine(::testing::Values(kDamped),
-                       ::testing::Values(IntegratorKind::Euler, IntegratorKind::Symplectic, IntegratorKind::Verlet, IntegratorKind::Rk4,
-                                         IntegratorKind::Rk45)),
-    [](const auto& test) { return "damped_" + sim::to_string(std::get<1>(test.param)); });
+INSTANTIATE_TEST_SUITE_P(Bodies, EstimateAgainstMeasurement,
+                         ::testing::Combine(::testing::Values(kDamped),
+                                            ::testing::Values(IntegratorKind::Euler, IntegratorKind::Symplectic,
+                                                              IntegratorKind::Verlet, IntegratorKind::Rk4,
+                                                              IntegratorKind::Rk45)),
+                         [](const auto& test) { return "damped_" + sim::to_string(std::get<1>(test.param)); });
 
 // Forward Euler has no stable dt without dampers (see below), so the undamped body skips it.
-INSTANTIATE_TEST_SUITE_P(
-    UndampedBodies, EstimateAgainstMeasurement,
-    ::testing::Combine(::testing::Values(kUndamped),
-                       ::testing::Values(IntegratorKind::Symplectic, IntegratorKind::Verlet, IntegratorKind::Rk4, IntegratorKind::Rk45)),
-    [](const auto& test) { return "undamped_" + sim::to_string(std::get<1>(test.param)); });
+INSTANTIATE_TEST_SUITE_P(UndampedBodies, EstimateAgainstMeasurement,
+                         ::testing::Combine(::testing::Values(kUndamped),
+                                            ::testing::Values(IntegratorKind::Symplectic, IntegratorKind::Verlet,
+                                                              IntegratorKind::Rk4, IntegratorKind::Rk45)),
+                         [](const auto& test) { return "undamped_" + sim::to_string(std::get<1>(test.param)); });
 
 // Forward Euler without dampers has no stable dt: the estimate says so instead of inventing one.
 TEST(Estimate, ForwardEulerWithoutDampersHasNoStableDt) {
@@ -65,7 +67,8 @@ TEST(Estimate, ForwardEulerDamperLimitIsCOverK) {
 // Power iterations stay below Gershgorin's upper bound and above half of it on a regular mesh.
 TEST(Estimate, PowerIterationsLieBelowTheGershgorinBound) {
   sim::World world = analysis::limit_world(kDamped, IntegratorKind::Symplectic);
-  const sim::ModeBounds b = sim::mode_bounds(world.model.bodies[0], world.model.of(world.model.bodies[0], world.state.x));
+  const sim::ModeBounds b =
+      sim::mode_bounds(world.model.bodies[0], world.model.of(world.model.bodies[0], world.state.x));
   EXPECT_LE(b.lambda_max_per_kg, b.lambda_gershgorin_per_kg);
   EXPECT_GT(b.lambda_max_per_kg, 0.3 * b.lambda_gershgorin_per_kg);
 }
@@ -78,15 +81,17 @@ namespace {
 TEST(InfoCommand, PrintsTheEstimateAndDtAutoUsesIt) {
   const auto result = testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto");
   EXPECT_EQ(result.exit_status, 0) << result.output;
-  for (const char* expected : {"642 vertices, 1920 springs", "lumped vertex masses", "omega_max", "euler       0.000125 ",
-                               "implicit", "solver.dt = auto: 8.75e-05 s (0.70 x the estimated stable dt of euler"}) {
+  for (const char* expected :
+       {"642 vertices, 1920 springs", "lumped vertex masses", "omega_max", "euler       0.000125 ", "implicit",
+        "solver.dt = auto: 8.75e-05 s (0.70 x the estimated stable dt of euler"}) {
     EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
   }
 }
 
 // Forward Euler without dampers has no dt to pick: a bad-input error naming the key, exit status 2.
 TEST(InfoCommand, DtAutoRefusesForwardEulerWithoutDampers) {
-  const auto result = testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto --set bodies.0.damping=0");
+  const auto result =
+      testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto --set bodies.0.damping=0");
   EXPECT_EQ(result.exit_status, 2) << result.output;
   EXPECT_NE(result.output.find("solver.dt: \"auto\" found no stable dt for euler"), std::string::npos) << result.output;
 }

@@ -89,7 +89,8 @@ TEST(Guard, FiftyMetresPerSecondImpactDoesNotTunnel) {
     "solver": { "integrator": "symplectic" },
     "bodies": [ { "mesh": "icosphere:2", "position": [0, 1.5, 0], "velocity": [0, -50, 0],
                   "stiffness": 3e5, "damping": 5, "pressure": 300 } ] })");
-  const double dt = sim::kAutoDtSafety * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
+  const double dt =
+      sim::kAutoDtSafety * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
   const double edge = sim::body_stats(world.model.bodies[0], world.state.x).edge_min_m;
   double lowest_com = 10.0, deepest = 0.0;
   const int steps = static_cast<int>(0.2 / dt);
@@ -99,9 +100,10 @@ TEST(Guard, FiftyMetresPerSecondImpactDoesNotTunnel) {
     deepest = std::max(deepest, world.workspace.deepest_floor_penetration_m);
   }
   const sim::BodyDiagnostics end = sim::diagnose(world.model, world.state, 0);
-  std::printf("dt = %.3g s: deepest vertex %.3g m into the floor in one step (%.3f shortest edges), lowest centre of "
-              "mass %.3f m, after 0.2 s %.3f m moving at %.2f m/s\n",
-              dt, deepest, deepest / edge, lowest_com, end.com_m.y(), end.com_velocity_m_per_s.y());
+  std::printf(
+      "dt = %.3g s: deepest vertex %.3g m into the floor in one step (%.3f shortest edges), lowest centre of "
+      "mass %.3f m, after 0.2 s %.3f m moving at %.2f m/s\n",
+      dt, deepest, deepest / edge, lowest_com, end.com_m.y(), end.com_velocity_m_per_s.y());
   EXPECT_LE(deepest, sim::kTravelFraction * edge);
   EXPECT_GT(lowest_com, 0.5) << "crushed: the ball's radius is 1 m";
   EXPECT_GT(end.com_velocity_m_per_s.y(), 0.0) << "it bounced back up";

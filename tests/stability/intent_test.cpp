@@ -17,15 +17,19 @@ namespace {
 
 using testing_support::world_from_text;
 
-std::string shell(const std::string& mesh, const std::string& start, const std::string& gravity, const std::string& floor) {
+std::string shell(const std::string& mesh, const std::string& start, const std::string& gravity,
+                  const std::string& floor) {
   return R"({ "gravity": )" + gravity + floor + R"(, "solver": { "integrator": "symplectic" },
-    "bodies": [ { "mesh": ")" + mesh + R"(", "position": [0, 3, 0],
+    "bodies": [ { "mesh": ")" +
+         mesh + R"(", "position": [0, 3, 0],
       "stiffness": { "youngs": 2e6, "thickness": 0.002 }, "damping": { "ratio": 0.1 },
-      "pressure": { "inflation": 0.05, "start": ")" + start + R"(" } } ] })";
+      "pressure": { "inflation": 0.05, "start": ")" +
+         start + R"(" } } ] })";
 }
 
 double auto_dt(const sim::World& world) {
-  return sim::kAutoDtSafety * sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
+  return sim::kAutoDtSafety *
+         sim::estimate_stability(world.model, world.state).stable_dt(sim::IntegratorKind::Symplectic);
 }
 
 // Youngs and thickness give k = (√3/2) E t; a damping ratio gives c = 2 ζ k / ω_b.
@@ -54,7 +58,8 @@ TEST(Intent, EquilibriumStartDoesNotMove) {
   double worst_volume = 0.0;
   for (int s = 0; s < static_cast<int>(1.0 / dt); ++s) {
     world.step(dt);
-    worst_volume = std::max(worst_volume, std::abs(sim::diagnose(world.model, world.state, 0).volume_m3 / start.volume_m3 - 1.0));
+    worst_volume =
+        std::max(worst_volume, std::abs(sim::diagnose(world.model, world.state, 0).volume_m3 / start.volume_m3 - 1.0));
   }
   const sim::BodyDiagnostics end = sim::diagnose(world.model, world.state, 0);
   std::printf("equilibrium start, 1 s: COM moved %.3g m, largest relative volume change %.3g, kinetic energy %.3g J\n",
@@ -88,7 +93,9 @@ TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
   for (int s = 0; s < static_cast<int>(1.2 / dt); ++s) {
     coarse.step(dt);
     fine.step(dt);
-    worst = std::max(worst, (sim::diagnose(coarse.model, coarse.state, 0).com_m - sim::diagnose(fine.model, fine.state, 0).com_m).norm());
+    worst = std::max(
+        worst,
+        (sim::diagnose(coarse.model, coarse.state, 0).com_m - sim::diagnose(fine.model, fine.state, 0).com_m).norm());
     lowest = std::min(lowest, sim::diagnose(fine.model, fine.state, 0).com_m.y());
   }
   std::printf("icosphere:2 against :3 over 1.2 s: largest COM distance %.4f m (lowest COM %.3f m)\n", worst, lowest);
@@ -110,11 +117,13 @@ TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
 double measured_breathing_period(const std::string& mesh, double frequency_Hz, int half_periods,
                                  const std::string& pressure = "0") {
   sim::World world = world_from_text(R"({ "gravity": [0, 0, 0], "solver": { "integrator": "verlet" },
-    "bodies": [ { "mesh": ")" + mesh + R"(", "stiffness": { "frequency": )" + std::to_string(frequency_Hz) +
+    "bodies": [ { "mesh": ")" + mesh +
+                                     R"(", "stiffness": { "frequency": )" + std::to_string(frequency_Hz) +
                                      R"( }, "damping": 0, "pressure": )" + pressure + R"( } ] })");
   const sim::Body& body = world.model.bodies[0];
   const std::vector<double>& m = body.masses.kg;
-  const std::vector<softbody::Vec3> rest(world.model.of(body, world.state.x).begin(), world.model.of(body, world.state.x).end());
+  const std::vector<softbody::Vec3> rest(world.model.of(body, world.state.x).begin(),
+                                         world.model.of(body, world.state.x).end());
   const softbody::Vec3 centre = sim::diagnose(world.model, world.state, 0).com_m;
   double inertia = 0.0;  // Σ m |X − c|² [kg m²]
   for (std::size_t i = 0; i < rest.size(); ++i) inertia += m[i] * (rest[i] - centre).squaredNorm();
@@ -176,7 +185,8 @@ TEST(Intent, BadIntentNamesTheKey) {
     testing_support::scene_from_text(R"({ "solver": { "dt": "fast" }, "bodies": [ {} ] })");
     FAIL() << "expected InputError";
   } catch (const softbody::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("solver.dt: expected a number > 0 or \"auto\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("solver.dt: expected a number > 0 or \"auto\""), std::string::npos)
+        << e.what();
   }
 }
 

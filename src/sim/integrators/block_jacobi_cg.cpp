@@ -19,8 +19,9 @@ void BlockJacobiCg::build_preconditioner(const BlockSystem& a, std::span<const R
     const Eigen::LLT<Eigen::Matrix3d> cholesky(block);
     // A block that is not positive definite (the exact Hessian of compressed springs) would make the
     // preconditioner indefinite: its diagonal's magnitudes stand in.
-    block = cholesky.info() == Eigen::Success ? Eigen::Matrix3d(block.inverse())
-                                               : Eigen::Matrix3d(block.diagonal().cwiseAbs().cwiseInverse().asDiagonal());
+    block = cholesky.info() == Eigen::Success
+                ? Eigen::Matrix3d(block.inverse())
+                : Eigen::Matrix3d(block.diagonal().cwiseAbs().cwiseInverse().asDiagonal());
   }
 }
 
@@ -29,8 +30,10 @@ void BlockJacobiCg::apply(const BlockSystem& a, std::span<const RankOneTerm> ter
   a.multiply(in, out);
   for (const RankOneTerm& term : terms) {
     double u_in = 0.0;
-    for (std::size_t i = 0; i < term.u.size(); ++i) u_in += term.u[i].dot(in.segment<3>(BlockSystem::dof(term.vertex(i))));
-    for (std::size_t i = 0; i < term.u.size(); ++i) out.segment<3>(BlockSystem::dof(term.vertex(i))) += u_in * term.u[i];
+    for (std::size_t i = 0; i < term.u.size(); ++i)
+      u_in += term.u[i].dot(in.segment<3>(BlockSystem::dof(term.vertex(i))));
+    for (std::size_t i = 0; i < term.u.size(); ++i)
+      out.segment<3>(BlockSystem::dof(term.vertex(i))) += u_in * term.u[i];
   }
 }
 

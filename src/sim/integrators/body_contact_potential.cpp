@@ -46,7 +46,7 @@ double BodyContactPotential::energy(const Model& model, std::span<const Vec3> x,
     const Vec3 step = relative(c, x) - relative(c, start);                                   // J ΔX [m]
     const double along = n.dot(step);
     const double dashpot = m * response_.damping_rate * lagged_[c].dashpot_weight * along * along / (2.0 * h_);
-    const Vec3 tangential = (step - along * n) / h_;                                          // v'_t [m/s]
+    const Vec3 tangential = (step - along * n) / h_;  // v'_t [m/s]
     const double friction = lagged_[c].friction_normal * h_ * std::sqrt(tangential.squaredNorm() + eps2);
     total += spring + dashpot + friction;
     size += spring + dashpot + friction;

@@ -1,4 +1,5 @@
-// The smooth contact between bodies (sim/body_collision.hpp) as terms of backward Euler's incremental potential, for newton.
+// The smooth contact between bodies (sim/body_collision.hpp) as terms of backward Euler's incremental potential, for
+// newton.
 #pragma once
 
 #include <array>

@@ -16,12 +16,14 @@ constexpr std::array<double, 4> kA5 = {19372.0 / 6561.0, -25360.0 / 2187.0, 6444
 constexpr std::array<double, 5> kA6 = {9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
                                        -5103.0 / 18656.0};
 // Fifth-order weights b (= the 7th stage's row, hence FSAL).
-constexpr std::array<double, 6> kB = {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
-                                      11.0 / 84.0};
+constexpr std::array<double, 6> kB = {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0};
 // b − b̂ with b̂ the embedded fourth-order weights: the error estimate's weights (7 stages).
-constexpr std::array<double, 7> kE = {35.0 / 384.0 - 5179.0 / 57600.0,   0.0,
-                                      500.0 / 1113.0 - 7571.0 / 16695.0, 125.0 / 192.0 - 393.0 / 640.0,
-                                      -2187.0 / 6784.0 + 92097.0 / 339200.0, 11.0 / 84.0 - 187.0 / 2100.0,
+constexpr std::array<double, 7> kE = {35.0 / 384.0 - 5179.0 / 57600.0,
+                                      0.0,
+                                      500.0 / 1113.0 - 7571.0 / 16695.0,
+                                      125.0 / 192.0 - 393.0 / 640.0,
+                                      -2187.0 / 6784.0 + 92097.0 / 339200.0,
+                                      11.0 / 84.0 - 187.0 / 2100.0,
                                       -1.0 / 40.0};
 
 double scaled_square(const Vec3& error, const Vec3& y0, const Vec3& y1, double tolerance) {

@@ -63,19 +63,20 @@ void FloorPotential::add_derivatives(const Model& model, std::span<const Vec3> x
     const Eigen::Index dof = hessian.dof(vertex);
     Mat3 block = Mat3::Zero();
     if (depth > 0.0) {
-      gradient[dof + 1] -= m * smooth_elastic_per_mass(floor_, depth);                      // −m ω² δ P(d/δ)
-      block(1, 1) += m * floor_.omega2 * smooth_dashpot_weight(floor_, depth);               // m ω² s(d/δ)
+      gradient[dof + 1] -= m * smooth_elastic_per_mass(floor_, depth);          // −m ω² δ P(d/δ)
+      block(1, 1) += m * floor_.omega2 * smooth_dashpot_weight(floor_, depth);  // m ω² s(d/δ)
     }
-    const double dashpot = m * floor_.damping_rate * dashpot_weight_[i];                     // m b w [kg/s]
-    gradient[dof + 1] += dashpot * (x[i].y() - start[i].y()) / h_;                            // m b w v'_y
+    const double dashpot = m * floor_.damping_rate * dashpot_weight_[i];  // m b w [kg/s]
+    gradient[dof + 1] += dashpot * (x[i].y() - start[i].y()) / h_;        // m b w v'_y
     block(1, 1) += dashpot / h_;
     if (friction_normal_[i] > 0.0) {
       const Eigen::Vector2d v = tangential_velocity(x[i], start[i], h_);
       const double r = std::sqrt(v.squaredNorm() + eps2);
-      const Eigen::Vector2d g = (friction_normal_[i] / r) * v;                                 // N v'_t / r
+      const Eigen::Vector2d g = (friction_normal_[i] / r) * v;  // N v'_t / r
       gradient[dof + 0] += g.x();
       gradient[dof + 2] += g.y();
-      const Eigen::Matrix2d t = (friction_normal_[i] / (h_ * r)) * (Eigen::Matrix2d::Identity() - v * v.transpose() / (r * r));
+      const Eigen::Matrix2d t =
+          (friction_normal_[i] / (h_ * r)) * (Eigen::Matrix2d::Identity() - v * v.transpose() / (r * r));
       block(0, 0) += t(0, 0);
       block(0, 2) += t(0, 1);
       block(2, 0) += t(1, 0);

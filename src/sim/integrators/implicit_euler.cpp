@@ -87,7 +87,8 @@ void ImplicitEuler::add_block(const BlockRows& block, const Eigen::Matrix3d& val
 // graph Laplacians of 3×3 edge blocks; rhs b = h (f0 − h K v0).
 void ImplicitEuler::assemble(const State& state, std::span<const double> mass_kg, double dt) {
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
-  for (std::size_t v = 0; v < diagonal_.size(); ++v) add_block(diagonal_[v], mass_kg[v] * Eigen::Matrix3d::Identity(), 1.0);
+  for (std::size_t v = 0; v < diagonal_.size(); ++v)
+    add_block(diagonal_[v], mass_kg[v] * Eigen::Matrix3d::Identity(), 1.0);
   for (std::size_t v = 0; v < force_.size(); ++v) rhs_.segment<3>(static_cast<Eigen::Index>(3 * v)) = dt * force_[v];
   for (const EdgeBlocks& e : edges_) {
     const Vec3 d = state.x[e.i] - state.x[e.j];

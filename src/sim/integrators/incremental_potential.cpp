@@ -59,8 +59,8 @@ void IncrementalPotential::build(const Model& model) {
         const auto [i, j] = body.topology.bending_links[l];
         pairs_.push_back({first + i, first + j});
         rest_length_m_.push_back(body.rest.bending_length_m[l]);
-        edges_.push_back({static_cast<int>(b), -1, -1, body.params.bending_N_per_m,
-                          body.params.bending_damping_N_s_per_m});
+        edges_.push_back(
+            {static_cast<int>(b), -1, -1, body.params.bending_N_per_m, body.params.bending_damping_N_s_per_m});
       }
     }
     if (body.params.pressure_J != 0.0) {
@@ -175,7 +175,8 @@ void IncrementalPotential::assemble(const Model& model, std::span<const Vec3> x,
     if (length > 0.0) edge_gradient += (k * (length - rest_length_m_[e]) / length) * d;
     gradient.segment<3>(hessian.dof(i)) += edge_gradient;
     gradient.segment<3>(hessian.dof(j)) -= edge_gradient;
-    const Mat3 springs = definite ? spring_stiffness_block(d, rest_length_m_[e], k) : spring_hessian_block(d, rest_length_m_[e], k);
+    const Mat3 springs =
+        definite ? spring_stiffness_block(d, rest_length_m_[e], k) : spring_hessian_block(d, rest_length_m_[e], k);
     const Mat3 block = springs + c_over_h * (axis * axis.transpose());
     Mat3 diagonal = block, coupling = -block;
     const double curvature = gas_curvature_[edge.body];

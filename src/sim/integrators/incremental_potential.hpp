@@ -92,13 +92,13 @@ class IncrementalPotential {
   std::vector<double> rest_length_m_;      // per edge
   std::vector<Edge> edges_;
   std::vector<GasTerm> gas_;
-  std::vector<double> gas_curvature_;       // per body: nRT / V at the last assemble(), 0 without gas
+  std::vector<double> gas_curvature_;         // per body: nRT / V at the last assemble(), 0 without gas
   std::vector<std::vector<Vec3>> area_sums_;  // per gas term: Σ 2A n̂ around each vertex (sim/forces.hpp)
 
   double h_ = 0.0;
-  std::vector<Vec3> start_x_;        // x_n
-  std::vector<Vec3> predicted_x_;    // x̂ = x_n + h v_n
-  std::vector<Vec3> damper_axis_;    // per edge: d̂ at x_n
+  std::vector<Vec3> start_x_;      // x_n
+  std::vector<Vec3> predicted_x_;  // x̂ = x_n + h v_n
+  std::vector<Vec3> damper_axis_;  // per edge: d̂ at x_n
   FloorPotential floor_;
   BodyContactPotential contact_;
 };

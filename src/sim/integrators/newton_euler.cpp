@@ -22,7 +22,7 @@ constexpr int kMostCgIterations = 2000;
 // this many iterations, then stay: E is then fixed, so the line search converges (a vertex crossing the floor's
 // 2 mm smoothing band between iterates changes its weights, and following them every iteration could cycle).
 constexpr int kMostLagUpdates = 5;
-constexpr double kArmijo = 1e-4;           // sufficient-decrease fraction of the predicted ∇E·Δ
+constexpr double kArmijo = 1e-4;  // sufficient-decrease fraction of the predicted ∇E·Δ
 constexpr int kMostHalvings = 30;
 // A predicted decrease below this fraction of the size of E's terms is round-off in E: the step is taken
 // without a search.

@@ -27,13 +27,13 @@ namespace sim {
 // The solve (a truncated Newton method, Nocedal & Wright Sect. 7.1): ∇²E = A + Σ_b u_b u_bᵀ, A the sparse
 // part (BlockSystem: pattern built once per model, values overwritten each iteration), u_b the gas's rank-one
 // term of body b (and the smooth body contact's terms, three per contact over its four vertices), applied as the
-// product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never formed (sim/integrators/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a
-// relative residual of kSolveTolerance: a direct LDLᵀ (Eigen's SimplicialLDLT, AMD order, symbolic analysis
-// once) was measured first and costs far more per step (README "Large steps"), and its fill grows faster
-// than the vertices.
-// Why backward Euler and not BDF2 or the implicit midpoint rule: it is L-stable (stiff modes are damped, not
-// left ringing at 1/60 s steps) and a pure minimisation (the line search needs no energy safeguard); the price
-// is first-order accuracy and numerical damping of the slow modes, measured in README "Large steps".
+// product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never formed
+// (sim/integrators/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a relative
+// residual of kSolveTolerance: a direct LDLᵀ (Eigen's SimplicialLDLT, AMD order, symbolic analysis once) was measured
+// first and costs far more per step (README "Large steps"), and its fill grows faster than the vertices. Why backward
+// Euler and not BDF2 or the implicit midpoint rule: it is L-stable (stiff modes are damped, not left ringing at 1/60 s
+// steps) and a pure minimisation (the line search needs no energy safeguard); the price is first-order accuracy and
+// numerical damping of the slow modes, measured in README "Large steps".
 //
 // Nothing is carried between steps (the Newton iteration starts from x̂ and each solve from zero), so a State
 // copy is a checkpoint. No allocation per step once sizes settle: the pattern, the gas terms and every vector are
@@ -44,12 +44,12 @@ class NewtonEuler final : public Integrator {
   // Counts over every step this object took, for benchmarks and tests.
   struct Statistics {
     long long steps = 0;
-    long long iterations = 0;        // Newton iterations
-    long long solves = 0;            // conjugate-gradient solves (a non-definite exact Hessian costs a second)
-    long long cg_iterations = 0;     // over all solves
-    long long halvings = 0;          // line-search step halvings
+    long long iterations = 0;         // Newton iterations
+    long long solves = 0;             // conjugate-gradient solves (a non-definite exact Hessian costs a second)
+    long long cg_iterations = 0;      // over all solves
+    long long halvings = 0;           // line-search step halvings
     long long unconverged_steps = 0;  // stopped by kMostNewtonIterations or a failed line search
-    int most_iterations = 0;         // in one step
+    int most_iterations = 0;          // in one step
   };
 
   void step(Dynamics& dynamics, State& state, double dt) override;

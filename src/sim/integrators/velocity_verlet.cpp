@@ -14,10 +14,10 @@ void VelocityVerlet::step(Dynamics& dynamics, State& state, double dt) {
   predicted_.v.resize(n);
   const double half = 0.5 * dt;
   for (std::size_t i = 0; i < n; ++i) {
-    state.v[i] += half * a[i];                         // first kick: v½
-    state.x[i] += dt * state.v[i];                     // drift
+    state.v[i] += half * a[i];      // first kick: v½
+    state.x[i] += dt * state.v[i];  // drift
     predicted_.x[i] = state.x[i];
-    predicted_.v[i] = state.v[i] + half * a[i];        // v* = v + h a_n, only the dampers see it
+    predicted_.v[i] = state.v[i] + half * a[i];  // v* = v + h a_n, only the dampers see it
   }
   dynamics.accelerations(predicted_, a);
   for (std::size_t i = 0; i < n; ++i) state.v[i] += half * a[i];  // second kick

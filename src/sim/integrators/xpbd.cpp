@@ -17,7 +17,7 @@ void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const 
                      const EdgeColouring& colouring, double h, bool carried, std::span<Vec3> x,
                      std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
   if (k == 0.0 && c == 0.0) return;
-  carried = carried && k != 0.0;  // a damper alone carries nothing (its force would count twice: xpbd.hpp)
+  carried = carried && k != 0.0;             // a damper alone carries nothing (its force would count twice: xpbd.hpp)
   const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
   const double inverse_k = k == 0.0 ? 0.0 : 1.0 / k, inverse_h2 = 1.0 / (h * h);
   for (const int e : colouring.edges) {
@@ -25,11 +25,11 @@ void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const 
     const auto [i, j] = edges[edge];
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
-    if (length == 0.0) continue;  // coincident ends: no direction, no correction
-    const Vec3 n = d / length;    // ∇_i C
-    const double carried_tension = carried ? tension[edge] : 0.0;                           // T [N]
-    const double stretch = length - rest[edge] - carried_tension * inverse_k;               // C − T/k [m]
-    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));            // ∇C·(x − x_prev) [m]
+    if (length == 0.0) continue;                                   // coincident ends: no direction, no correction
+    const Vec3 n = d / length;                                     // ∇_i C
+    const double carried_tension = carried ? tension[edge] : 0.0;  // T [N]
+    const double stretch = length - rest[edge] - carried_tension * inverse_k;    // C − T/k [m]
+    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));  // ∇C·(x − x_prev) [m]
     const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
     x[i] += (w[i] * lambda) * n;
     x[j] -= (w[j] * lambda) * n;
@@ -68,7 +68,8 @@ void Xpbd::prepare_once(const Model& model) {
   StabilityEstimate estimate = estimate_stability(model.bodies, model.initial_x);  // the initial state: deterministic
   scale_for_contacts(estimate, model);
   carried_dt_.clear();
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) carried_dt_.push_back(xpbd_carried_dt(estimate.bodies[b].omega_max()));
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    carried_dt_.push_back(xpbd_carried_dt(estimate.bodies[b].omega_max()));
 }
 
 void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
@@ -77,7 +78,7 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   const double h = dt;
   std::vector<double>& tension = state.carry.edge_tension_N;
   const bool first_substep = tension.size() != tension_count_;  // of the run (or after State::forget_carry)
-  if (first_substep) tension.assign(tension_count_, 0.0);          // none carried yet: no force
+  if (first_substep) tension.assign(tension_count_, 0.0);       // none carried yet: no force
   const double kick = first_substep ? 0.5 * h : h;  // the leapfrog start: v_{1/2} = v_0 + ½ h a_0 (xpbd.hpp)
   previous_x_ = state.x;
   // 1. Predict with the forces that are not constraints (carried bodies: and their constraints' last forces).
@@ -109,7 +110,8 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
     const std::span<const Vec3> previous(previous_x_.data() + first, count);
     const std::span<const double> w(model.inverse_mass.data() + first, count);
     const std::size_t edges = body.topology.edges.size();
-    const std::span<double> body_tension(tension.data() + first_tension_[b], edges + body.topology.bending_links.size());
+    const std::span<double> body_tension(tension.data() + first_tension_[b],
+                                         edges + body.topology.bending_links.size());
     solve_distances(body.topology.edges, body.rest.edge_length_m, body.params.stiffness_N_per_m,
                     body.params.damping_N_s_per_m, colourings_[b], h, carried(b, h), x, previous, w,
                     body_tension.first(edges));

@@ -38,10 +38,10 @@ namespace sim {
 // forces, f_i −= T_e n̂_e at the start of the substep, and step 2 solves only for the change, with C replaced by
 //                  C − T_e/k      (and, as always, ∇C·(x − x_prev) from the predicted x, which includes T's push)
 // after which T_e ← T_e − Δλ/h² (a constraint without a spring, k = 0, carries nothing: its damper's carried
-// force would have no C − T/k to cancel it and would count twice). This is a warm start carried across substeps: one Gauss–Seidel pass per
-// substep cannot carry a steady load (the gas's) across the network, so the classical form leaves a pressurised
-// ball short of its equilibrium (inflated); with the load carried there is nothing left to correct at rest
-// (x* = x: C − T_e/k = 0 when T_e = k C), and the pass only has to follow the load's changes. For one spring it is
+// force would have no C − T/k to cancel it and would count twice). This is a warm start carried across substeps: one
+// Gauss–Seidel pass per substep cannot carry a steady load (the gas's) across the network, so the classical form leaves
+// a pressurised ball short of its equilibrium (inflated); with the load carried there is nothing left to correct at
+// rest (x* = x: C − T_e/k = 0 when T_e = k C), and the pass only has to follow the load's changes. For one spring it is
 // still exactly backward Euler (the carried push cancels in the algebra: Δλ = Δλ_classical + h² T). Its explicit
 // part costs a stability limit (measured on the bounce ball: icosphere:5 ran at h ω_max 3.1 and diverged at
 // 4.7; icosphere:3 ran at 2.9), which the switch keeps away from; the classical form needs no limit.
@@ -67,10 +67,10 @@ class Xpbd final : public Integrator {
   std::vector<EdgeColouring> colourings_;       // per body of the model, computed on the first step
   std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
   std::vector<double> carried_dt_;              // per body: xpbd_carried_dt at the initial state, contacts included [s]
-  std::vector<std::size_t> first_tension_;      // per body: its edges' first entry in carry.edge_tension_N (links follow)
-  std::size_t tension_count_ = 0;               // every body's edges and links
-  std::vector<Vec3> previous_x_;                // scratch: x at the start of the substep
-  std::vector<Vec3> force_;                     // scratch: gravity + gas (+ carried tensions) on every vertex [N]
+  std::vector<std::size_t> first_tension_;  // per body: its edges' first entry in carry.edge_tension_N (links follow)
+  std::size_t tension_count_ = 0;           // every body's edges and links
+  std::vector<Vec3> previous_x_;            // scratch: x at the start of the substep
+  std::vector<Vec3> force_;                 // scratch: gravity + gas (+ carried tensions) on every vertex [N]
 };
 
 }  // namespace sim
