@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
+#include "geometry/mesh_repair.hpp"
 #include "mesh/fbx_check.hpp"
 #include "mesh/gltf_check.hpp"
 #include "mesh/load.hpp"
@@ -348,7 +349,8 @@ TEST(SuspiciousMesh, OverlappingPartsAreNamedAsSelfIntersecting) {
 // one closed part of 8 + 8 − 2.625 = 13.375 that crosses nothing; "parts": "keep" leaves them as they are.
 TEST(SuspiciousMesh, RepairJoinsOverlappingPartsIntoTheirUnion) {
   const std::string file = data_path("hostile/overlapping_cubes.obj");
-  const mesh::LoadedMesh joined = mesh::load_closed_mesh(file, file, "ctx", {}, mesh::full_repair());
+  const mesh::LoadedMesh joined =
+      mesh::load_closed_mesh(file, file, "ctx", {}, {mesh::full_repair(), geometry::repair_mesh});
   EXPECT_EQ(mesh::edge_connected_parts(joined.mesh).count, 1);
   EXPECT_NEAR(mesh::signed_volume(joined.mesh), 13.375, 1e-12);
   EXPECT_EQ(mesh::find_self_intersections(joined.mesh).pairs, 0);
@@ -356,7 +358,7 @@ TEST(SuspiciousMesh, RepairJoinsOverlappingPartsIntoTheirUnion) {
       << ::testing::PrintToString(joined.notes);
   mesh::RepairOptions keep = mesh::full_repair();
   keep.parts = mesh::PartsPolicy::Keep;
-  const mesh::LoadedMesh kept = mesh::load_closed_mesh(file, file, "ctx", {}, keep);
+  const mesh::LoadedMesh kept = mesh::load_closed_mesh(file, file, "ctx", {}, {keep, geometry::repair_mesh});
   EXPECT_EQ(mesh::edge_connected_parts(kept.mesh).count, 2);
   EXPECT_TRUE(any_note_has(kept.notes, "\"parts\": \"union\" (the default of \"repair\") joins"))
       << ::testing::PrintToString(kept.notes);

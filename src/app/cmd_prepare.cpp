@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "core/errors.hpp"
 #include "frames/stop_request.hpp"
+#include "geometry/mesh_repair.hpp"
 #include "geometry/remesh.hpp"
 #include "geometry/uv_transfer.hpp"
 #include "mesh/check.hpp"
@@ -52,8 +53,9 @@ int run_prepare(const PrepareOptions& options) {
   }
   mesh::RepairOptions repair = mesh::full_repair();
   repair.parts = options.parts;
-  const mesh::LoadedMesh prepared = mesh::load_closed_mesh(options.input, options.input, "prepare", {}, repair,
-                                                           frames::throw_if_stop_requested_after);
+  const mesh::LoadedMesh prepared =
+      mesh::load_closed_mesh(options.input, options.input, "prepare", {}, {repair, geometry::repair_mesh},
+                             frames::throw_if_stop_requested_after);
   for (const std::string& note : prepared.notes) std::cerr << "note: " << note << "\n";
   mesh::TriMesh result = prepared.mesh;
   if (options.resolution) {

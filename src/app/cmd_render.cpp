@@ -20,11 +20,12 @@
 #include "output/figure_frames.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/motion_track.hpp"
-#include "output/render_sink.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
+#include "render/render_sink.hpp"
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
+#include "scene/frame_pattern_check.hpp"
 
 namespace app {
 namespace {
@@ -87,7 +88,7 @@ double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * t
 
 // One line of figures the README and the benchmarks quote: what a frame costs, stage by stage.
 void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
-                   const output::RenderTimings& t, const std::string& backend) {
+                   const render::RenderTimings& t, const std::string& backend) {
   const int n = run.frames;
   std::printf(
       "%s: %d frames %dx%d (msaa %d, shadows %s) in %.2f s: %.1f fps end to end; ms per frame: "
@@ -110,7 +111,7 @@ std::string backend_words(const render::GlContext& context, const render::GlBack
   return words + " by " + request.source + "; " + context.description() + ")";
 }
 
-void print_written(const output::RenderOutputs& outputs, const output::RenderSink& sink, int frames) {
+void print_written(const render::RenderOutputs& outputs, const render::RenderSink& sink, int frames) {
   if (outputs.write_frames) {
     std::printf("frames: %s (%d files)\n", (outputs.dir / outputs.pattern).string().c_str(), frames);
   }
@@ -131,7 +132,7 @@ int run_render(const RenderOptions& options) {
   const frames::FrameSelection& chosen = planned.plan().frames;
   scene::Scene& scene = run.scene;
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
-  output::check_frame_pattern(scene.output.pattern, scene.source.string());
+  scene::check_frame_pattern(scene.output.pattern, scene.source.string());
 
   const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
@@ -152,7 +153,7 @@ int run_render(const RenderOptions& options) {
   render::Renderer renderer(*context, settings);
   frames::throw_if_stop_requested_after("setting up the renderer");  // before any output is touched
 
-  output::RenderOutputs outputs;
+  render::RenderOutputs outputs;
   outputs.dir = scene.output.dir;
   outputs.pattern = scene.output.pattern;
   outputs.write_frames = !options.no_png;
@@ -185,7 +186,7 @@ int run_render(const RenderOptions& options) {
     outputs.resumed_after = resumable->resumed_after();
     outputs.video_from_files = true;
   }
-  output::RenderSink sink(renderer, outputs);
+  render::RenderSink sink(renderer, outputs);
 
   ProgressLine progress;
   std::vector<frames::CapturingFrameSink*> sinks = {&sink};

@@ -3,7 +3,7 @@
 
 namespace softbody {
 
-// Auto: EGL where it works, else OSMesa. SOFTBODY_GL in the environment, when set, wins (render/gl_backend.hpp).
+// Auto: EGL where it works, else OSMesa. SOFTBODY_GL in the environment, when set, wins (render/gl_backend_choice.hpp).
 enum class GlBackend { Auto, Egl, OsMesa };
 
 }  // namespace softbody

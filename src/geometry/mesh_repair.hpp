@@ -6,14 +6,12 @@
 #include <vector>
 
 #include "mesh/repair_options.hpp"
+#include "mesh/repair_step.hpp"
 #include "mesh/trimesh.hpp"
 
 namespace geometry {
 
-struct RepairedMesh {
-  mesh::TriMesh mesh;
-  std::vector<std::string> notes;  // one line per kind of change made ("repair: filled 3 holes ..."), for the user
-};
+using mesh::RepairedMesh;
 
 // Repairs a welded mesh in this order (each step where `options` asks for it):
 //  1. polygon soup: faces with a repeated vertex and duplicate faces removed (PMP::repair_polygon_soup);

@@ -2,9 +2,9 @@
 #include "mesh/load.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "core/errors.hpp"
-#include "geometry/mesh_repair.hpp"
 #include "mesh/check.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/import.hpp"
@@ -89,8 +89,7 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
 }
 
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
-                            const MeshLimits& limits, const RepairOptions& repair,
-                            const softbody::AfterPhase& after_phase) {
+                            const MeshLimits& limits, const Repair& repair, const softbody::AfterPhase& after_phase) {
   const std::string what = file.empty() ? spec : file.string();
   const auto phase_done = [&](const std::string& phase) {
     if (after_phase) after_phase(phase + " " + what);
@@ -99,8 +98,9 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
     LoadedMesh loaded;
     loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits));
     phase_done(file.empty() ? "generating" : "reading");
-    if (!file.empty() && repair.enabled) {
-      geometry::RepairedMesh repaired = geometry::repair_mesh(loaded.mesh, repair);
+    if (!file.empty() && repair.options.enabled) {
+      if (!repair.step) throw std::logic_error("load_closed_mesh: repair asked for without a repair step");
+      RepairedMesh repaired = repair.step(loaded.mesh, repair.options);
       loaded.mesh = std::move(repaired.mesh);
       loaded.notes = std::move(repaired.notes);
       phase_done("repairing");
@@ -109,9 +109,9 @@ LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path
       validate_closed(loaded.mesh, loaded.notes);
     } catch (const MeshDefectError& e) {
       if (file.empty()) throw;
-      throw softbody::InputError(e.what() + repair_hint(e.defect(), repair, file, loaded.notes));
+      throw softbody::InputError(e.what() + repair_hint(e.defect(), repair.options, file, loaded.notes));
     }
-    if (!file.empty()) note_suspicious_shapes(loaded.mesh, repair, loaded.notes);
+    if (!file.empty()) note_suspicious_shapes(loaded.mesh, repair.options, loaded.notes);
     phase_done("checking");
     for (std::string& note : loaded.notes) note = context + ": " + what + ": " + note;
     return loaded;

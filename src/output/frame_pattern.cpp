@@ -1,39 +1,9 @@
-// Checking and expanding frame file name patterns.
+// Expanding frame file name patterns.
 #include "output/frame_pattern.hpp"
 
-#include <cctype>
 #include <cstdio>
 
-#include "core/errors.hpp"
-
 namespace output {
-
-void check_frame_pattern(const std::string& pattern, const std::string& scene_file) {
-  int conversions = 0;
-  bool well_formed = pattern.find('/') == std::string::npos && pattern.size() > 4 &&
-                     pattern.compare(pattern.size() - 4, 4, ".png") == 0;
-  for (std::size_t i = 0; well_formed && i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    if (j < pattern.size() && pattern[j] == '0') ++j;
-    for (int digits = 0; j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && digits < 2;
-         ++digits)
-      ++j;
-    well_formed = j < pattern.size() && pattern[j] == 'd';
-    ++conversions;
-    i = j;
-  }
-  if (!well_formed || conversions != 1) {
-    throw softbody::InputError(scene_file +
-                               ": output.pattern: expected a file name ending in .png with one frame "
-                               "number conversion such as %04d (and no '/'), got \"" +
-                               pattern + "\"");
-  }
-}
 
 std::string frame_file_name(const std::string& pattern, int index) {
   char name[512];

@@ -6,11 +6,7 @@
 
 namespace output {
 
-// Throws softbody::InputError naming `scene_file` and output.pattern unless `pattern` holds exactly one
-// integer conversion (%d, %4d or %04d), no other '%' than "%%", no '/', and ends in ".png".
-void check_frame_pattern(const std::string& pattern, const std::string& scene_file);
-
-// The file name of frame `index` (the pattern must have passed check_frame_pattern).
+// The file name of frame `index` (the pattern must have passed scene::check_frame_pattern).
 std::string frame_file_name(const std::string& pattern, int index);
 
 }  // namespace output

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "render/gl_backend.hpp"
+#include "render/gl_backend_choice.hpp"
 
 namespace render {
 

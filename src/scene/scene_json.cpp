@@ -13,7 +13,7 @@
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
 #include "mesh/generators.hpp"
-#include "output/frame_pattern.hpp"
+#include "scene/frame_pattern_check.hpp"
 #include "scene/json_text.hpp"
 #include "scene/overrides.hpp"
 
@@ -476,7 +476,7 @@ Output read_output(ObjectReader& top, const std::string& name) {
   output.dir = r.string("dir", output.dir.string());
   output.pattern = r.string("pattern", output.pattern);
   // Checked for every command, not only render: a scene is valid or not whatever is done with it.
-  output::check_frame_pattern(output.pattern, top.file().string());
+  check_frame_pattern(output.pattern, top.file().string());
   r.reject_unknown();
   return output;
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "geometry/mesh_repair.hpp"
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
@@ -112,8 +113,8 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
     const std::string key = "bodies." + std::to_string(b);
-    mesh::LoadedMesh loaded =
-        mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits, spec.repair, after_phase);
+    mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits,
+                                                     {spec.repair, geometry::repair_mesh}, after_phase);
     for (std::string& note : loaded.notes) {
       if (spec.split && note.find("separate closed parts") != std::string::npos) continue;  // split below
       notes.push_back(std::move(note));

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "render/gl_backend.hpp"
+#include "render/gl_backend_choice.hpp"
 #include "test_context.hpp"
 
 namespace {

@@ -9,8 +9,8 @@
 #include "frames/frame_loop.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/png_codec.hpp"
-#include "output/render_sink.hpp"
 #include "output/tile_label.hpp"
+#include "render/render_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
@@ -76,11 +76,11 @@ class RenderPipeline : public testing::Test {
     render::Renderer renderer(render_test::gl_context(), render::settings_from_scene(run_->scene));
     run_->camera = renderer.camera();
 
-    output::RenderOutputs outputs;
+    render::RenderOutputs outputs;
     outputs.dir = run_->dir;
     outputs.figure_frames = run_->scene.render.figure_frames;
     outputs.last_frame = clock.frame_count;
-    output::RenderSink render_sink(renderer, outputs);
+    render::RenderSink render_sink(renderer, outputs);
     CentreOfMassSink centres;
     frames::FrameSink* sinks[] = {&centres, &render_sink};
     frames::run_frames(world, clock, sinks);

@@ -8,6 +8,7 @@
 #include "output/frame_pattern.hpp"
 #include "output/png_codec.hpp"
 #include "output/png_writer.hpp"
+#include "scene/frame_pattern_check.hpp"
 #include "test_context.hpp"
 
 namespace {
@@ -67,12 +68,12 @@ TEST(PngWriter, ReportsAFailedWrite) {
 }
 
 TEST(FramePattern, AcceptsPrintfIntegerPatternsFfmpegReads) {
-  EXPECT_NO_THROW(output::check_frame_pattern("frame_%04d.png", "s.json"));
-  EXPECT_NO_THROW(output::check_frame_pattern("%d.png", "s.json"));
+  EXPECT_NO_THROW(scene::check_frame_pattern("frame_%04d.png", "s.json"));
+  EXPECT_NO_THROW(scene::check_frame_pattern("%d.png", "s.json"));
   EXPECT_EQ(output::frame_file_name("frame_%04d.png", 7), "frame_0007.png");
   for (const char* bad : {"frame.png", "frame_%s.png", "frame_%04d_%d.png", "frame_%04d.jpg", "a/frame_%04d.png"}) {
     try {
-      output::check_frame_pattern(bad, "s.json");
+      scene::check_frame_pattern(bad, "s.json");
       ADD_FAILURE() << bad << " was accepted";
     } catch (const softbody::InputError& e) {
       EXPECT_NE(std::string(e.what()).find("output.pattern"), std::string::npos) << e.what();

@@ -1,5 +1,5 @@
 // Backend names, the backends of this build, and the choice between the scene and SOFTBODY_GL.
-#include "render/gl_backend.hpp"
+#include "render/gl_backend_choice.hpp"
 
 #include <array>
 #include <utility>

@@ -18,12 +18,12 @@
 #include "output/video_writer.hpp"
 #include "render/renderer.hpp"
 
-namespace output {
+namespace render {
 
 // What the render run writes.
 struct RenderOutputs {
   std::filesystem::path dir;                   // PNG frames and figure.png
-  std::string pattern = "frame_%04d.png";      // checked with check_frame_pattern
+  std::string pattern = "frame_%04d.png";      // checked with scene::check_frame_pattern
   bool write_frames = true;                    // the PNG sequence
   std::optional<std::filesystem::path> video;  // an MP4 when set
   int fps = 30;                                // the video's frame rate
@@ -42,20 +42,20 @@ struct RenderOutputs {
 // Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.
 struct RenderTimings {
   int frames = 0;
-  double snapshot_s = 0.0;    // World → FrameMesh
-  double render_s = 0.0;      // normals, uploads, shadow and main passes, MSAA resolve, glFinish
-  double read_back_s = 0.0;   // glReadPixels and the flip into an Image
-  double video_s = 0.0;       // render thread: handing frames to the video writer thread (a copy, or waiting
-                              // for its queue), and waiting for ffmpeg to finish
-  double figure_s = 0.0;      // shrinking frames into the contact sheet and writing figure.png
-  double queue_wait_s = 0.0;  // render thread blocked on a full PNG queue
-  PngWriterTimings png;       // on the writer thread: encode and store
+  double snapshot_s = 0.0;       // World → FrameMesh
+  double render_s = 0.0;         // normals, uploads, shadow and main passes, MSAA resolve, glFinish
+  double read_back_s = 0.0;      // glReadPixels and the flip into an Image
+  double video_s = 0.0;          // render thread: handing frames to the video writer thread (a copy, or waiting
+                                 // for its queue), and waiting for ffmpeg to finish
+  double figure_s = 0.0;         // shrinking frames into the contact sheet and writing figure.png
+  double queue_wait_s = 0.0;     // render thread blocked on a full PNG queue
+  output::PngWriterTimings png;  // on the writer thread: encode and store
 };
 
 class RenderSink final : public frames::CapturingFrameSink {
  public:
   // Starts the PNG writer and ffmpeg (when asked for); `renderer` must outlive the sink.
-  RenderSink(render::Renderer& renderer, RenderOutputs outputs);
+  RenderSink(Renderer& renderer, RenderOutputs outputs);
 
   // Copies the bodies' surfaces (positions and triangles) out of the world.
   void capture(int index, double time_s, const sim::World& world) override;
@@ -79,16 +79,16 @@ class RenderSink final : public frames::CapturingFrameSink {
   // The video from the PNG files 0 .. last_frame (video_from_files).
   void encode_video_from_files();
 
-  render::Renderer& renderer_;
+  Renderer& renderer_;
   RenderOutputs outputs_;
-  std::vector<render::FrameMesh> meshes_;  // the captured frame
+  std::vector<FrameMesh> meshes_;  // the captured frame
   int captured_index_ = 0;
   softbody::Image frame_;
-  std::optional<PngWriter> png_writer_;
-  std::unique_ptr<VideoWriter> video_;  // ffmpeg fed from its own thread
-  std::optional<ContactSheet> figure_;
+  std::optional<output::PngWriter> png_writer_;
+  std::unique_ptr<output::VideoWriter> video_;  // ffmpeg fed from its own thread
+  std::optional<output::ContactSheet> figure_;
   bool figure_written_ = false;
   RenderTimings timings_;
 };
 
-}  // namespace output
+}  // namespace render

@@ -1,5 +1,5 @@
 // Rendering each frame and handing the image to the outputs.
-#include "output/render_sink.hpp"
+#include "render/render_sink.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "output/mesh_snapshot.hpp"
 #include "output/png_codec.hpp"
 
-namespace output {
+namespace render {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -25,20 +25,21 @@ constexpr std::size_t kPngQueueFrames = 2;  // frames waiting for the writer: en
 
 }  // namespace
 
-RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
-    : renderer_(renderer), outputs_(std::move(outputs)) {
-  const render::RenderSettings& settings = renderer_.settings();
+RenderSink::RenderSink(Renderer& renderer, RenderOutputs outputs) : renderer_(renderer), outputs_(std::move(outputs)) {
+  const RenderSettings& settings = renderer_.settings();
   if (outputs_.write_frames) png_writer_.emplace(kPngQueueFrames);
   if (outputs_.video && !outputs_.video_from_files) {
-    video_ = std::make_unique<VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
+    video_ =
+        std::make_unique<output::VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   }
   std::vector<int> figure_frames = outputs_.figure_frame_list;
-  if (figure_frames.empty()) figure_frames = evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame);
+  if (figure_frames.empty()) figure_frames = output::evenly_spaced_frames(outputs_.figure_frames, outputs_.last_frame);
   if (!figure_frames.empty()) {
     figure_.emplace(std::move(figure_frames), settings.width_px, settings.height_px);
     for (int index = 0; index <= outputs_.resumed_after; ++index) {
       if (figure_->wants(index)) {
-        figure_->add(index, read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)), time_label(index));
+        figure_->add(index, output::read_png(outputs_.dir / output::frame_file_name(outputs_.pattern, index)),
+                     time_label(index));
       }
     }
   }
@@ -46,7 +47,7 @@ RenderSink::RenderSink(render::Renderer& renderer, RenderOutputs outputs)
 
 void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) {
   auto start = Clock::now();
-  snapshot_surfaces(world, meshes_);
+  output::snapshot_surfaces(world, meshes_);
   captured_index_ = index;
   lap(start, timings_.snapshot_s);
 }
@@ -68,7 +69,7 @@ void RenderSink::deliver() {
     lap(start, timings_.figure_s);
   }
   if (png_writer_) {
-    png_writer_->write(outputs_.dir / frame_file_name(outputs_.pattern, index), std::move(frame_));
+    png_writer_->write(outputs_.dir / output::frame_file_name(outputs_.pattern, index), std::move(frame_));
     lap(start, timings_.queue_wait_s);
   }
   ++timings_.frames;
@@ -98,10 +99,10 @@ void RenderSink::finish(bool complete) {
 
 void RenderSink::encode_video_from_files() {
   auto start = Clock::now();
-  const render::RenderSettings& settings = renderer_.settings();
-  VideoWriter video(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
+  const RenderSettings& settings = renderer_.settings();
+  output::VideoWriter video(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);
   for (int index = 0; index <= outputs_.last_frame; ++index) {
-    video.write(read_png(outputs_.dir / frame_file_name(outputs_.pattern, index)));
+    video.write(output::read_png(outputs_.dir / output::frame_file_name(outputs_.pattern, index)));
   }
   video.finish();
   lap(start, timings_.video_s);
@@ -115,14 +116,14 @@ std::string RenderSink::time_label(int index) const {
 
 void RenderSink::write_figure() {
   auto start = Clock::now();
-  write_file_atomically(outputs_.dir / "figure.png", encode_png(figure_->image()));
+  output::write_file_atomically(outputs_.dir / "figure.png", output::encode_png(figure_->image()));
   figure_written_ = true;
   lap(start, timings_.figure_s);
 }
 
 void RenderSink::remove_stale_frames() const {
   for (int index = outputs_.last_frame + 1;; ++index) {
-    const std::filesystem::path stale = outputs_.dir / frame_file_name(outputs_.pattern, index);
+    const std::filesystem::path stale = outputs_.dir / output::frame_file_name(outputs_.pattern, index);
     std::error_code ec;
     if (!std::filesystem::remove(stale, ec)) return;
   }
@@ -139,4 +140,4 @@ std::optional<std::filesystem::path> RenderSink::figure_path() const {
   return outputs_.dir / "figure.png";
 }
 
-}  // namespace output
+}  // namespace render
