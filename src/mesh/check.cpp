@@ -50,6 +50,15 @@ double signed_volume(const TriMesh& mesh) {
   return six_volume / 6.0;
 }
 
+double surface_area(const TriMesh& mesh) {
+  double area = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    area += 0.5 * (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return area;
+}
+
 EdgeCounts count_edges(const TriMesh& mesh) {
   struct Use {
     int count = 0;

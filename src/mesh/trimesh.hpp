@@ -24,4 +24,7 @@ struct TriMesh {
 // Signed enclosed volume by the divergence theorem: V = Σ x_a·(x_b × x_c) / 6  [m³].
 double signed_volume(const TriMesh& mesh);
 
+// Surface area: A = Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²].
+double surface_area(const TriMesh& mesh);
+
 }  // namespace mesh

@@ -48,17 +48,6 @@ void check_placed(const std::vector<softbody::Vec3>& x, const std::string& key_p
   }
 }
 
-double surface_area(const mesh::TriMesh& m) {
-  double area = 0.0;  // Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²]
-  for (const softbody::Triangle& t : m.triangles) {
-    const auto& a = m.vertices[static_cast<std::size_t>(t[0])];
-    area +=
-        0.5 *
-        (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
-  }
-  return area;
-}
-
 // The meshes a body's mesh becomes: itself, or with "split" one per separate closed part (each validated:
 // a part may be wound inside out on its own), with their shares of the body's mass and nRT.
 struct BodyPart {
@@ -80,11 +69,11 @@ std::vector<BodyPart> parts_of(mesh::LoadedMesh& loaded, const scene::Body& spec
   for (mesh::TriMesh& part : mesh::split_parts(loaded.mesh, parts)) {
     mesh::validate_closed(part, notes);
     bodies.push_back({std::move(part)});
-    area += surface_area(bodies.back().mesh);
+    area += mesh::surface_area(bodies.back().mesh);
     volume += mesh::signed_volume(bodies.back().mesh);
   }
   for (BodyPart& part : bodies) {
-    part.mass_share = surface_area(part.mesh) / area;
+    part.mass_share = mesh::surface_area(part.mesh) / area;
     part.pressure_share = mesh::signed_volume(part.mesh) / volume;
   }
   notes.push_back(key_path + ".split: the mesh's " + std::to_string(parts.count) + " separate closed parts are " +

@@ -14,22 +14,11 @@ namespace {
 
 constexpr double kMostProxyVertices = 1e6;  // as "resolution": N allows
 
-double area_of(const mesh::TriMesh& m) {
-  double area = 0.0;  // Σ ½ |(x_b − x_a) × (x_c − x_a)|  [mesh units²]
-  for (const softbody::Triangle& t : m.triangles) {
-    const auto& a = m.vertices[static_cast<std::size_t>(t[0])];
-    area +=
-        0.5 *
-        (m.vertices[static_cast<std::size_t>(t[1])] - a).cross(m.vertices[static_cast<std::size_t>(t[2])] - a).norm();
-  }
-  return area;
-}
-
 mesh::TriMesh remesh_for(const mesh::TriMesh& detailed, const scene::Body& spec, const std::string& key) {
   if (spec.resolution_vertices > 0) return geometry::remesh_to_vertex_count(detailed, spec.resolution_vertices);
   const double edge = spec.resolution_edge_length_m / spec.scale;  // mesh units
   // V ≈ 2A / (√3 L²): V vertices of equilateral triangles of side L tile area A (2V triangles).
-  const double expected_vertices = 2.0 * area_of(detailed) / (std::sqrt(3.0) * edge * edge);
+  const double expected_vertices = 2.0 * mesh::surface_area(detailed) / (std::sqrt(3.0) * edge * edge);
   if (!(expected_vertices <= kMostProxyVertices)) {
     char text[256];
     std::snprintf(text, sizeof text,
