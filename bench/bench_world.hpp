@@ -4,7 +4,7 @@
 #include <string>
 
 #include "scene/scene.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace bench {
 

@@ -11,10 +11,10 @@
 #include "frames/frame_clock.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/energy.hpp"
-#include "sim/forces.hpp"
+#include "sim/forces/energy.hpp"
+#include "sim/forces/forces.hpp"
 #include "sim/integrators/newton_euler.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace bench {
 

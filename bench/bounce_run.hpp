@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "sim/settings.hpp"
-#include "sim/world.hpp"
+#include "sim/model/settings.hpp"
+#include "sim/step/world.hpp"
 
 namespace bench {
 

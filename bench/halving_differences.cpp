@@ -13,7 +13,7 @@
 #include "frames/frame_clock.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace {
 

@@ -14,7 +14,7 @@
 #include "bounce_run.hpp"
 #include "reference_cache.hpp"
 #include "setup/build_world.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 #include "trajectory_error.hpp"
 
 namespace {

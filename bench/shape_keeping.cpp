@@ -14,9 +14,9 @@
 #include "core/errors.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/forces.hpp"
-#include "sim/stability.hpp"
-#include "sim/world.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/world.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "test_helpers.hpp"
 
 namespace {

@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "setup/build_world.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/world.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
 namespace {

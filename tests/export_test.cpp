@@ -9,7 +9,7 @@
 #include "mesh/load.hpp"
 #include "output/mesh_exporter.hpp"
 #include "output/mesh_file_writer.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "test_helpers.hpp"
 
 namespace {

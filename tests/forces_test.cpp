@@ -8,8 +8,8 @@
 
 #include "mesh/generators.hpp"
 #include "reference_forces.hpp"
-#include "sim/finite_scan.hpp"
-#include "sim/forces.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/step/finite_scan.hpp"
 
 namespace {
 

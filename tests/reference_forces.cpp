@@ -1,7 +1,7 @@
 // Reference springs, dampers and gas for the force tests.
 #include "reference_forces.hpp"
 
-#include "sim/forces.hpp"
+#include "sim/forces/forces.hpp"
 
 namespace reference {
 

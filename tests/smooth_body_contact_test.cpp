@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/body_collision.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/world.hpp"
+#include "sim/contact/body_collision.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
 namespace {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/diagnostics.hpp"
-#include "sim/smooth_contact.hpp"
-#include "sim/world.hpp"
+#include "sim/contact/smooth_contact.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 #include "core/errors.hpp"
 #include "frames/frame_selection.hpp"
 #include "output/state_cache.hpp"
-#include "sim/state_codec.hpp"
-#include "sim/world.hpp"
+#include "sim/model/state_codec.hpp"
+#include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 
 namespace testing_support {
 

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace testing_support {
 

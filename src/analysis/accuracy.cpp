@@ -12,7 +12,7 @@
 #include "frames/frame_clock.hpp"
 #include "frames/frame_loop.hpp"
 #include "setup/build_world.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace analysis {
 

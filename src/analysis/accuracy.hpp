@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
-#include "sim/body.hpp"
+#include "sim/model/body.hpp"
 
 namespace analysis {
 
@@ -51,7 +51,7 @@ struct AccuracyRun {
   double rms_error_m = 0.0;    // RMS over every frame after frame 0 and every vertex of |x − x_ref|
   double final_error_m = 0.0;  // RMS over vertices at the last frame
   RunStatus status = RunStatus::Ok;
-  // A fixed step above the integrator's estimated stable dt (sim/stability.hpp). With a smooth contact's
+  // A fixed step above the integrator's estimated stable dt (sim/step/stability.hpp). With a smooth contact's
   // regularised friction such a run need not blow up (the friction force is bounded by μN), so its error is
   // finite, but it is not in the asymptotic range: fit orders without these runs.
   bool above_stable_dt = false;

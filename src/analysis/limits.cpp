@@ -7,7 +7,7 @@
 
 #include "analysis/stable_dt.hpp"
 #include "mesh/generators.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace analysis {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace analysis {
 
@@ -20,7 +20,7 @@ struct LimitRow {
   LimitBody body;
   sim::IntegratorKind integrator;
   bool floor;            // resting on the paper floor (else free flight)
-  double estimate_dt_s;  // sim/stability.hpp
+  double estimate_dt_s;  // sim/step/stability.hpp
   double measured_dt_s;  // largest stable dt found by bisection (3 %)
   double unstable_dt_s;  // smallest unstable dt found
 };

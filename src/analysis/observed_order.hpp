@@ -40,7 +40,7 @@ LineFit least_squares_line(std::span<const double> x, std::span<const double> y)
 ObservedOrder observed_order(std::vector<SweepPoint> points);
 
 // A fixed-step run counts towards its method's order only well inside the stability region: at most this
-// fraction of the method's estimated stable dt (sim/stability.hpp). Nearer the edge the error can grow faster
+// fraction of the method's estimated stable dt (sim/step/stability.hpp). Nearer the edge the error can grow faster
 // than h^p (a mode's amplification factor is far from e^{λh}), or stay bounded without converging (the smooth
 // contact's friction is bounded by μN), and the fit reads too high or too low.
 inline constexpr double kOrderFitStableFraction = 0.5;

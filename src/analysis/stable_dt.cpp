@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 
 namespace analysis {
 namespace {

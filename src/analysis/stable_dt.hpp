@@ -3,7 +3,7 @@
 
 #include <functional>
 
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace analysis {
 

@@ -11,10 +11,10 @@
 #include "analysis/stable_dt.hpp"
 #include "core/errors.hpp"
 #include "mesh/generators.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/diverged.hpp"
-#include "sim/stability.hpp"
-#include "sim/world.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/diverged.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/world.hpp"
 
 namespace analysis {
 namespace {

@@ -47,7 +47,7 @@ struct StressResult {
   bool spec_adaptive() const { return spec.integrator == sim::IntegratorKind::Rk45; }
   // The travel limit's promise broken on an impact: a dropped body, at a dt the estimate calls stable (which
   // includes the contact limit of a tenth of the shortest edge per step at the speed of the fall,
-  // sim/stability.hpp), had a vertex go more than kDeepPenetrationEdges edges into the floor in one step: the
+  // sim/step/stability.hpp), had a vertex go more than kDeepPenetrationEdges edges into the floor in one step: the
   // step carried it through, and the projection crushed the body. (Other groups record the depth only: a gas
   // of 1e5 J that blows the body up drives vertices faster than any speed the estimate sees at the start.)
   bool penetrated_within_estimate() const {

@@ -8,7 +8,7 @@
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "scene/scene_json.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace app {
 namespace {

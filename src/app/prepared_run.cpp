@@ -8,7 +8,7 @@
 #include "frames/stop_request.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace app {
 

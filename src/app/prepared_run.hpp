@@ -8,7 +8,7 @@
 #include "frames/frame_clock.hpp"
 #include "frames/frame_loop.hpp"
 #include "scene/scene.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace app {
 

@@ -2,7 +2,7 @@
 // once per frame, then finish() once, also when the run stops early (so frames already written stay).
 #pragma once
 
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace frames {
 

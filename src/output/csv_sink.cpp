@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "output/atomic_file.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 
 namespace output {
 

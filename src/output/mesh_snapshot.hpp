@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "render/frame_mesh.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace output {
 

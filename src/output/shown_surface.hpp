@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace output {
 

@@ -11,7 +11,7 @@
 
 #include "core/errors.hpp"
 #include "output/atomic_file.hpp"
-#include "sim/state_codec.hpp"
+#include "sim/model/state_codec.hpp"
 
 namespace output {
 namespace {

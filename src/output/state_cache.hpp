@@ -2,7 +2,7 @@
 // rendered later, elsewhere and in parallel without simulating again, and a killed run can continue.
 //
 //   DIR/cache.json          the manifest: format, scene hash, every N, the run's last frame, complete or not
-//   DIR/state_000120.bin    frame 120: a 96-byte header, then the State (sim/state_codec.hpp)
+//   DIR/state_000120.bin    frame 120: a 96-byte header, then the State (sim/model/state_codec.hpp)
 //
 // Header (little-endian): magic "SOFTBODY STATE\n\0" (16 bytes), u32 file format, u32 state codec version,
 // u64 scene hash (setup/scene_hash.hpp), i32 frame, u32 bodies, f64 time [s], char[16] integrator name,
@@ -16,8 +16,8 @@
 #include <string>
 
 #include "frames/capturing_sink.hpp"
-#include "sim/model.hpp"
-#include "sim/state.hpp"
+#include "sim/model/model.hpp"
+#include "sim/model/state.hpp"
 
 namespace output {
 

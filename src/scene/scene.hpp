@@ -11,8 +11,8 @@
 #include "core/vec.hpp"
 #include "mesh/mesh_limits.hpp"
 #include "mesh/repair_options.hpp"
-#include "sim/intent.hpp"
-#include "sim/settings.hpp"
+#include "sim/model/intent.hpp"
+#include "sim/model/settings.hpp"
 
 namespace scene {
 
@@ -32,7 +32,7 @@ struct Body {
   double stiffness_N_per_m = 1000.0;  // each edge spring (Hooke)
   double damping_N_s_per_m = 1.0;     // each spring's damper, along the spring
   double pressure_J = 50.0;           // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
-  double bending_N_per_m = 0.0;       // "bending": k_b of the bending links (sim/bending.hpp) [N/m]; 0: none
+  double bending_N_per_m = 0.0;       // "bending": k_b of the bending links (sim/forces/bending.hpp) [N/m]; 0: none
   bool split = false;                 // "split": each separate closed part of the mesh becomes its own body
   mesh::RepairOptions repair;         // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
   // "resolution": N simulates the body on an isotropic remesh of its mesh with about N vertices (the proxy),
@@ -43,7 +43,7 @@ struct Body {
   Pattern pattern = Pattern::None;  // checker: 8 × 4 cells by direction from the centre; stripes: 8 meridians
   sim::BodyIntent intent;  // "stiffness": {...}, "damping": {"ratio": ζ}, "pressure": {"inflation": f, "start": ...},
                            // "bending": {"ratio": r}
-                           // instead of numbers, resolved against the mesh by sim/intent.hpp
+                           // instead of numbers, resolved against the mesh by sim/model/intent.hpp
   std::array<float, 3> color = {0.80f, 0.12f, 0.07f};  // linear RGB in [0, 1] (a tomato red once sRGB-encoded)
 };
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "sim/skin.hpp"
+#include "sim/model/skin.hpp"
 
 namespace setup {
 

@@ -10,8 +10,8 @@
 #include "mesh/parts.hpp"
 #include "setup/bind_skin.hpp"
 #include "setup/simulation_proxy.hpp"
-#include "sim/bending.hpp"
-#include "sim/intent.hpp"
+#include "sim/forces/bending.hpp"
+#include "sim/model/intent.hpp"
 
 namespace setup {
 namespace {

@@ -8,7 +8,7 @@
 #include "core/after_phase.hpp"
 #include "mesh/trimesh.hpp"
 #include "scene/scene.hpp"
-#include "sim/world.hpp"
+#include "sim/step/world.hpp"
 
 namespace setup {
 

@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "mesh/generators.hpp"
-#include "sim/bending.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/dynamics.hpp"
-#include "sim/energy.hpp"
-#include "sim/world.hpp"
+#include "sim/forces/bending.hpp"
+#include "sim/forces/dynamics.hpp"
+#include "sim/forces/energy.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/world.hpp"
 
 namespace {
 

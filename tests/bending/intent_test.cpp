@@ -10,10 +10,10 @@
 #include "mesh/generators.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/dynamics.hpp"
-#include "sim/forces.hpp"
-#include "sim/intent.hpp"
-#include "sim/world.hpp"
+#include "sim/forces/dynamics.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/model/intent.hpp"
+#include "sim/step/world.hpp"
 
 namespace {
 

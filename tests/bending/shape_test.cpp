@@ -9,10 +9,10 @@
 #include "analysis/shape_deviation.hpp"
 #include "core/errors.hpp"
 #include "mesh/generators.hpp"
-#include "sim/bending.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/stability.hpp"
-#include "sim/world.hpp"
+#include "sim/forces/bending.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/world.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "support.hpp"
 
 namespace {

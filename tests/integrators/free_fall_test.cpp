@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "support.hpp"
 
 namespace {

@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/body_collision.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/integrators/body_contact_potential.hpp"
+#include "sim/contact/body_collision.hpp"
+#include "sim/contact/body_contact_potential.hpp"
 #include "sim/integrators/newton_euler.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "support.hpp"
 
 namespace {
@@ -111,7 +111,7 @@ TEST(NewtonContactPotential, HessianIsTheDerivativeOfTheGradient) {
   EXPECT_LT(error, 1e-6);
 }
 
-// At the lag point the contact terms' −∇ is the smooth contact's force (sim/body_collision.hpp) at the backward
+// At the lag point the contact terms' −∇ is the smooth contact's force (sim/contact/body_collision.hpp) at the backward
 // Euler velocity v' = (x − x_n)/h: the minimiser of E is backward Euler of the very force rk4 and the others see.
 TEST(NewtonContactPotential, MinusTheGradientIsTheSmoothContactForce) {
   PressedPotential p(1.0 / 60);

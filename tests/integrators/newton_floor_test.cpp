@@ -8,10 +8,10 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/energy.hpp"
-#include "sim/integrators/block_system.hpp"
+#include "sim/forces/energy.hpp"
 #include "sim/integrators/incremental_potential.hpp"
 #include "sim/integrators/newton_euler.hpp"
+#include "sim/solvers/block_system.hpp"
 #include "support.hpp"
 
 namespace {

@@ -8,10 +8,10 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include "sim/diagnostics.hpp"
-#include "sim/integrators/block_system.hpp"
 #include "sim/integrators/incremental_potential.hpp"
 #include "sim/integrators/newton_euler.hpp"
+#include "sim/solvers/block_system.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "support.hpp"
 
 namespace {

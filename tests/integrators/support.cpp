@@ -11,7 +11,7 @@
 #include "analysis/observed_order.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 
 namespace integrator_tests {
 

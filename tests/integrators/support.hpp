@@ -9,9 +9,9 @@
 #include <Eigen/Core>
 
 #include "scene/scene.hpp"
-#include "sim/integrators/block_system.hpp"
 #include "sim/integrators/incremental_potential.hpp"
-#include "sim/world.hpp"
+#include "sim/solvers/block_system.hpp"
+#include "sim/step/world.hpp"
 
 namespace integrator_tests {
 

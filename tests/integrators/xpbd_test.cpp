@@ -11,11 +11,11 @@
 #include "frames/frame_clock.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/body_collision.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/edge_colouring.hpp"
-#include "sim/stability.hpp"
-#include "sim/world.hpp"
+#include "sim/contact/body_collision.hpp"
+#include "sim/solvers/edge_colouring.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/world.hpp"
 #include "support.hpp"
 
 namespace {
@@ -67,7 +67,7 @@ TEST(Xpbd, OneSpringCarriedSubstepIsBackwardEuler) { expect_one_spring_substep_i
 // from its rest shape: it inflates and settles at the volume where the springs balance the gas. The carried
 // form (xpbd.hpp) carries that load from substep to substep, so at h ω_max ≤ 1.8 it settles where 32 times the
 // substeps do; the classical form (h ω_max ≥ 2.1, above the switch at 1.9) settles inflated, because one
-// Gauss–Seidel pass per substep leaves the network short of the load (the bias of sim/stability.hpp). Measured
+// Gauss–Seidel pass per substep leaves the network short of the load (the bias of sim/step/stability.hpp). Measured
 // (ω_max 999 rad/s): carried at 10 substeps per 1/60 s within 5e-7 of 320 substeps, classical at 7 +1.57 %.
 constexpr const char* kFloatingBall = R"({ "fps": 60, "gravity": [0, 0, 0],
   "bodies": [ { "mesh": "icosphere:2", "mass": 1.0, "stiffness": 1000.0, "damping": 2.0, "pressure": 50.0 } ] })";

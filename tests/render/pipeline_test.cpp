@@ -14,7 +14,7 @@
 #include "render/renderer.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/step/diagnostics.hpp"
 #include "test_context.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include "analysis/limits.hpp"
 #include "analysis/stable_dt.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 #include "test_helpers.hpp"
 
 namespace {

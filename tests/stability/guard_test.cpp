@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/guard.hpp"
-#include "sim/stability.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/guard.hpp"
+#include "sim/step/stability.hpp"
 #include "test_helpers.hpp"
 
 namespace {

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/intent.hpp"
-#include "sim/stability.hpp"
+#include "sim/model/intent.hpp"
+#include "sim/step/diagnostics.hpp"
+#include "sim/step/stability.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -104,7 +104,7 @@ TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
 }
 
 // The period of the breathing mode that `"stiffness": {"frequency": f}` sets (k = (2πf)²/λ_b with λ_b the
-// Rayleigh quotient of uniform scaling, sim/intent.cpp). Springs only (no gas, no dampers, no gravity, no
+// Rayleigh quotient of uniform scaling, sim/model/intent.cpp). Springs only (no gas, no dampers, no gravity, no
 // floor), started at the rest shape with the breathing velocity v_i = ε (x_i − c), ε = 0.01 1/s (relative
 // amplitude ε/ω ≈ 5e-4: linear). The breathing coordinate s(t) = Σ m_i (x_i − c)·(X_i − c) / Σ m_i |X_i − c|² − 1
 // starts at 0 upwards and crosses 0 every half period; the period is the time between the first and the last

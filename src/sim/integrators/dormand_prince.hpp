@@ -12,7 +12,7 @@ namespace sim {
 //
 // Error estimate: err = RMS_i (ŷ_i − y_i) / (tol + tol·max(|y0_i|, |y_i|)) over every position [m] and
 // velocity [m/s] component, where ŷ − y is the difference of the embedded 4th- and 5th-order solutions.
-// sim::advance_to accepts a step when err <= 1 and sets the next step from err (sim/step_size.hpp).
+// sim::advance_to accepts a step when err <= 1 and sets the next step from err (sim/step/step_size.hpp).
 //
 // Carried over (State::carry.acceleration): the first stage's acceleration a(x, v) of the state, which the
 // last step's seventh stage computed (FSAL).

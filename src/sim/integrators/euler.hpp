@@ -1,7 +1,7 @@
 // Forward (explicit) Euler, the paper's integrator.
 #pragma once
 
-#include "sim/integrators.hpp"
+#include "sim/integrators/integrators.hpp"
 
 namespace sim {
 

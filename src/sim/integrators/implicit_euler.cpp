@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "sim/integrators/spring_jacobian.hpp"
+#include "sim/forces/spring_jacobian.hpp"
 
 namespace sim {
 namespace {

@@ -4,7 +4,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
-#include "sim/integrators.hpp"
+#include "sim/integrators/integrators.hpp"
 
 namespace sim {
 
@@ -12,7 +12,7 @@ namespace sim {
 // of backward Euler, v' = v + Δv, x' = x + h v', with
 //   (M − h ∂f/∂v − h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0).
 // What is linearised and what is not:
-//   - springs (the edges and the bending links, sim/bending.hpp): ∂f/∂x assembled exactly except for the
+//   - springs (the edges and the bending links, sim/forces/bending.hpp): ∂f/∂x assembled exactly except for the
 //     definiteness fix below;
 //   - dampers: ∂f/∂v assembled exactly; their ∂f/∂x (small, non-symmetric) is dropped, as in the paper;
 //   - pressure and gravity: explicit, in f0 only. The gas force's Jacobian is a dense rank-one term plus

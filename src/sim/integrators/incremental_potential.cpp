@@ -6,9 +6,9 @@
 #include <map>
 #include <utility>
 
-#include "sim/energy.hpp"
-#include "sim/forces.hpp"
-#include "sim/integrators/spring_jacobian.hpp"
+#include "sim/forces/energy.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/forces/spring_jacobian.hpp"
 
 namespace sim {
 namespace {

@@ -7,11 +7,11 @@
 
 #include <Eigen/Core>
 
-#include "sim/integrators/block_system.hpp"
-#include "sim/integrators/body_contact_potential.hpp"
-#include "sim/integrators/floor_potential.hpp"
-#include "sim/model.hpp"
-#include "sim/state.hpp"
+#include "sim/contact/body_contact_potential.hpp"
+#include "sim/contact/floor_potential.hpp"
+#include "sim/model/model.hpp"
+#include "sim/model/state.hpp"
+#include "sim/solvers/block_system.hpp"
 
 namespace sim {
 
@@ -21,10 +21,10 @@ namespace sim {
 // with the model's potential U and a dissipation potential D for the dampers [J]:
 //   gravity   U = −Σ m_i g·(x_i − x_n,i)                     (the constant m g·x_n dropped)
 //   springs   U = Σ_e ½ k (|d_e| − L0_e)²,  d_e = x_i − x_j
-//             (and the bending links, sim/bending.hpp: the same with k_b, ℓ0; no gas curvature term)
+//             (and the bending links, sim/forces/bending.hpp: the same with k_b, ℓ0; no gas curvature term)
 //   gas       U = −nRT ln(V / V0) per body, V at guarded_volume()
 //   dampers   D = Σ_e c/(2h) ((Δx_i − Δx_j)·d̂_e)²,  Δx = x − x_n,  d̂_e = d_e / |d_e| at x_n
-//   smooth floor: its spring, dashpot and friction (sim/integrators/floor_potential.hpp; the dashpot's weight and
+//   smooth floor: its spring, dashpot and friction (sim/contact/floor_potential.hpp; the dashpot's weight and
 //             the friction's normal force lagged: taken at x̂ by begin_step(), then wherever update_lags() says)
 //   smooth body contact: the same three per vertex near another body's surface (sim/integrators/
 //             body_contact_potential.hpp; the contact frames lagged too); its Hessian is rank-one terms
@@ -34,7 +34,7 @@ namespace sim {
 // ∂f/∂v of that force, divided by h.
 //
 // The Hessian ∇²E = M/h² + Σ_e K_e + (c/h) Σ_e d̂d̂ᵀ + ∇²U_gas, assembled exactly or made positive definite:
-//   - springs: −∂f/∂x = k [d̂d̂ᵀ + (1 − L0/|d|)(I − d̂d̂ᵀ)] (sim/integrators/spring_jacobian.hpp); definite:
+//   - springs: −∂f/∂x = k [d̂d̂ᵀ + (1 − L0/|d|)(I − d̂d̂ᵀ)] (sim/forces/spring_jacobian.hpp); definite:
 //     a compressed spring's negative geometric term clamped at zero (Choi & Ko 2002), as in `implicit`;
 //   - gas: ∇²(−nRT ln V) = nRT (∇V∇Vᵀ / V² − ∇²V / V). The first term is positive and rank one, u uᵀ with
 //     u = √nRT ∇V / V: it is returned as gas_terms(), applied as u (uᵀp) by the solver, never as a dense
@@ -93,7 +93,7 @@ class IncrementalPotential {
   std::vector<Edge> edges_;
   std::vector<GasTerm> gas_;
   std::vector<double> gas_curvature_;         // per body: nRT / V at the last assemble(), 0 without gas
-  std::vector<std::vector<Vec3>> area_sums_;  // per gas term: Σ 2A n̂ around each vertex (sim/forces.hpp)
+  std::vector<std::vector<Vec3>> area_sums_;  // per gas term: Σ 2A n̂ around each vertex (sim/forces/forces.hpp)
 
   double h_ = 0.0;
   std::vector<Vec3> start_x_;      // x_n

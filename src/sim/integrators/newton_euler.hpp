@@ -5,10 +5,10 @@
 
 #include <Eigen/Core>
 
-#include "sim/integrators.hpp"
-#include "sim/integrators/block_jacobi_cg.hpp"
-#include "sim/integrators/block_system.hpp"
 #include "sim/integrators/incremental_potential.hpp"
+#include "sim/integrators/integrators.hpp"
+#include "sim/solvers/block_jacobi_cg.hpp"
+#include "sim/solvers/block_system.hpp"
 
 namespace sim {
 
@@ -28,7 +28,7 @@ namespace sim {
 // part (BlockSystem: pattern built once per model, values overwritten each iteration), u_b the gas's rank-one
 // term of body b (and the smooth body contact's terms, three per contact over its four vertices), applied as the
 // product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never formed
-// (sim/integrators/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a relative
+// (sim/solvers/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a relative
 // residual of kSolveTolerance: a direct LDLᵀ (Eigen's SimplicialLDLT, AMD order, symbolic analysis once) was measured
 // first and costs far more per step (README "Large steps"), and its fill grows faster than the vertices. Why backward
 // Euler and not BDF2 or the implicit midpoint rule: it is L-stable (stiff modes are damped, not left ringing at 1/60 s

@@ -4,7 +4,7 @@
 #include <array>
 #include <vector>
 
-#include "sim/integrators.hpp"
+#include "sim/integrators/integrators.hpp"
 
 namespace sim {
 

@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "sim/integrators.hpp"
+#include "sim/integrators/integrators.hpp"
 
 namespace sim {
 

@@ -1,7 +1,7 @@
 // Velocity Verlet with one force evaluation per step.
 #pragma once
 
-#include "sim/integrators.hpp"
+#include "sim/integrators/integrators.hpp"
 
 namespace sim {
 

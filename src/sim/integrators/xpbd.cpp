@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/stability.hpp"
+#include "sim/step/stability.hpp"
 
 namespace sim {
 namespace {

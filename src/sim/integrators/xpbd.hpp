@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "sim/edge_colouring.hpp"
-#include "sim/integrators.hpp"
-#include "sim/stability.hpp"
+#include "sim/integrators/integrators.hpp"
+#include "sim/solvers/edge_colouring.hpp"
+#include "sim/step/stability.hpp"
 
 namespace sim {
 
@@ -22,7 +22,7 @@ namespace sim {
 //                multiplied through by k h², which also serves k = 0 (a damper alone) and c = 0:
 //                  Δλ = (−k h² C − c h ∇C·(x − x_prev)) / ((k h² + c h)(w_i + w_j) + 1)      [m·kg]
 //                  x_i += w_i Δλ n̂,  x_j −= w_j Δλ n̂,  n̂ = (x_i − x_j)/|x_i − x_j|, w = 1/m
-//   2b. bending  the same pass over the bending links (sim/bending.hpp) with k_b, c_b and their own colouring,
+//   2b. bending  the same pass over the bending links (sim/forces/bending.hpp) with k_b, c_b and their own colouring,
 //                after the edges (bodies without bending stiffness skip it)
 //   3. velocity  v = (x − x_prev)/h
 //
@@ -32,7 +32,7 @@ namespace sim {
 // falling centre of mass) instead of leading by ½ g h t as a whole first kick makes them (tests/integrators/
 // free_fall_test.cpp); the velocity written out at a frame is the last half substep's, ½ h a behind.
 //
-// The carried form, taken when h ≤ xpbd_carried_dt (sim/stability.hpp; from ω_max of the body at the initial
+// The carried form, taken when h ≤ xpbd_carried_dt (sim/step/stability.hpp; from ω_max of the body at the initial
 // state, springs, gas and contact): every edge and link carries the force its constraint exerted in the last
 // substep, T_e = −Δλ/h² (a tension along the edge, in State::carry.edge_tension_N), step 1 also applies those
 // forces, f_i −= T_e n̂_e at the start of the substep, and step 2 solves only for the change, with C replaced by
@@ -49,11 +49,11 @@ namespace sim {
 // the damper's, explicitly: that one diverged on icosphere:5 at h ω_max 1.08 and needed 188 substeps per 1/60 s.)
 //
 // Why it is the same model: for h → 0 the correction is Δx_i = −h² w_i (k C + c Ċ) n̂ = h² f_i/m_i, the
-// spring-damper force of sim/forces.hpp (in the carried form the carried part and the correction sum to it, to
+// spring-damper force of sim/forces/forces.hpp (in the carried form the carried part and the correction sum to it, to
 // first order: the carried force's direction is the start of the substep's), so the substeps converge to the
 // same ODE as the other integrators, at first order (one Gauss–Seidel sweep, symplectic Euler in the limit). At
 // large h the springs behave like backward Euler: no step limit from them; the explicit gas and gravity in
-// step 1 keep symplectic Euler's limit h < 2/ω_gas (sim/stability.hpp).
+// step 1 keep symplectic Euler's limit h < 2/ω_gas (sim/step/stability.hpp).
 class Xpbd final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;

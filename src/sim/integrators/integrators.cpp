@@ -1,0 +1,29 @@
+// The integrator factory: the settings' kinds to implementations (one file each under integrators/).
+#include "sim/integrators/integrators.hpp"
+
+#include "sim/integrators/dormand_prince.hpp"
+#include "sim/integrators/euler.hpp"
+#include "sim/integrators/implicit_euler.hpp"
+#include "sim/integrators/newton_euler.hpp"
+#include "sim/integrators/runge_kutta4.hpp"
+#include "sim/integrators/symplectic_euler.hpp"
+#include "sim/integrators/velocity_verlet.hpp"
+#include "sim/integrators/xpbd.hpp"
+
+namespace sim {
+
+std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double tolerance) {
+  switch (kind) {
+    case IntegratorKind::Euler: return std::make_unique<ForwardEuler>();
+    case IntegratorKind::Symplectic: return std::make_unique<SymplecticEuler>();
+    case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
+    case IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
+    case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
+    case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
+    case IntegratorKind::Newton: return std::make_unique<NewtonEuler>();
+    case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
+  }
+  return nullptr;
+}
+
+}  // namespace sim

@@ -1,0 +1,146 @@
+// The solver's settings types: integrators (the one list every part of the program reads), floor and
+// body contact, and the solver options. Plain data with defaults; the scene file fills them (src/scene/).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace sim {
+
+// Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in
+// docs/integrators.md. kIntegrators below lists them with their names and properties.
+enum class IntegratorKind {
+  Euler,       // forward Euler (Matyka & Ollila 2003, Eq. 11): first order
+  Symplectic,  // semi-implicit Euler: v from the force, then x from the new v; first order, symplectic
+  Verlet,      // velocity Verlet: second order, one force evaluation per step
+  Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
+  Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
+  Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
+  Newton,      // backward Euler solved by Newton's method on its incremental potential (Gast et al. 2015), every
+               // force implicit (gas included): first order, L-stable, for 1/60 s steps
+  Xpbd,        // substepped extended position-based dynamics (Macklin et al. 2016, 2019): first order, one
+               // constraint pass per substep, springs as compliant constraints: stable at large steps
+};
+
+// What the program needs to know of an integrator besides its code.
+struct IntegratorInfo {
+  IntegratorKind kind;
+  std::string_view name;  // in scene files, on the command line, in CSVs and messages
+  int order;              // convergence order on smooth motion (rk45: 5, its propagated solution)
+  bool adaptive;          // chooses its own step sizes (driven by sim::advance_to)
+  bool explicit_springs;  // the springs limit its stable step (every method but implicit, newton and xpbd)
+  bool position_based;    // velocities follow from positions, v = (x − x_prev)/h, and the friction floor is a
+                          // positional constraint with static friction (xpbd only; sim/contact/contact.hpp)
+};
+
+// Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
+// benchmarks all iterate this list.
+inline constexpr std::array<IntegratorInfo, 8> kIntegrators = {{
+    {IntegratorKind::Euler, "euler", 1, false, true, false},
+    {IntegratorKind::Symplectic, "symplectic", 1, false, true, false},
+    {IntegratorKind::Verlet, "verlet", 2, false, true, false},
+    {IntegratorKind::Rk4, "rk4", 4, false, true, false},
+    {IntegratorKind::Rk45, "rk45", 5, true, true, false},
+    {IntegratorKind::Implicit, "implicit", 1, false, false, false},
+    {IntegratorKind::Newton, "newton", 1, false, false, false},
+    {IntegratorKind::Xpbd, "xpbd", 1, false, false, true},
+}};
+static_assert(
+    [] {
+      for (int i = 0; i < static_cast<int>(kIntegrators.size()); ++i) {
+        if (static_cast<int>(kIntegrators[i].kind) != i) return false;
+      }
+      return true;
+    }(),
+    "kIntegrators lists the integrators in the order of the enum");
+
+constexpr const IntegratorInfo& integrator_info(IntegratorKind integrator) {
+  return kIntegrators[static_cast<int>(integrator)];
+}
+std::string to_string(IntegratorKind integrator);
+// The integrator called `name`, or nothing.
+std::optional<IntegratorKind> integrator_named(std::string_view name);
+
+// How vertices below the floor are handled.
+enum class FloorContact {
+  Paper,     // Matyka & Ollila: a vertex below the floor has its velocity reflected and is put back on it
+  Friction,  // restitution on the normal velocity, Coulomb friction (static and sliding) on the tangential
+  Smooth,    // a penalty spring-damper with regularised Coulomb friction, a force inside a(x, v)
+             // (sim/contact/smooth_contact.hpp)
+};
+std::string to_string(FloorContact contact);
+
+// The rule of an impulse contact (the friction floor, contact between bodies): restitution on the normal
+// approach speed and Coulomb friction on the tangential one (sim/contact/contact_response.hpp).
+struct ContactMaterial {
+  double restitution = 0.5;  // normal speed kept after an impact (0 inelastic .. 1 elastic)
+  double friction = 0.5;     // Coulomb coefficient μ (static = sliding)
+  // Below this approach speed a contact is resting, not an impact: no bounce, so that a body lying on
+  // something does not jitter. 0.05 m/s is the speed gravity gives in 5 ms, well above one step's g·dt.
+  double resting_speed_m_per_s = 0.05;
+};
+
+// The smooth contact's constants, from an intent: how fast a contact pushes back and how much of an impact's
+// speed it returns. Per vertex of mass m the contact is a spring m/τ² and a dashpot 2ζm/τ on the
+// penetration (an oscillator of ω = 1/τ and damping ratio ζ, like MuJoCo's solref), so every vertex, light
+// or heavy, meets the floor on the same time scale, and the stable step it asks for does not depend on the
+// mesh (sim/contact/smooth_contact.hpp derives the force).
+struct SmoothContact {
+  double time_constant_s = 0.002;   // τ = 1/ω: an impact of one vertex lasts about π τ
+  double damping_ratio = -1.0;      // ζ; < 0: from the material's restitution, e = exp(−πζ/√(1−ζ²))
+  double slip_speed_m_per_s = 0.1;  // ε: Coulomb friction is regularised as μ N v_t / √(|v_t|² + ε²); its
+                                    // stiffness μN/ε limits explicit steps (0.01 m/s needed 4× smaller ones)
+  double smoothing_m = 0.002;       // δ: the spring stiffens from 0 to m/τ² over the first δ of penetration
+                                    // (a C² ramp, so that the equations of motion stay smooth: rk4 keeps
+                                    // its order through an impact)
+};
+
+struct Floor {
+  double height_m = 0.0;  // the plane y = height_m
+  FloorContact contact = FloorContact::Paper;
+  ContactMaterial material;  // the friction and smooth contacts' restitution and friction
+  SmoothContact smooth;      // the smooth contact's constants
+};
+
+// How bodies touch each other.
+enum class BodyContactModel {
+  Impulse,  // after each step: a vertex inside is moved out, with restitution and Coulomb friction impulses
+  Smooth,   // a penalty spring-damper with regularised friction inside a(x, v) (sim/contact/body_collision.hpp)
+};
+std::string to_string(BodyContactModel contact);
+
+// Contact between bodies (vertices of one against the triangles of another), when there are several.
+struct BodyContact {
+  BodyContactModel contact = BodyContactModel::Impulse;
+  ContactMaterial material{0.3, 0.5};
+  // The smooth model's constants (its spring acts on the vertex's mass). Stiffer than the floor's by default:
+  // a body often rests on another on few vertices (a coarse mesh's), each of which then carries much more
+  // than its own weight; at τ = 0.5 ms a vertex carrying 200× its weight stays within the 2 mm skin.
+  SmoothContact smooth{0.0005};
+  // The impulse model's push out of a penetration that a step did not itself cause [m/s] (sim::PushLimit): a
+  // vertex found inside another body (or within the contact's thickness of it) is moved out by this step's
+  // approach plus at most this speed times the step. A push moves a vertex without a force, against its springs
+  // and gas, so it adds energy about in proportion to its speed. 0.1 m/s takes a 1 cm overlap out in 0.1 s and,
+  // on two balls started 10 cm into each other, adds less than the impulses take.
+  double push_speed_m_per_s = 0.1;
+};
+
+struct Solver {
+  IntegratorKind integrator = IntegratorKind::Euler;
+  double dt_s = 1e-4;    // requested time step; the run uses the largest dt <= this that divides 1/fps
+                         // (rk45: only the first trial step; it then chooses its own)
+  bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/step/stability.hpp)
+  // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps; 0: dt_s
+  // decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy sim::auto_substeps states.
+  int substeps = 0;
+  bool substeps_auto = false;
+  bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
+  double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
+                            // and velocities [m/s]
+  int threads = 0;          // threads for the force passes of large bodies; 0: one per core. Results do not depend
+                            // on it (sim::kParallelMinVertices)
+};
+
+}  // namespace sim

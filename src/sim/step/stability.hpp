@@ -1,0 +1,173 @@
+// The largest stable time step of a world for each integrator, estimated from its stiffest modes.
+//
+// Design note. Linearised about the initial state, each body is M ẍ = −K x − C ẋ + gas, with K the
+// spring stiffness matrix, C = (c/k) K_dd the damper matrix (dampers act along the springs, so C has the
+// pattern of the springs' axial part K_dd) and a gas term. The bending links (sim/forces/bending.hpp) are springs
+// with k_b and c_b = (c/k) k_b: K and C take them with the weight k_b / k, and C stays (c/k) K_dd. A mode of M⁻¹K_dd
+// with eigenvalue λ [1/kg] therefore has
+//     μ = k λ (1 + r_gas)   squared frequency [1/s²], r_gas = the gas's share relative to the springs
+//     γ = c λ              damping rate [1/s]           (ζ ω = γ / 2: proportional damping)
+// and obeys ẍ = −μ x − γ ẋ. A step of size h multiplies (x, v) of that mode by the integrator's
+// amplification matrix G(h μ, h γ); the step is stable while every mode's spectral radius ρ(G) ≤ 1.
+// The estimate takes λ_max (power iterations on M⁻¹K, bounded above by Gershgorin), samples λ down to
+// λ_max·1e-6 (low modes matter for forward Euler: h < c/k whatever λ), and bisects h for each.
+//
+//   integrator   G for one mode                                undamped limit
+//   euler        I + hA,  A = [[0, 1], [−μ, −γ]]                none (ρ > 1 at every h)
+//   symplectic   v' = v + h a(x, v), x' = x + h v'               h < 2/ω
+//   verlet       kick-drift-kick with cached a (3×3 map)         h < 2/ω
+//   rk4          Σ_{j≤4} (hA)^j / j!                             h < 2.83/ω
+//   rk45         Σ_{j≤5} (hA)^j / j! + (hA)^6 / 600 (DOPRI5)     h < 3.3/ω (step chosen adaptively)
+//   implicit     springs and dampers implicit: no limit; the gas (and a smooth contact) explicit: h < 2/ω_gas
+//   xpbd         springs and dampers as compliant constraints: no limit; the gas explicit: h < 2/ω_gas
+#pragma once
+
+#include <array>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/model/body.hpp"
+#include "sim/model/model.hpp"
+#include "sim/model/settings.hpp"
+#include "sim/model/state.hpp"
+
+namespace sim {
+
+// Power iterations per body: a fixed count, so the estimate costs 100 passes over the edges whatever the
+// mesh (0.75 s of CPU on the 187k-edge ogre); Gershgorin's bound caps λ where they have not converged.
+inline constexpr int kPowerIterations = 100;
+
+// What the estimate knows about one body's fastest modes.
+struct ModeBounds {
+  double lambda_max_per_kg = 0.0;         // λ_max of M⁻¹K_dd with k = 1 (links k_b/k), from power iterations [1/kg]
+  double lambda_gershgorin_per_kg = 0.0;  // Gershgorin's upper bound on the same: max_i (‖K_ii‖ + Σ_j ‖K_ij‖) / m_i
+  double omega2_springs = 0.0;            // k λ [1/s²], with the stretched springs' geometric stiffness
+  double omega2_gas = 0.0;                // the gas's local and breathing stiffness over the mass [1/s²]
+  double damping_rate = 0.0;              // γ = c λ of the fastest mode [1/s] (+ the smooth contact's 2ζω)
+  double omega2_contact = 0.0;            // the smooth floor contact's spring per unit mass, 1/τ² [1/s²]
+  double omega_max() const;               // √(ω²_springs + ω²_gas + ω²_contact) [rad/s]
+};
+
+// Mesh statistics the `info` command prints with the estimate.
+struct BodyStats {
+  int vertices = 0, edges = 0, faces = 0;
+  int valence_min = 0, valence_max = 0;
+  double edge_min_m = 0.0, edge_max_m = 0.0;
+  double mass_min_kg = 0.0, mass_max_kg = 0.0;
+  double rest_volume_m3 = 0.0;
+};
+
+// The stable dt of every integrator, smallest over the model's bodies.
+struct StabilityEstimate {
+  static constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+  std::vector<ModeBounds> bodies;                         // per body
+  std::array<double, kIntegrators.size()> stable_dt_s{};  // indexed by IntegratorKind; 0: unstable at every dt
+  double travel_dt_s = kUnlimited;                        // contact limit (with a floor), already in stable_dt_s
+  int limiting_body = 0;                                  // the body with the highest ω_max
+  double impact_speed_m_per_s = 0.0;                      // the fastest vertex, plus a fall to the floor if any
+  double stable_dt(IntegratorKind integrator) const { return stable_dt_s[static_cast<int>(integrator)]; }
+};
+
+// The safety factor `solver.dt: "auto"` applies to the estimate (contacts and large deformations move
+// the limit a little; measured margins in docs/stability.md).
+constexpr double kAutoDtSafety = 0.7;
+
+BodyStats body_stats(const Body& body, std::span<const Vec3> x);
+ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x);
+
+// Largest h with ρ(G(h)) ≤ 1 for every mode of these bounds (0: none; kUnlimited: no limit).
+double stable_dt(IntegratorKind integrator, const ModeBounds& bounds);
+
+// A contact limit for every integrator when there is a floor: no vertex may travel more than a tenth of
+// the body's shortest edge in one step, at its speed now plus what a fall to the floor adds, √(2 |g| h);
+// so the floor projection sees a fast body (50 m/s) at once and never crushes it in a single step.
+constexpr double kTravelFraction = 0.1;
+
+// Forward Euler's damper limit h < c/k is sharp: at h = c/k every underdamped mode has |g|² = 1 + hλ(hk − c) = 1
+// at once, so nothing is left for the nonlinear terms (stretch-dependent geometric stiffness, the gas); the
+// bisection found the first unstable dt at 1.01 c/k. Its estimate is this fraction of the linear limit.
+constexpr double kSharpLimitMargin = 0.9;
+// Every explicit method with floor contact: the projection moves vertices between steps (measured on the floor,
+// 10 000 steps: Verlet 0.90-0.91, rk4 and rk45 0.99 of their free-flight limits; docs/stability.md).
+constexpr double kContactMargin = 0.9;
+// Symplectic Euler on the floor, further: with the reversal done in its own terms (sim/integrators/
+// symplectic_euler.hpp) the damped bodies keep their free-flight limit, but an undamped one (icosphere:2,
+// k 5000 N/m, nRT 100 J) was stable only to 0.78 × it: the projection y ← floor moves a vertex without
+// changing its velocity, and without dampers nothing takes that energy out again. Measured, not derived;
+// with kContactMargin the estimate is 0.72 × the free-flight one.
+constexpr double kSymplecticProjectionFactor = 0.8;
+// Forward Euler with the paper's floor response (v ← −v, the tangential velocity included). The reversal is
+// not the time reversal of a forward-Euler step (R G R ≠ G⁻¹); for one mode reversed every step, R·(I + hA)
+// has det −(1 − hγ + h²μ) and trace hγ, so an eigenvalue exceeds 1 at every h: each reversal pumps energy
+// (about h²μ/2 of the mode's) that only the dampers remove. How much that costs depends on how strongly the
+// fastest modes are damped, ζ_max = γ/(2ω) = c√λ_max/(2√k): measured on icospheres 0-5 resting on the floor
+// (20 000 steps), stable to 0.85 c/k while ζ_max < 0.5 (icosphere:3, ζ 0.29) but only to 0.35 c/k and
+// 0.30 c/k at ζ_max 0.6 and 1.2 (icosphere:4 and :5). No model gives these numbers; they are measured, and
+// the estimate takes these fractions of c/k (10 % below the largest dt found stable). The friction contact
+// changes only the normal velocity and costs nothing (measured: as free flight).
+constexpr double kPaperEulerFractionLightDamping = 0.75;  // of c/k, ζ_max < kPaperEulerZeta
+constexpr double kPaperEulerFractionHeavyDamping = 0.27;  // of c/k, ζ_max ≥ kPaperEulerZeta
+constexpr double kPaperEulerZeta = 0.5;
+
+// The estimate for a model in `state` (with the contact limit), or for bodies at positions `x`
+// (all bodies' vertices; spring, damper and gas limits only).
+StabilityEstimate estimate_stability(const Model& model, const State& state);
+StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<const Vec3> x);
+
+// The dt `solver.dt: "auto"` uses: kAutoDtSafety × the estimate; the implicit method, whose springs have
+// no limit, is capped at `frame_interval_s`/4 for accuracy. Throws softbody::InputError for forward Euler
+// without dampers (unstable at every dt), naming the key.
+double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
+               const std::string& scene_file);
+
+// xpbd's `solver.substeps: "auto"` (and `dt: "auto"`): the fewest substeps per frame interval whose substep h
+// keeps (1) every body in the carried form, h ≤ xpbd_carried_dt (ω_max: the fastest mode of springs, gas and
+// contact, ModeBounds::omega_max), and (2) the contact travel of every integrator, a tenth of the shortest edge
+// per step (travel_dt_s).
+//
+// The classical form (h ω_max above the limit, or chosen substeps that put it there): the springs set no
+// stability limit (xpbd.hpp), but one constraint pass per substep leaves a pressurised network short of its
+// equilibrium: the ball flies inflated by a bias that grows with h ω_max and, at the same h ω_max, with the mesh
+// (one Gauss–Seidel pass carries a correction only a few edges). Measured on the bounce ball (k 1000 N/m,
+// c 1 N·s/m, nRT 50 J, 1 kg), free-flight volume against symplectic Euler at 2.5e-5 s (icosphere:3) and
+// 1.75e-5 s (icosphere:5):
+//   icosphere:3 (642 vertices, ω_max 2037 rad/s), h ω_max 3.4, 1.7, 0.85, 0.42: +3.0, +1.0, +0.39, +0.16 %
+//   icosphere:5 (10242 vertices, ω_max 8428 rad/s), h ω_max 3.5, 1.75, 0.88:      +6, +2.9, +1.3 %
+// fitted by bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower (within 10 % of each
+// point from 0.85 to 3.5); xpbd_bias_dt solves it for h (auto used it before the carried form). A fit of two
+// meshes and one material: a stiffer or softer body moves ω_max, which the fit follows, but it was not measured.
+constexpr double kXpbdVolumeBias = 0.005;  // the bias xpbd_bias_dt aims for (0.5 % of the volume)
+constexpr double kXpbdBiasScale = 0.0048;  // bias at h ω_max = 1 on icosphere:3
+constexpr double kXpbdBiasPower = 1.25;
+constexpr double kXpbdBiasMeshPower = 0.43;
+constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
+// xpbd takes its carried form (sim/integrators/xpbd.hpp: the constraints' forces of the last substep applied in the
+// prediction, the pass solving for their change) while h ≤ xpbd_carried_dt: h ω_max ≤ kXpbdCarriedPhaseLimit. That
+// form has no volume bias but a stability limit of its explicit part. Measured on the bounce ball (k 1000 N/m,
+// c 1 N·s/m, nRT 50 J, 1 kg, smooth floor; ω_max with the contact; bench_xpbd_convergence, volume and centre of mass
+// against the rk45 1e-8 reference): icosphere:5 (ω_max 8442 rad/s, 1 s) diverged at h ω_max 4.7 (30 substeps per
+// 1/60 s), ran at 3.1 (45) with 4.1 % volume error at the impact, and at 2.3 and 1.9 (60, 75) with 1.3 and 0.46 %,
+// centre of mass 1.7 and 0.35 cm; icosphere:3 (ω_max 2097 rad/s, 3 s) ran at 2.9 (12) with 2.4 % in flight and at
+// 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. (Those runs started with a whole first kick; with the leapfrog
+// start, xpbd.hpp, icosphere:5 at 75 has 1.1 % at the impact and 1.3 cm: README, "The leapfrog start".) The
+// limit takes 1.9: about 1 % on both meshes, 0.6 × the fastest step that stayed stable (a fit of two meshes and
+// one material; the guard stops a run that diverges anyway, and solver.retry halves the substep, which keeps the
+// form).
+constexpr double kXpbdCarriedPhaseLimit = 1.9;
+// The largest substep of the carried form for a body with fastest mode ω_max (kUnlimited: no modes).
+double xpbd_carried_dt(double omega_max);
+// The substep bound of (1) for one body of `vertices` vertices with fastest mode ω_max [s] (kUnlimited: no modes).
+double xpbd_bias_dt(double omega_max, int vertices);
+int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s);
+
+// What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
+// kPaperEuler*; the smooth contact adds its spring and dashpot to every body's fastest mode, a bound: the
+// contact acts on the same vertices as the springs, so the stiffest mode is at most the sum); the travel
+// limit needs velocities and is applied by estimate_stability(model, state).
+void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor);
+// The floor's (if any) and the smooth body contact's (with several bodies) costs.
+void scale_for_contacts(StabilityEstimate& estimate, const Model& model);
+
+}  // namespace sim

@@ -1,0 +1,213 @@
+// The phases of a step and the drivers that run them: fixed steps (with retry) and adaptive steps.
+#include "sim/step/step.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+#include "sim/contact/contact.hpp"
+#include "sim/step/diverged.hpp"
+#include "sim/step/guard.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/step_size.hpp"
+
+namespace sim {
+namespace {
+
+constexpr int kMostSubsteps = 1024;  // solver.retry gives up past this many substeps per step
+
+// Phase 1: the integrator advances x and v (forces evaluated inside). Adaptive integrators return their
+// error estimate (<= 1: within the tolerance), fixed-step ones 0.
+double integrate(const Model& model, State& state, Workspace& workspace, double h, bool with_error) {
+  Dynamics dynamics(model, workspace.forces);
+  workspace.integrator->prepare(dynamics, state);
+  if (with_error) return workspace.integrator->adaptive()->attempt(dynamics, state, h);
+  workspace.integrator->step(dynamics, state, h);
+  return 0.0;
+}
+
+// Phase 2: impulses between bodies after a step of h (a single body does no search; the smooth contact is a
+// force inside phase 1). Returns the contacts resolved.
+int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
+  if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
+  const PushLimit push{h, model.body_contact.push_speed_m_per_s,
+                       !integrator_info(model.solver.integrator).position_based};
+  return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material, push);
+}
+
+// Phase 3: the floor's contact model, after every step of h (xpbd: every substep). Returns the vertices it
+// moved. The paper's model lists the vertices it reversed in state.coasting (symplectic Euler's next step
+// reads them). A position-based integrator's friction floor is the positional constraint with static friction
+// (sim/contact/contact.hpp); the paper's model already is one (y ← floor, v ← −v). The smooth contact is a force and
+// moves none.
+int resolve_floor(const Model& model, State& state, Workspace& workspace, double h) {
+  if (!model.floor) return 0;
+  FloorContactFound found;
+  switch (model.floor->contact) {
+    case FloorContact::Paper:
+      state.coasting.clear();
+      found = resolve_floor_paper(model.floor->height_m, state.x, state.v, state.coasting);
+      break;
+    case FloorContact::Friction:
+      if (integrator_info(model.solver.integrator).position_based) {
+        found = resolve_floor_positional(model.floor->height_m, model.floor->material, h, state.x, state.v);
+      } else {
+        found = resolve_floor_friction(model.floor->height_m, model.floor->material, state.x, state.v);
+      }
+      break;
+    case FloorContact::Smooth:  // a force inside the dynamics: nothing to project, only the depth to report
+      found.deepest_m = deepest_below_floor(model.floor->height_m, state.x);
+      break;
+  }
+  workspace.deepest_floor_penetration_m = std::max(workspace.deepest_floor_penetration_m, found.deepest_m);
+  return found.below;
+}
+
+// Phase 4: the guard. Finite values every step; energy and volume every kFullCheckInterval steps, or every
+// step when `full` (a rejected step can be retried).
+std::optional<Divergence> guard(const Model& model, State& state, bool full) {
+  if (full || ++state.guard.steps_since_full_check >= kFullCheckInterval) {
+    state.guard.steps_since_full_check = 0;
+    return check_all(model, state);
+  }
+  return check_finite(model, state);
+}
+
+// Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
+// carried about the old state is stale (a step with such an event is only first order, whatever the method).
+void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
+  const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h);
+  if (touched > 0) state.carry.acceleration.clear();
+}
+
+// The fixed-step phases of one step of h: integrate → body contacts → floor → guard.
+std::optional<Divergence> fixed_step_phases(const Model& model, State& state, Workspace& workspace, double h) {
+  integrate(model, state, workspace, h, /*with_error=*/false);
+  resolve_contacts(model, state, workspace, h);
+  return guard(model, state, /*full=*/model.solver.retry);
+}
+
+// A step of dt as state.substeps substeps, each checked: the first problem found.
+std::optional<Divergence> run_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
+  for (int s = 0; s < state.substeps; ++s) {
+    if (auto found = fixed_step_phases(model, state, workspace, dt / state.substeps)) return found;
+  }
+  return std::nullopt;
+}
+
+// The stable-dt estimate at the model's initial state (the diverged state says nothing about it).
+StabilityEstimate estimate_at_start(const Model& model) {
+  StabilityEstimate estimate = estimate_stability(model.bodies, model.initial_x);
+  scale_for_contacts(estimate, model);
+  return estimate;
+}
+
+// Throws the divergence of a state at time_s, produced by step `step` of size dt.
+[[noreturn]] void throw_diverged(const Model& model, const Divergence& found, double time_s, long long step,
+                                 double dt) {
+  const StabilityEstimate estimate = estimate_at_start(model);
+  const IntegratorKind integrator = model.solver.integrator;
+  throw DivergedError(DivergenceReport{found, time_s, step, dt, integrator, estimate.stable_dt(integrator),
+                                       estimate.stable_dt(IntegratorKind::Implicit)});
+}
+
+// Keeps the state before a step that may be rejected, with what the step needs from it already evaluated.
+void save_before_step(const Model& model, State& state, Workspace& workspace) {
+  Dynamics dynamics(model, workspace.forces);
+  workspace.integrator->prepare(dynamics, state);
+  workspace.saved = state;
+}
+
+// After the step from workspace.saved failed: the saved state again, in twice the substeps, until a run of
+// them passes the guard (true) or kMostSubsteps fail too (false). Later steps keep the count that worked.
+bool retry_in_more_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
+  while (state.substeps < kMostSubsteps) {
+    const int substeps = 2 * state.substeps;
+    state = workspace.saved;
+    state.substeps = substeps;
+    if (!run_substeps(model, state, workspace, dt)) {
+      ++state.retried_steps;
+      return true;
+    }
+  }
+  return false;
+}
+
+// An adaptive attempt rejected: the state saved before it again, the rejection counted and remembered by the
+// step-size control, and the next attempt's size.
+void reject_attempt(State& state, const Workspace& workspace, double next_dt_s) {
+  state = workspace.saved;
+  record_rejection(state.carry);
+  ++state.rejected_steps;
+  state.next_dt_s = next_dt_s;
+}
+
+}  // namespace
+
+void step(const Model& model, State& state, Workspace& workspace, double dt) {
+  workspace.deepest_floor_penetration_m = 0.0;
+  const bool retry = model.solver.retry;
+  if (retry) save_before_step(model, state, workspace);
+  if (const std::optional<Divergence> found = run_substeps(model, state, workspace, dt)) {
+    if (!retry || !retry_in_more_substeps(model, state, workspace, dt)) {
+      throw_diverged(model, *found, state.time_s + dt, state.steps + 1, dt);
+    }
+  }
+  state.time_s += dt;
+  state.last_dt_s = dt;
+  ++state.steps;
+}
+
+bool advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s, StopQuery stop) {
+  workspace.deepest_floor_penetration_m = 0.0;
+  std::optional<Divergence> last_finding;
+  while (state.time_s < end_time_s) {
+    if (stop && stop()) return false;
+    const double remaining = end_time_s - state.time_s;
+    const bool last = state.next_dt_s >= remaining;
+    const double dt = last ? remaining : state.next_dt_s;
+    constexpr double kSmallestStep = 1e-14;  // relative to the time: below this, t + dt == t in doubles
+    if (dt <= kSmallestStep * std::max(1.0, end_time_s)) {
+      if (last_finding) throw_diverged(model, *last_finding, state.time_s + dt, state.steps + 1, dt);
+      std::ostringstream what;
+      what << "the adaptive step size fell to " << dt << " s; the motion is unstable or solver.tolerance is too small";
+      throw DivergedError(DivergenceReport{{DivergenceKind::StepUnderflow, 0, -1, what.str()},
+                                           state.time_s,
+                                           state.steps,
+                                           dt,
+                                           model.solver.integrator,
+                                           0.0,
+                                           0.0});
+    }
+    // Phase 1 with the error estimate; a rejected attempt returns to the saved state.
+    save_before_step(model, state, workspace);
+    const double error = integrate(model, state, workspace, dt, /*with_error=*/true);
+    const StepSizeDecision decision = decide_step_size(dt, error, state.carry);
+    if (!decision.accepted) {
+      reject_attempt(state, workspace, decision.next_dt_s);
+      continue;
+    }
+    // Phases 2 to 4; the guard rejecting the step: undo it and try a quarter of the step.
+    resolve_contacts(model, state, workspace, dt);
+    if (auto found = guard(model, state, /*full=*/true)) {
+      reject_attempt(state, workspace, 0.25 * dt);
+      last_finding = found;
+      continue;
+    }
+    last_finding.reset();
+    // A step clipped to the frame boundary says little about the natural step: keep the larger one.
+    state.next_dt_s = last ? std::max(decision.next_dt_s, state.next_dt_s) : decision.next_dt_s;
+    state.time_s += dt;
+    state.last_dt_s = dt;
+    ++state.steps;
+    if (last) state.time_s = end_time_s;  // exactly, whatever the round-off of the sum
+  }
+  return true;
+}
+
+void check_before_frame(const Model& model, State& state) {
+  state.guard.steps_since_full_check = 0;
+  if (auto found = check_all(model, state)) throw_diverged(model, *found, state.time_s, state.steps, state.last_dt_s);
+}
+
+}  // namespace sim
