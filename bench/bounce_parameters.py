@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """What each parameter of scenes/bounce.json does to the motion: one parameter changed at a time.
 
-Prints a Markdown table (README "What each parameter does to the picture"). Every run uses dt = 2.5e-5 s,
+Prints a Markdown table (docs/physics/model.md, "What each parameter does"). Every run uses dt = 2.5e-5 s,
 inside forward Euler's stable range for every variant (the least damped one, 0.25 N·s/m on 3000 N/m springs,
 needs dt < c/k = 8.3e-5 s), so that the rows differ by the parameter only. The squash is the ball's height
 (highest minus lowest vertex) at its deepest compression during the first contact, over its diameter at frame 0,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The markdown table of docs/large_steps_bounce.csv (bench_large_steps) for docs/performance.md and the README."""
+"""The markdown table of docs/large_steps_bounce.csv (bench_large_steps) for docs/performance.md."""
 import csv
 import sys
 
