@@ -1,5 +1,6 @@
 // The command line: exit statuses and one clear line per bad input, CSV contract.
 #include <fstream>
+#include <regex>
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,21 @@ TEST(Cli, HelpExplainsCommandsAndExitStatuses) {
   EXPECT_EQ(simulate.exit_status, 0);
   EXPECT_NE(simulate.output.find("--csv"), std::string::npos);
   EXPECT_NE(simulate.output.find("--set"), std::string::npos);
+}
+
+// --version: the version, the commit the program was built from (12 hex digits, "+changes" for a changed work
+// tree, "unknown" outside git) and the licence that LICENSE holds.
+TEST(Cli, VersionNamesCommitAndLicence) {
+  const auto result = run_softbody("--version");
+  EXPECT_EQ(result.exit_status, 0);
+  EXPECT_EQ(result.output.rfind("softbody 0.", 0), 0u) << result.output;
+  const std::regex commit(R"(\(commit ([0-9a-f]{12}(\+changes)?|unknown), build [0-9a-f]{16}\))");
+  EXPECT_TRUE(std::regex_search(result.output, commit)) << result.output;
+  EXPECT_NE(result.output.find("GPL-3.0-or-later"), std::string::npos) << result.output;
+  std::ifstream licence(std::string(SOFTBODY_SOURCE_DIR) + "/LICENSE");
+  std::string first_line;
+  std::getline(licence, first_line);
+  EXPECT_NE(first_line.find("GNU GENERAL PUBLIC LICENSE"), std::string::npos) << first_line;
 }
 
 TEST(Cli, UnknownFlagAndMissingSceneAreBadInput) {

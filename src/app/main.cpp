@@ -6,8 +6,8 @@
 
 #include "app/commands.hpp"
 #include "app/exit_status.hpp"
+#include "app/version.hpp"
 #include "core/errors.hpp"
-#include "setup/build_fingerprint.hpp"
 
 namespace {
 
@@ -24,8 +24,7 @@ constexpr const char* kFooter =
 int main(int argc, char** argv) {
   CLI::App cli("softbody: pressure-model soft bodies (Matyka & Ollila 2003), simulated and rendered off-screen");
   cli.footer(kFooter);
-  cli.set_version_flag("--version", std::string("softbody ") + SOFTBODY_VERSION + " (build " +
-                                        std::string(setup::build_fingerprint()).substr(0, 16) + ")");
+  cli.set_version_flag("--version", app::version_text());
   cli.require_subcommand(1);
   std::map<std::string, app::Action> actions;
   actions["simulate"] = app::register_simulate(cli);

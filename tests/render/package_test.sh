@@ -68,4 +68,6 @@ for backend in egl osmesa; do
 done
 [ -f "$root/usr/share/man/man1/softbody.1.gz" ] || { echo "FAIL: no man page installed"; exit 1; }
 [ -f "$root/usr/share/softbody/scenes/meshes/pillow.obj" ] || { echo "FAIL: the scenes' meshes are not installed"; exit 1; }
+grep -q "^License: GPL-3.0-or-later" "$root/usr/share/doc/softbody/copyright" ||
+  { echo "FAIL: no copyright file naming GPL-3.0-or-later in /usr/share/doc/softbody"; exit 1; }
 echo "package test: OK in $(( $(date +%s) - started )) s"
