@@ -1,10 +1,11 @@
 // The table of scene keys against the parser and the structs: the defaults the parser fills in are the
-// structs' defaults, and messages say the table's ranges.
+// structs' defaults, and the schema generated from the table says what the parser accepts.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "scene/scene_json.hpp"
 #include "scene/scene_keys.hpp"
+#include "scene/scene_schema.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -111,6 +112,22 @@ TEST(SceneKeys, SchemaKeyAcceptedAndLeftOutOfTheSimulation) {
   const scene::Scene plain = scene_from_text(R"({ "bodies": [ { } ] })");
   const scene::Scene named = scene_from_text(R"({ "$schema": "scene.schema.json", "bodies": [ { } ] })");
   EXPECT_EQ(named.simulation_json, plain.simulation_json);
+}
+
+TEST(SceneKeys, SchemaIsGeneratedFromTheTable) {
+  const nlohmann::ordered_json schema = scene::scene_schema();
+  EXPECT_EQ(schema["$schema"], "https://json-schema.org/draft/2020-12/schema");
+  EXPECT_EQ(schema["additionalProperties"], false);
+  EXPECT_EQ(schema["required"], nlohmann::ordered_json::array({"bodies"}));
+  ASSERT_TRUE(schema["properties"].contains("$schema"));
+  for (const scene::Key& key : scene::scene_keys().keys) EXPECT_TRUE(schema["properties"].contains(key.name));
+  const auto& body = schema["properties"]["bodies"]["items"];
+  EXPECT_EQ(body["additionalProperties"], false);
+  EXPECT_EQ(body["properties"]["mass"]["exclusiveMinimum"], 0.0);
+  EXPECT_EQ(body["properties"]["mass"]["default"], 1.0);
+  EXPECT_EQ(body["properties"]["position"]["minItems"], 3);
+  EXPECT_EQ(body["properties"]["position"]["maxItems"], 3);
+  EXPECT_EQ(schema["properties"]["solver"]["properties"]["integrator"]["enum"].size(), sim::kIntegrators.size());
 }
 
 TEST(SceneKeys, RangeWordsAreTheMessagesWords) {
