@@ -29,5 +29,6 @@ Action add_accuracy_options(CLI::App& command);
 Action register_render(CLI::App& parent);
 Action register_info(CLI::App& parent);
 Action register_prepare(CLI::App& parent);
+Action register_schema(CLI::App& parent);
 
 }  // namespace app

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   actions["render"] = app::register_render(cli);
   actions["info"] = app::register_info(cli);
   actions["prepare"] = app::register_prepare(cli);
+  actions["schema"] = app::register_schema(cli);
 
   try {
     cli.parse(argc, argv);

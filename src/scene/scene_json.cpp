@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +16,7 @@
 #include "scene/frame_pattern_check.hpp"
 #include "scene/json_text.hpp"
 #include "scene/overrides.hpp"
+#include "scene/scene_keys.hpp"
 
 namespace scene {
 namespace {
@@ -28,27 +29,19 @@ std::string describe(const json& value) { return describe_json(value); }
 // Scene files larger than this are refused before they are read (the largest scene here is 2 kB).
 constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;
 
-// A requirement on a number: a predicate and the words that say it ("> 0").
-struct Range {
-  std::function<bool(double)> holds;
-  std::string words;
-};
-const Range kAny{[](double) { return true; }, ""};
-const Range kPositive{[](double x) { return x > 0.0; }, " > 0"};
-const Range kNonNegative{[](double x) { return x >= 0.0; }, " >= 0"};
-const Range kUnitInterval{[](double x) { return x >= 0.0 && x <= 1.0; }, " in [0, 1]"};
-// Positions, velocities and accelerations far beyond any scene and far below where their products (x·x in
-// volumes, v·dt, k·x) overflow a double: |value| <= 1e6 (m, m/s, m/s²).
-const Range kWorldMagnitude{[](double x) { return std::abs(x) <= 1e6; }, " within +-1e6"};
-// A body's uniform scale: 1e-6 to 1e6 (a mesh in millimetres takes 1e-3; smaller or larger overflow the
-// stability estimate's products or need steps no run can take).
-const Range kScaleRange{[](double x) { return x >= 1e-6 && x <= 1e6; }, " in [1e-6, 1e6]"};
+// Whether `x` lies within the form's bounds.
+bool in_range(const Form& form, double x) {
+  if (const auto& lo = form.minimum; lo && (lo->exclusive ? x <= lo->value : x < lo->value)) return false;
+  if (const auto& hi = form.maximum; hi && (hi->exclusive ? x >= hi->value : x > hi->value)) return false;
+  return true;
+}
 
-// One JSON object being read: knows its key path, marks the keys it reads, rejects the others.
+// One JSON object being read against its keys in the table (scene_keys.hpp): takes the forms, ranges and
+// defaults from there, and rejects keys the table does not list.
 class ObjectReader {
  public:
-  ObjectReader(const json& node, std::string path, const fs::path& file)
-      : node_(node), path_(std::move(path)), file_(file) {
+  ObjectReader(const json& node, std::string path, const fs::path& file, const ObjectKeys& keys)
+      : node_(node), path_(std::move(path)), file_(file), keys_(keys) {
     if (!node_.is_object()) fail(path_, "expected an object", &node_);
   }
 
@@ -59,26 +52,38 @@ class ObjectReader {
   }
 
   std::string child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  bool has(const std::string& key) {
-    known_.insert(key);
+  const Key& spec(const std::string& key) const { return keys_.key(key); }
+  bool has(const std::string& key) const {
+    spec(key);  // only keys of the table are read
     return node_.contains(key);
   }
-  const json& at(const std::string& key) { return node_.at(key); }
+  const json& at(const std::string& key) const { return node_.at(key); }
 
-  double number(const std::string& key, double fallback, const Range& range = kAny) {
-    if (!has(key)) return fallback;
-    return checked_number(at(key), child(key), range);
+  // The object one of the key's forms reads.
+  ObjectReader object(const std::string& key) const {
+    return ObjectReader(at(key), child(key), file_, *spec(key).form(FormKind::Object).object);
   }
 
-  double checked_number(const json& value, const std::string& path, const Range& range) const {
-    if (!value.is_number()) fail(path, "expected a number" + range.words, &value);
+  double number(const std::string& key) const { return number(key, spec(key).default_value.get<double>()); }
+  double number(const std::string& key, double fallback) const {
+    if (!has(key)) return fallback;
+    return checked_number(at(key), child(key), spec(key).form(FormKind::Number));
+  }
+
+  double checked_number(const json& value, const std::string& path, const Form& form) const {
+    const std::string words = range_words(form);
+    if (!value.is_number()) fail(path, "expected a number" + words, &value);
     const double x = value.get<double>();
-    if (!std::isfinite(x) || !range.holds(x)) fail(path, "expected a finite number" + range.words, &value);
+    if (!std::isfinite(x) || !in_range(form, x)) fail(path, "expected a finite number" + words, &value);
     return x;
   }
 
-  int integer(const std::string& key, int fallback, int lo, int hi) {
+  int integer(const std::string& key) const { return integer(key, spec(key).default_value.get<int>()); }
+  int integer(const std::string& key, int fallback) const {
     if (!has(key)) return fallback;
+    const Form& form = spec(key).form(FormKind::Integer);
+    const auto lo = static_cast<long long>(form.minimum->value);
+    const auto hi = static_cast<long long>(form.maximum->value);
     const json& value = at(key);
     const std::string words = "an integer in " + std::to_string(lo) + ".." + std::to_string(hi);
     if (!value.is_number_integer()) fail(child(key), "expected " + words, &value);
@@ -87,58 +92,79 @@ class ObjectReader {
     return static_cast<int>(x);
   }
 
-  bool boolean(const std::string& key, bool fallback) {
-    if (!has(key)) return fallback;
+  bool boolean(const std::string& key) const {
+    if (!has(key)) return spec(key).default_value.get<bool>();
+    spec(key).form(FormKind::Boolean);
     if (!at(key).is_boolean()) fail(child(key), "expected true or false", &at(key));
     return at(key).get<bool>();
   }
 
-  std::string string(const std::string& key, const std::string& fallback) {
+  std::string string(const std::string& key) const { return string(key, spec(key).default_value.get<std::string>()); }
+  std::string string(const std::string& key, const std::string& fallback) const {
     if (!has(key)) return fallback;
+    spec(key).form(FormKind::String);
     if (!at(key).is_string() || at(key).get<std::string>().empty()) {
       fail(child(key), "expected a non-empty string", &at(key));
     }
     return at(key).get<std::string>();
   }
 
+  // The value of `options` named by the key's string (or its default); the names must be the table's choices, in
+  // its order, which messages list.
   template <typename Enum>
-  Enum choice(const std::string& key, Enum fallback, const std::vector<std::pair<std::string, Enum>>& options) {
-    if (!has(key)) return fallback;
+  Enum choice(const std::string& key, const std::vector<std::pair<std::string, Enum>>& options) const {
+    const Key& k = spec(key);
+    const std::vector<std::string>& names = k.form(FormKind::Choice).choices;
+    for (std::size_t i = 0; i < names.size() || i < options.size(); ++i) {
+      if (i >= names.size() || i >= options.size() || names[i] != options[i].first)
+        throw std::logic_error("scene key table: the choices of \"" + k.name + "\" differ from the parser's");
+    }
+    const json& value = has(key) ? at(key) : k.default_value;
     std::string words = "expected one of";
-    for (const auto& [name, value] : options) {
-      if (at(key).is_string() && at(key).get<std::string>() == name) return value;
+    for (const auto& [name, chosen] : options) {
+      if (value.is_string() && value.get_ref<const std::string&>() == name) return chosen;
       words += " \"" + name + "\"";
     }
-    fail(child(key), words, &at(key));
+    fail(child(key), words, &value);
   }
 
-  Vec3 vec3(const std::string& key, const Vec3& fallback, const Range& range = kWorldMagnitude) {
-    if (!has(key)) return fallback;
+  Vec3 vec3(const std::string& key) const {
+    const Key& k = spec(key);
+    if (!has(key))
+      return Vec3(k.default_value[0].get<double>(), k.default_value[1].get<double>(), k.default_value[2].get<double>());
+    const Form& form = k.form(FormKind::Vector);
     const json& value = at(key);
     if (!value.is_array() || value.size() != 3) fail(child(key), "expected an array of 3 numbers", &value);
     Vec3 v;
-    for (int i = 0; i < 3; ++i) v[i] = checked_number(value[i], child(key) + "." + std::to_string(i), range);
+    for (int i = 0; i < 3; ++i) v[i] = checked_number(value[i], child(key) + "." + std::to_string(i), form);
     return v;
   }
 
-  std::array<float, 3> color(const std::string& key, const std::array<float, 3>& fallback) {
-    if (!has(key)) return fallback;
+  std::array<float, 3> color(const std::string& key) const {
+    const Key& k = spec(key);
+    std::array<float, 3> rgb{};
+    if (!has(key)) {
+      for (int i = 0; i < 3; ++i) rgb[i] = static_cast<float>(k.default_value[i].get<double>());
+      return rgb;
+    }
+    const Form& form = k.form(FormKind::Color);
     const json& value = at(key);
     if (!value.is_array() || value.size() != 3)
       fail(child(key), "expected an RGB array of 3 numbers in [0, 1]", &value);
-    std::array<float, 3> rgb{};
     for (int i = 0; i < 3; ++i) {
-      rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), kUnitInterval));
+      rgb[i] = static_cast<float>(checked_number(value[i], child(key) + "." + std::to_string(i), form));
     }
     return rgb;
   }
 
-  // Rejects keys this reader never asked for (typos), naming the first one and the keys it knows.
+  // Rejects keys the table does not list for this object (typos), naming the first one and the keys it knows.
   void reject_unknown() const {
+    std::set<std::string> known;
+    for (const Key& k : keys_.keys) known.insert(k.name);
     for (const auto& [key, value] : node_.items()) {
-      if (known_.count(key) == 0) {
+      if (known.count(key) == 0) {
         std::string words = "unknown key (known keys:";
-        for (const std::string& k : known_) words += " " + k;
+        for (const std::string& k : known) words += " " + k;
         fail(child(key), words + ")", nullptr);
       }
     }
@@ -150,24 +176,24 @@ class ObjectReader {
   const json& node_;
   std::string path_;
   const fs::path& file_;
-  std::set<std::string> known_;
+  const ObjectKeys& keys_;
 };
 
-sim::Solver read_solver(ObjectReader& top) {
+sim::Solver read_solver(const ObjectReader& top) {
   sim::Solver solver;
   if (!top.has("solver")) return solver;
-  ObjectReader r(top.at("solver"), "solver", top.file());
+  const ObjectReader r = top.object("solver");
   std::vector<std::pair<std::string, sim::IntegratorKind>> integrators;
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
     integrators.emplace_back(integrator.name, integrator.kind);
   }
-  solver.integrator = r.choice<sim::IntegratorKind>("integrator", solver.integrator, integrators);
+  solver.integrator = r.choice<sim::IntegratorKind>("integrator", integrators);
   if (r.has("dt") && r.at("dt").is_string()) {
     if (r.at("dt").get<std::string>() != "auto")
       r.fail(r.child("dt"), "expected a number > 0 or \"auto\"", &r.at("dt"));
     solver.dt_auto = true;
   } else {
-    solver.dt_s = r.number("dt", solver.dt_s, kPositive);
+    solver.dt_s = r.number("dt");
   }
   // xpbd's substeps per frame interval: a whole number >= 1 or "auto" (sim::Solver::substeps).
   if (r.has("substeps") && r.at("substeps").is_string()) {
@@ -176,41 +202,40 @@ sim::Solver read_solver(ObjectReader& top) {
     }
     solver.substeps_auto = true;
   } else {
-    solver.substeps = r.integer("substeps", solver.substeps, 1, 1000000);
+    solver.substeps = r.integer("substeps", solver.substeps);
   }
-  solver.retry = r.boolean("retry", solver.retry);
-  solver.tolerance = r.number("tolerance", solver.tolerance, kPositive);
-  solver.threads = r.integer("threads", solver.threads, 0, 256);
+  solver.retry = r.boolean("retry");
+  solver.tolerance = r.number("tolerance");
+  solver.threads = r.integer("threads");
   r.reject_unknown();
   return solver;
 }
 
 // The smooth contact's keys, read whatever the contact model, so that --set can switch a scene to smooth.
-void read_smooth_contact(ObjectReader& r, sim::SmoothContact& smooth) {
-  smooth.time_constant_s = r.number("time_constant", smooth.time_constant_s, kPositive);
-  if (r.has("damping_ratio")) smooth.damping_ratio = r.number("damping_ratio", 0.0, kNonNegative);
-  smooth.slip_speed_m_per_s = r.number("slip_speed", smooth.slip_speed_m_per_s, kPositive);
-  smooth.smoothing_m = r.number("smoothing", smooth.smoothing_m, kPositive);
+void read_smooth_contact(const ObjectReader& r, sim::SmoothContact& smooth) {
+  smooth.time_constant_s = r.number("time_constant");
+  if (r.has("damping_ratio")) smooth.damping_ratio = r.number("damping_ratio", 0.0);
+  smooth.slip_speed_m_per_s = r.number("slip_speed");
+  smooth.smoothing_m = r.number("smoothing");
 }
 
-std::optional<sim::Floor> read_floor(ObjectReader& top) {
+std::optional<sim::Floor> read_floor(const ObjectReader& top) {
   if (!top.has("floor") || top.at("floor").is_null()) return std::nullopt;
-  ObjectReader r(top.at("floor"), "floor", top.file());
+  const ObjectReader r = top.object("floor");
   sim::Floor floor;
-  floor.height_m = r.number("height", floor.height_m, kWorldMagnitude);
-  floor.contact = r.choice<sim::FloorContact>("contact", floor.contact,
-                                              {{"paper", sim::FloorContact::Paper},
-                                               {"friction", sim::FloorContact::Friction},
-                                               {"smooth", sim::FloorContact::Smooth}});
-  floor.material.restitution = r.number("restitution", floor.material.restitution, kUnitInterval);
-  floor.material.friction = r.number("friction", floor.material.friction, kNonNegative);
+  floor.height_m = r.number("height");
+  floor.contact = r.choice<sim::FloorContact>("contact", {{"paper", sim::FloorContact::Paper},
+                                                          {"friction", sim::FloorContact::Friction},
+                                                          {"smooth", sim::FloorContact::Smooth}});
+  floor.material.restitution = r.number("restitution");
+  floor.material.friction = r.number("friction");
   read_smooth_contact(r, floor.smooth);
   r.reject_unknown();
   return floor;
 }
 
-std::string read_mesh_spec(ObjectReader& r, Body& body) {
-  const std::string spec = r.string("mesh", body.mesh);
+std::string read_mesh_spec(const ObjectReader& r, Body& body) {
+  const std::string spec = r.string("mesh");
   if (mesh::names_generator(spec)) {
     if (const std::string error = mesh::generator_spec_error(spec); !error.empty()) {
       r.fail(r.child("mesh"), error, nullptr);
@@ -229,17 +254,20 @@ std::string read_mesh_spec(ObjectReader& r, Body& body) {
   return spec;
 }
 
+// True when `key` is given as an object (an intent) rather than its number.
+bool given_as_object(const ObjectReader& r, const std::string& key) { return r.has(key) && r.at(key).is_object(); }
+
 // "stiffness": N/m, or {"youngs": Pa, "thickness": m} or {"frequency": Hz}.
-void read_stiffness(ObjectReader& body_reader, Body& body) {
-  if (!body_reader.has("stiffness") || !body_reader.at("stiffness").is_object()) {
-    body.stiffness_N_per_m = body_reader.number("stiffness", body.stiffness_N_per_m, kNonNegative);
+void read_stiffness(const ObjectReader& body_reader, Body& body) {
+  if (!given_as_object(body_reader, "stiffness")) {
+    body.stiffness_N_per_m = body_reader.number("stiffness");
     return;
   }
-  ObjectReader r(body_reader.at("stiffness"), body_reader.child("stiffness"), body_reader.file());
+  const ObjectReader r = body_reader.object("stiffness");
   sim::StiffnessIntent intent;
-  intent.youngs_Pa = r.number("youngs", 0.0, kPositive);
-  intent.thickness_m = r.number("thickness", intent.thickness_m, kPositive);
-  intent.frequency_Hz = r.number("frequency", 0.0, kPositive);
+  intent.youngs_Pa = r.number("youngs", 0.0);
+  intent.thickness_m = r.number("thickness");
+  intent.frequency_Hz = r.number("frequency", 0.0);
   if ((intent.youngs_Pa > 0.0) == (intent.frequency_Hz > 0.0)) {
     r.fail(body_reader.child("stiffness"),
            "expected exactly one of \"youngs\" (Pa, with \"thickness\" in m) or \"frequency\" (Hz)", nullptr);
@@ -249,35 +277,34 @@ void read_stiffness(ObjectReader& body_reader, Body& body) {
 }
 
 // "damping": N·s/m, or {"ratio": ζ} (fraction of critical damping of the breathing mode).
-void read_damping(ObjectReader& body_reader, Body& body) {
-  if (!body_reader.has("damping") || !body_reader.at("damping").is_object()) {
-    body.damping_N_s_per_m = body_reader.number("damping", body.damping_N_s_per_m, kNonNegative);
+void read_damping(const ObjectReader& body_reader, Body& body) {
+  if (!given_as_object(body_reader, "damping")) {
+    body.damping_N_s_per_m = body_reader.number("damping");
     return;
   }
-  ObjectReader r(body_reader.at("damping"), body_reader.child("damping"), body_reader.file());
+  const ObjectReader r = body_reader.object("damping");
   if (!r.has("ratio")) r.fail(r.child("ratio"), "expected a damping ratio >= 0 (1: critical)", nullptr);
-  body.intent.damping_ratio = r.number("ratio", 0.0, kNonNegative);
+  body.intent.damping_ratio = r.number("ratio", 0.0);
   r.reject_unknown();
 }
 
 // "pressure": nRT in J, or {"inflation": f, "start": "equilibrium" | "rest"}.
-void read_pressure(ObjectReader& body_reader, Body& body) {
-  if (!body_reader.has("pressure") || !body_reader.at("pressure").is_object()) {
-    body.pressure_J = body_reader.number("pressure", body.pressure_J, kNonNegative);
+void read_pressure(const ObjectReader& body_reader, Body& body) {
+  if (!given_as_object(body_reader, "pressure")) {
+    body.pressure_J = body_reader.number("pressure");
     return;
   }
-  ObjectReader r(body_reader.at("pressure"), body_reader.child("pressure"), body_reader.file());
+  const ObjectReader r = body_reader.object("pressure");
   sim::PressureIntent intent;
-  intent.inflation =
-      r.number("inflation", intent.inflation, Range{[](double x) { return x >= 0.0 && x < 1.0; }, " in [0, 1)"});
-  intent.start_at_equilibrium = r.choice<bool>("start", true, {{"equilibrium", true}, {"rest", false}});
+  intent.inflation = r.number("inflation");
+  intent.start_at_equilibrium = r.choice<bool>("start", {{"equilibrium", true}, {"rest", false}});
   r.reject_unknown();
   body.intent.pressure = intent;
 }
 
 // "repair": true | false, or {"degenerate", "holes": booleans (default true), "parts": "union" (default) | "keep" |
 // "largest"}.
-void read_repair(ObjectReader& body_reader, Body& body) {
+void read_repair(const ObjectReader& body_reader, Body& body) {
   if (!body_reader.has("repair")) return;
   const json& value = body_reader.at("repair");
   if (value.is_boolean()) {
@@ -287,104 +314,104 @@ void read_repair(ObjectReader& body_reader, Body& body) {
   if (!value.is_object()) {
     body_reader.fail(body_reader.child("repair"), "expected true, false or an object of repair steps", &value);
   }
-  ObjectReader r(value, body_reader.child("repair"), body_reader.file());
+  const ObjectReader r = body_reader.object("repair");
   mesh::RepairOptions repair = mesh::full_repair();
-  repair.degenerate = r.boolean("degenerate", repair.degenerate);
-  repair.holes = r.boolean("holes", repair.holes);
-  repair.parts = r.choice<mesh::PartsPolicy>("parts", repair.parts,
-                                             {{"union", mesh::PartsPolicy::Union},
-                                              {"keep", mesh::PartsPolicy::Keep},
-                                              {"largest", mesh::PartsPolicy::Largest}});
+  repair.degenerate = r.boolean("degenerate");
+  repair.holes = r.boolean("holes");
+  repair.parts = r.choice<mesh::PartsPolicy>("parts", {{"union", mesh::PartsPolicy::Union},
+                                                       {"keep", mesh::PartsPolicy::Keep},
+                                                       {"largest", mesh::PartsPolicy::Largest}});
   r.reject_unknown();
   body.repair = repair;
 }
 
 // "resolution": N (the proxy's vertex count) or {"edge_length": L} (its edge length, metres once placed);
 // null as if left out.
-void read_resolution(ObjectReader& r, Body& body) {
+void read_resolution(const ObjectReader& r, Body& body) {
   if (!r.has("resolution") || r.at("resolution").is_null()) return;  // null: simulate the mesh as it is
   const json& value = r.at("resolution");
   if (value.is_object()) {
-    ObjectReader inner(value, r.child("resolution"), r.file());
+    const ObjectReader inner = r.object("resolution");
     if (!inner.has("edge_length")) {
       inner.fail(r.child("resolution"), "expected {\"edge_length\": L} with L > 0 in metres", &value);
     }
-    body.resolution_edge_length_m = inner.number("edge_length", 0.0, kPositive);
+    body.resolution_edge_length_m = inner.number("edge_length", 0.0);
     inner.reject_unknown();
     return;
   }
-  body.resolution_vertices = r.integer("resolution", 0, 20, 1000000);
+  body.resolution_vertices = r.integer("resolution", 0);
 }
 
 // "bending": k_b in N/m, or {"ratio": r} (k_b = r k, relative to the edge springs).
-void read_bending(ObjectReader& body_reader, Body& body) {
-  if (!body_reader.has("bending") || !body_reader.at("bending").is_object()) {
-    body.bending_N_per_m = body_reader.number("bending", body.bending_N_per_m, kNonNegative);
+void read_bending(const ObjectReader& body_reader, Body& body) {
+  if (!given_as_object(body_reader, "bending")) {
+    body.bending_N_per_m = body_reader.number("bending");
     return;
   }
-  ObjectReader r(body_reader.at("bending"), body_reader.child("bending"), body_reader.file());
+  const ObjectReader r = body_reader.object("bending");
   if (!r.has("ratio"))
     r.fail(r.child("ratio"), "expected a ratio >= 0 of the bending links' stiffness to the edges'", nullptr);
-  body.intent.bending_ratio = r.number("ratio", 0.0, kNonNegative);
+  body.intent.bending_ratio = r.number("ratio", 0.0);
   r.reject_unknown();
 }
 
-Body read_body(const json& node, const std::string& path, const fs::path& file) {
-  ObjectReader r(node, path, file);
+Body read_body(const json& node, const std::string& path, const fs::path& file, const ObjectKeys& keys) {
+  const ObjectReader r(node, path, file, keys);
   Body body;
   body.mesh = read_mesh_spec(r, body);
-  body.position_m = r.vec3("position", body.position_m);
-  body.scale = r.number("scale", body.scale, kScaleRange);
-  body.velocity_m_per_s = r.vec3("velocity", body.velocity_m_per_s);
-  body.mass_kg = r.number("mass", body.mass_kg, kPositive);
+  body.position_m = r.vec3("position");
+  body.scale = r.number("scale");
+  body.velocity_m_per_s = r.vec3("velocity");
+  body.mass_kg = r.number("mass");
   read_stiffness(r, body);
   read_damping(r, body);
   read_pressure(r, body);
   read_bending(r, body);
-  body.split = r.boolean("split", body.split);
+  body.split = r.boolean("split");
   read_repair(r, body);
   read_resolution(r, body);
-  body.color = r.color("color", body.color);
+  body.color = r.color("color");
   body.pattern = r.choice<Pattern>(
-      "pattern", body.pattern, {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
+      "pattern", {{"none", Pattern::None}, {"checker", Pattern::Checker}, {"stripes", Pattern::Stripes}});
   r.reject_unknown();
   return body;
 }
 
-std::vector<Body> read_bodies(ObjectReader& top) {
+std::vector<Body> read_bodies(const ObjectReader& top) {
   if (!top.has("bodies")) top.fail("bodies", "expected an array of at least one body", nullptr);
   const json& list = top.at("bodies");
   if (!list.is_array() || list.empty()) top.fail("bodies", "expected an array of at least one body", &list);
+  const ObjectKeys& body_keys = *top.spec("bodies").form(FormKind::ObjectList).object;
   std::vector<Body> bodies;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    bodies.push_back(read_body(list[i], "bodies." + std::to_string(i), top.file()));
+    bodies.push_back(read_body(list[i], "bodies." + std::to_string(i), top.file(), body_keys));
   }
   return bodies;
 }
 
-sim::BodyContact read_collisions(ObjectReader& top) {
+sim::BodyContact read_collisions(const ObjectReader& top) {
   sim::BodyContact collisions;
   if (!top.has("collisions")) return collisions;
-  ObjectReader r(top.at("collisions"), "collisions", top.file());
+  const ObjectReader r = top.object("collisions");
   collisions.contact = r.choice<sim::BodyContactModel>(
-      "contact", collisions.contact,
-      {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
-  collisions.material.restitution = r.number("restitution", collisions.material.restitution, kUnitInterval);
-  collisions.material.friction = r.number("friction", collisions.material.friction, kNonNegative);
-  collisions.push_speed_m_per_s = r.number("push_speed", collisions.push_speed_m_per_s, kPositive);
+      "contact", {{"impulse", sim::BodyContactModel::Impulse}, {"smooth", sim::BodyContactModel::Smooth}});
+  collisions.material.restitution = r.number("restitution");
+  collisions.material.friction = r.number("friction");
+  collisions.push_speed_m_per_s = r.number("push_speed");
   read_smooth_contact(r, collisions.smooth);
   r.reject_unknown();
   return collisions;
 }
 
-int even_size(ObjectReader& r, const std::string& key, int fallback) {
-  const int size = r.integer(key, fallback, 2, 8192);
-  if (size % 2 != 0) r.fail(r.child(key), "expected an even number of pixels (video encoders need it)", &r.at(key));
+int even_size(const ObjectReader& r, const std::string& key) {
+  const int size = r.integer(key);
+  if (size % r.spec(key).form(FormKind::Integer).multiple_of != 0)
+    r.fail(r.child(key), "expected an even number of pixels (video encoders need it)", &r.at(key));
   return size;
 }
 
 // 1 to 64 frame numbers (>= 0, each once), sorted: the contact sheet's tiles in reading order.
-std::vector<int> frame_list(ObjectReader& r, const std::string& key) {
+std::vector<int> frame_list(const ObjectReader& r, const std::string& key) {
   const json& value = r.at(key);
   if (value.empty() || value.size() > 64) r.fail(r.child(key), "expected a list of 1 to 64 frame numbers", &value);
   std::vector<int> frames;
@@ -401,38 +428,39 @@ std::vector<int> frame_list(ObjectReader& r, const std::string& key) {
   return frames;
 }
 
-RenderSettings read_render(ObjectReader& top) {
+RenderSettings read_render(const ObjectReader& top) {
   RenderSettings render;
   if (!top.has("render")) return render;
-  ObjectReader r(top.at("render"), "render", top.file());
-  render.width_px = even_size(r, "width", render.width_px);
-  render.height_px = even_size(r, "height", render.height_px);
-  render.msaa = r.integer("msaa", render.msaa, 1, 4);
-  if (render.msaa == 3) r.fail("render.msaa", "expected 1, 2 or 4 samples", &r.at("msaa"));
-  render.shadows = r.boolean("shadows", render.shadows);
-  render.background = r.color("background", render.background);
+  const ObjectReader r = top.object("render");
+  render.width_px = even_size(r, "width");
+  render.height_px = even_size(r, "height");
+  render.msaa = r.integer("msaa");
+  const std::vector<long long>& excluded = r.spec("msaa").form(FormKind::Integer).excluded;
+  if (std::find(excluded.begin(), excluded.end(), render.msaa) != excluded.end())
+    r.fail("render.msaa", "expected 1, 2 or 4 samples", &r.at("msaa"));
+  render.shadows = r.boolean("shadows");
+  render.background = r.color("background");
   if (r.has("figure_frames") && r.at("figure_frames").is_array()) {
     render.figure_frame_list = frame_list(r, "figure_frames");
     render.figure_frames = static_cast<int>(render.figure_frame_list.size());
   } else {
-    render.figure_frames = r.integer("figure_frames", render.figure_frames, 0, 64);
+    render.figure_frames = r.integer("figure_frames");
   }
   render.backend = r.choice<GlBackend>(
-      "backend", render.backend, {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
+      "backend", {{"auto", GlBackend::Auto}, {"egl", GlBackend::Egl}, {"osmesa", GlBackend::OsMesa}});
   r.reject_unknown();
   return render;
 }
 
-Camera read_camera(ObjectReader& top) {
+Camera read_camera(const ObjectReader& top) {
   Camera camera;
   if (!top.has("camera")) return camera;
-  ObjectReader r(top.at("camera"), "camera", top.file());
+  const ObjectReader r = top.object("camera");
   camera.given = true;
-  camera.position_m = r.vec3("position", camera.position_m);
-  camera.target_m = r.vec3("target", camera.target_m);
-  camera.up = r.vec3("up", camera.up);
-  camera.fov_deg =
-      r.number("fov", camera.fov_deg, Range{[](double x) { return x > 0 && x < 180; }, " in (0, 180) degrees"});
+  camera.position_m = r.vec3("position");
+  camera.target_m = r.vec3("target");
+  camera.up = r.vec3("up");
+  camera.fov_deg = r.number("fov");
   if ((camera.target_m - camera.position_m).norm() == 0.0)
     r.fail("camera.target", "expected a point other than camera.position", nullptr);
   if (camera.up.norm() == 0.0 || camera.up.cross(camera.target_m - camera.position_m).norm() == 0.0) {
@@ -442,39 +470,37 @@ Camera read_camera(ObjectReader& top) {
   return camera;
 }
 
-Light read_light(ObjectReader& top) {
+Light read_light(const ObjectReader& top) {
   Light light;
   if (!top.has("light")) return light;
-  ObjectReader r(top.at("light"), "light", top.file());
-  light.direction = r.vec3("direction", light.direction);
+  const ObjectReader r = top.object("light");
+  light.direction = r.vec3("direction");
   if (light.direction.norm() == 0.0) r.fail("light.direction", "expected a non-zero vector", nullptr);
-  light.color = r.color("color", light.color);
-  light.ambient = static_cast<float>(r.number("ambient", light.ambient, kUnitInterval));
+  light.color = r.color("color");
+  light.ambient = static_cast<float>(r.number("ambient"));
   r.reject_unknown();
   return light;
 }
 
 // "limits": what a mesh file may hold, raised for large meshes (mesh/mesh_limits.hpp).
-mesh::MeshLimits read_limits(ObjectReader& top) {
+mesh::MeshLimits read_limits(const ObjectReader& top) {
   mesh::MeshLimits limits;
   if (!top.has("limits")) return limits;
-  ObjectReader r(top.at("limits"), "limits", top.file());
-  constexpr int kMost = 2'000'000'000;
-  limits.max_triangles = r.integer("max_triangles", static_cast<int>(limits.max_triangles), 1, kMost);
-  limits.max_vertices = r.integer("max_vertices", static_cast<int>(limits.max_vertices), 1, kMost);
-  const int megabytes = r.integer("max_file_mb", static_cast<int>(limits.max_file_bytes >> 20), 1, 1 << 20);
-  limits.max_file_bytes = static_cast<std::uintmax_t>(megabytes) << 20;
+  const ObjectReader r = top.object("limits");
+  limits.max_triangles = r.integer("max_triangles");
+  limits.max_vertices = r.integer("max_vertices");
+  limits.max_file_bytes = static_cast<std::uintmax_t>(r.integer("max_file_mb")) << 20;
   r.reject_unknown();
   return limits;
 }
 
-Output read_output(ObjectReader& top, const std::string& name) {
+Output read_output(const ObjectReader& top, const std::string& name) {
   Output output;
   output.dir = fs::path("out") / name;
   if (!top.has("output")) return output;
-  ObjectReader r(top.at("output"), "output", top.file());
+  const ObjectReader r = top.object("output");
   output.dir = r.string("dir", output.dir.string());
-  output.pattern = r.string("pattern", output.pattern);
+  output.pattern = r.string("pattern");
   // Checked for every command, not only render: a scene is valid or not whatever is done with it.
   check_frame_pattern(output.pattern, top.file().string());
   r.reject_unknown();
@@ -488,18 +514,21 @@ json parse_scene_text(const std::string& text, const fs::path& file) {
 }
 
 Scene scene_from_json(const json& document, const fs::path& file) {
-  ObjectReader top(document, "", file);
+  const ObjectReader top(document, "", file, scene_keys());
   Scene s;
   s.source = file;
+  top.string("$schema", "");  // for editors: checked to be a string, otherwise ignored
   s.name = top.string("name", fs::path(file).stem().string());
-  if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..") {
+  const std::vector<std::string>& refused = top.spec("name").refused;
+  if (s.name.find_first_of("/\\") != std::string::npos ||
+      std::find(refused.begin(), refused.end(), s.name) != refused.end()) {
     top.fail("name", "expected a name without slashes, other than \".\" and \"..\" (it names the folder out/NAME)",
              &top.at("name"));
   }
-  s.duration_s = top.number("duration", s.duration_s, kPositive);
-  s.fps = top.integer("fps", s.fps, 1, 1000);
+  s.duration_s = top.number("duration");
+  s.fps = top.integer("fps");
   s.solver = read_solver(top);
-  s.gravity_m_per_s2 = top.vec3("gravity", s.gravity_m_per_s2);
+  s.gravity_m_per_s2 = top.vec3("gravity");
   s.floor = read_floor(top);
   s.limits = read_limits(top);
   s.bodies = read_bodies(top);
@@ -509,7 +538,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.light = read_light(top);
   s.output = read_output(top, s.name);
   json simulation = document;
-  for (const char* key : {"name", "render", "camera", "light", "output", "limits"}) simulation.erase(key);
+  for (const char* key : {"$schema", "name", "render", "camera", "light", "output", "limits"}) simulation.erase(key);
   // Invalid UTF-8 (possible in --set values, which are taken as bytes) is replaced (U+FFFD), not thrown about;
   // valid text dumps exactly as before.
   s.simulation_json = simulation.dump(-1, ' ', false, json::error_handler_t::replace);
