@@ -1,5 +1,6 @@
 // The command line: exit statuses and one clear line per bad input, CSV contract.
 #include <fstream>
+#include <iterator>
 #include <regex>
 
 #include <gtest/gtest.h>
@@ -120,6 +121,44 @@ TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {
   while (std::getline(csv, line)) last = line;
   EXPECT_EQ(last.find("nan"), std::string::npos) << "no frame of a diverged state: " << last;
   EXPECT_EQ(last.find("inf"), std::string::npos) << last;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --profile prints the time of each phase that ran and changes nothing in the results.
+TEST(Cli, ProfilePrintsThePhasesThatRanAndLeavesTheCsvAlone) {
+  const std::filesystem::path dir = testing_support::scratch_dir("cli_profile");
+  const std::string plain = (dir / "plain.csv").string(), profiled = (dir / "profiled.csv").string();
+  const auto without = run_softbody("simulate scenes/bounce.json --set duration=0.2 --csv " + plain);
+  const auto with = run_softbody("simulate scenes/bounce.json --set duration=0.2 --profile --csv " + profiled);
+  ASSERT_EQ(without.exit_status, 0) << without.output;
+  ASSERT_EQ(with.exit_status, 0) << with.output;
+  EXPECT_EQ(without.output.find("profile:"), std::string::npos) << without.output;
+  EXPECT_NE(with.output.find("profile:"), std::string::npos) << with.output;
+  // The bounce: one body with gas on the paper's floor, forward Euler (no constraint sweeps, no body contact).
+  for (const char* phase : {"\nsetup ", "\nstep ", "\n  integrate ", "\n    forces ", "\n    gas ",
+                            "\n  floor contact ", "\n  guard ", "\nframe guard ", "\ncsv write "}) {
+    EXPECT_NE(with.output.find(phase), std::string::npos) << phase << " in\n" << with.output;
+  }
+  for (const char* phase : {"\n    constraint sweeps ", "\n  body contact ", "\nrender "}) {
+    EXPECT_EQ(with.output.find(phase), std::string::npos) << phase << " in\n" << with.output;
+  }
+  const std::string bytes = file_bytes(plain);
+  EXPECT_NE(bytes.find("\n6,0.2"), std::string::npos) << "frames 0..6 at 30 fps";
+  EXPECT_EQ(bytes, file_bytes(profiled));
+}
+
+TEST(Cli, ProfileIsPrintedWhenTheRunDiverges) {
+  const std::filesystem::path dir = testing_support::scratch_dir("cli_profile_diverged");
+  const auto result =
+      run_softbody("simulate scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --profile --csv " +
+                   (dir / "diverged.csv").string());
+  EXPECT_EQ(result.exit_status, 3) << result.output;
+  EXPECT_NE(result.output.find("profile:"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("\n  guard "), std::string::npos) << result.output;
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "core/errors.hpp"
+#include "core/profile.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/mesh_exporter.hpp"
@@ -26,6 +27,7 @@ struct ExportOptions {
   bool resume = false;
   std::string dir;
   ExportFormat format = ExportFormat::Obj;
+  bool profile = false;
 };
 
 // --format pc2 | mdd: DIR/body<N>.obj and DIR/body<N>.pc2 (.mdd), written when the run ends.
@@ -36,7 +38,7 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step;
   // the caches then hold every complete frame.
   frames::stop_on_signals();
-  PreparedRun run = prepare_run(options.scene);
+  PreparedRun run = softbody::profiled(softbody::ProfilePhase::setup, [&] { return prepare_run(options.scene); });
   const PlannedFrames planned(run, options.frames);
   const frames::FrameSelection& chosen = planned.plan().frames;
   if (chosen.count() != chosen.last() - chosen.first() + 1) {
@@ -64,7 +66,7 @@ int run_export(const ExportOptions& options) {
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step
   // (the frame in progress dropped); the outputs hold every complete frame.
   frames::stop_on_signals();
-  PreparedRun run = prepare_run(options.scene);
+  PreparedRun run = softbody::profiled(softbody::ProfilePhase::setup, [&] { return prepare_run(options.scene); });
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path dir =
@@ -115,6 +117,7 @@ Action register_export(CLI::App& parent) {
       ->default_str("obj");
   add_frame_options(*command, options->frames);
   add_resume_option(*command, options->resume);
+  add_profile_option(*command, options->profile);
   command->footer(
       "Point caches (--format pc2 | mdd), for Blender's Mesh Cache modifier, Maya and Houdini:\n"
       "  DIR/body<N>.obj is the body's mesh at the first frame exported (vertex order = the cache's), DIR/body<N>.pc2\n"
@@ -122,7 +125,10 @@ Action register_export(CLI::App& parent) {
       "  (big-endian, the simulated time of each frame) its positions, in the scene's units (m, y up).\n"
       "  The frames (all, or one --frames range) are kept in memory (12 bytes per vertex per frame) and the files\n"
       "  written whole at the end (also when the run diverges: the frames before it).");
-  return [options] { return run_export(*options); };
+  return [options] {
+    const ProfiledRun profiled(options->profile);
+    return run_export(*options);
+  };
 }
 
 }  // namespace app

@@ -13,6 +13,7 @@
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "core/errors.hpp"
+#include "core/profile.hpp"
 #include "frames/frame_loop.hpp"
 #include "frames/overlapped_frame_loop.hpp"
 #include "frames/stop_request.hpp"
@@ -37,6 +38,7 @@ struct RenderOptions {
   std::string video_file;
   bool no_png = false;
   bool resume = false;
+  bool profile = false;
 };
 
 // One silent pass over every frame, for what must be known before frame 0 is drawn: the box the bodies
@@ -123,7 +125,8 @@ int run_render(const RenderOptions& options) {
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step of
   // the simulation (the frame in progress dropped); the outputs hold every complete frame.
   frames::stop_on_signals();
-  PreparedRun run = prepare_run(options.scene, /*threads_when_auto=*/1);
+  PreparedRun run = softbody::profiled(softbody::ProfilePhase::setup,
+                                       [&] { return prepare_run(options.scene, /*threads_when_auto=*/1); });
   check_resume_options(options.resume, options.frames);
   if (options.resume && options.no_png) {
     throw softbody::InputError("--resume continues from the PNG frames on disk: use it without --no-png");
@@ -226,6 +229,7 @@ Action register_render(CLI::App& parent) {
   command->add_flag("--no-png", options->no_png, "Write no PNG frames (figure.png and --video still are)");
   add_frame_options(*command, options->frames);
   add_resume_option(*command, options->resume);
+  add_profile_option(*command, options->profile);
   command->footer(
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
@@ -241,7 +245,10 @@ Action register_render(CLI::App& parent) {
       "  The GL backend: render.backend (auto | egl | osmesa; auto tries EGL, then OSMesa), overridden by the\n"
       "  environment variable SOFTBODY_GL when it is set; the summary line names the backend used.\n"
       "  Prints a progress line when stderr is a terminal, and a summary with the time per frame of each stage.");
-  return [options] { return run_render(*options); };
+  return [options] {
+    const ProfiledRun profiled(options->profile);
+    return run_render(*options);
+  };
 }
 
 }  // namespace app

@@ -10,6 +10,7 @@
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "core/errors.hpp"
+#include "core/profile.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
@@ -26,13 +27,14 @@ struct SimulateOptions {
   std::string cache_dir;
   int cache_every = 1;
   bool resume = false;
+  bool profile = false;
 };
 
 int run_simulate(const SimulateOptions& options) {
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step
   // (the frame in progress dropped); the outputs hold every complete frame.
   frames::stop_on_signals();
-  PreparedRun run = prepare_run(options.scene);
+  PreparedRun run = softbody::profiled(softbody::ProfilePhase::setup, [&] { return prepare_run(options.scene); });
   check_resume_options(options.resume, options.frames);
   const PlannedFrames planned(run, options.frames);
   const std::filesystem::path csv =
@@ -100,11 +102,15 @@ Action register_simulate(CLI::App& parent) {
       ->type_name("N");
   add_frame_options(*command, options->frames);
   add_resume_option(*command, options->resume);
+  add_profile_option(*command, options->profile);
   command->footer(
       "CSV columns: frame,time,body,com_x,com_y,com_z,vel_x,vel_y,vel_z,volume,kinetic_energy,total_energy,min_y\n"
       "  vel_* is the centre-of-mass velocity; total_energy = kinetic + gravitational (y relative to 0)\n"
       "  + spring + gas (-nRT ln(V/V0)). Frame 0 is the initial state.");
-  return [options] { return run_simulate(*options); };
+  return [options] {
+    const ProfiledRun profiled(options->profile);
+    return run_simulate(*options);
+  };
 }
 
 }  // namespace app

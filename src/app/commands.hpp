@@ -18,6 +18,22 @@ struct SceneOptions {
 // Adds SCENE and --set PATH=VALUE (repeatable) to a subcommand.
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
+// Adds --profile to a subcommand (simulate, render, export).
+void add_profile_option(CLI::App& command, bool& profile);
+
+// While it lives, the phases' counters (core/profile.hpp) run when `on`; when it goes, on every path (done,
+// interrupted, diverged, failed), their table goes to standard error.
+class ProfiledRun {
+ public:
+  explicit ProfiledRun(bool on);
+  ~ProfiledRun();
+  ProfiledRun(const ProfiledRun&) = delete;
+  ProfiledRun& operator=(const ProfiledRun&) = delete;
+
+ private:
+  bool on_;
+};
+
 // Each returns the action to run when its subcommand is chosen; the action returns the exit status.
 using Action = std::function<int()>;
 Action register_simulate(CLI::App& parent);

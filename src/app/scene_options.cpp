@@ -1,5 +1,8 @@
-// Shared scene options.
+// Options the scene commands share: the scene and --set; --profile and its table.
+#include <cstdio>
+
 #include "app/commands.hpp"
+#include "core/profile.hpp"
 
 namespace app {
 
@@ -11,6 +14,26 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
                   "--set solver.dt=5e-5 (repeatable; VALUE is JSON or a bare word)")
       ->type_name("PATH=VALUE")
       ->allow_extra_args(false);
+}
+
+void add_profile_option(CLI::App& command, bool& profile) {
+  command.add_flag("--profile", profile,
+                   "At the end, print to standard error the time of each phase (setup, step, forces, gas, constraint "
+                   "sweeps, contacts, guard, outputs): total, share of the wall time, calls, mean per call");
+}
+
+ProfiledRun::ProfiledRun(bool on) : on_(on) {
+  if (on_) softbody::start_profiling();
+}
+
+ProfiledRun::~ProfiledRun() {
+  if (!on_) return;
+  softbody::stop_profiling();
+  try {
+    std::fputs(softbody::format_profile(softbody::profile_report()).c_str(), stderr);
+  } catch (...) {
+    // A destructor must not throw (an error may be on its way out): no table then.
+  }
 }
 
 }  // namespace app

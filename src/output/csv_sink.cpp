@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "sim/step/diagnostics.hpp"
 
@@ -80,6 +81,7 @@ int CsvSink::journalled_through(const std::filesystem::path& journal, std::size_
 }
 
 void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::csv_write);
   const std::size_t frame_start = text_.size();
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, b);
@@ -100,6 +102,7 @@ void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
 }
 
 void CsvSink::finish(bool complete) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::csv_write);
   write_file_atomically(path_, text_);
   if (journal_ && complete) {
     std::fclose(journal_);

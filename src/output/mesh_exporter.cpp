@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "output/obj_uvs.hpp"
 #include "output/shown_surface.hpp"
@@ -35,6 +36,7 @@ std::filesystem::path MeshExporter::frame_path(int index) const {
 }
 
 void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::mesh_write);
   write_file_atomically(frame_path(index),
                         format_ == MeshFormat::Obj ? world_to_obj(world, time_s) : world_to_ply(world, time_s));
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <utility>
 
+#include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "output/png_codec.hpp"
 
@@ -46,9 +47,10 @@ PngWriterTimings PngWriter::timings() const {
 
 void PngWriter::store(Job& job) {
   const auto start = Clock::now();
-  const std::string bytes = encode_png(job.image);
+  const std::string bytes =
+      softbody::profiled(softbody::ProfilePhase::png_encode, [&] { return encode_png(job.image); });
   const auto encoded = Clock::now();
-  write_file_atomically(job.path, bytes);
+  softbody::profiled(softbody::ProfilePhase::png_store, [&] { write_file_atomically(job.path, bytes); });
   const auto stored = Clock::now();
   std::unique_lock lock(timings_mutex_);
   timings_.frames += 1;

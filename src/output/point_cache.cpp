@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "output/mesh_exporter.hpp"
 #include "output/shown_surface.hpp"
@@ -73,6 +74,7 @@ std::filesystem::path PointCacheExporter::cache_path(int body) const {
 }
 
 void PointCacheExporter::on_frame(int index, double time_s, const sim::World& world) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::mesh_write);
   if (first_frame_ < 0) {
     first_frame_ = index;
     for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
@@ -95,6 +97,7 @@ void PointCacheExporter::on_frame(int index, double time_s, const sim::World& wo
 
 // Also after a stopped run (diverged): the frames before are valid, and the cache says how many it holds.
 void PointCacheExporter::finish(bool /*complete*/) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::mesh_write);
   for (int b = 0; b < body_count(); ++b) {
     const PointSamples& samples = bodies_[static_cast<std::size_t>(b)];
     write_file_atomically(mesh_path(b), meshes_obj_[static_cast<std::size_t>(b)]);

@@ -3,6 +3,8 @@
 
 #include <chrono>
 
+#include "core/profile.hpp"
+
 namespace output {
 namespace {
 
@@ -35,6 +37,7 @@ void VideoWriter::write(const softbody::Image& frame) {
 }
 
 void VideoWriter::pipe_frame(softbody::Image& frame) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::video_pipe);
   const auto start = std::chrono::steady_clock::now();
   pipe_.write(frame);
   add_pipe_seconds(seconds_since(start));
@@ -56,6 +59,7 @@ void VideoWriter::finish() {
     pipe_.abandon();
     std::rethrow_exception(error_);
   }
+  const softbody::ProfileScope profile(softbody::ProfilePhase::video_pipe);
   const auto start = std::chrono::steady_clock::now();
   pipe_.finish();
   add_pipe_seconds(seconds_since(start));

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/mesh_snapshot.hpp"
@@ -47,6 +48,7 @@ RenderSink::RenderSink(Renderer& renderer, RenderOutputs outputs) : renderer_(re
 
 void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) {
   auto start = Clock::now();
+  const softbody::ProfileScope profile(softbody::ProfilePhase::snapshot);
   output::snapshot_surfaces(world, meshes_);
   captured_index_ = index;
   lap(start, timings_.snapshot_s);
@@ -55,10 +57,10 @@ void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) 
 void RenderSink::deliver() {
   const int index = captured_index_;
   auto start = Clock::now();
-  renderer_.draw(meshes_);
+  softbody::profiled(softbody::ProfilePhase::render, [&] { renderer_.draw(meshes_); });
   lap(start, timings_.render_s);
   if (png_writer_) frame_ = png_writer_->recycled_image();
-  renderer_.read_back(frame_);
+  softbody::profiled(softbody::ProfilePhase::read_back, [&] { renderer_.read_back(frame_); });
   lap(start, timings_.read_back_s);
   if (video_) {
     video_->write(frame_);

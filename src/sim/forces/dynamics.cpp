@@ -2,6 +2,7 @@
 // handed out per vertex.
 #include "sim/forces/dynamics.hpp"
 
+#include "core/profile.hpp"
 #include "sim/forces/forces.hpp"
 
 namespace sim {
@@ -15,6 +16,7 @@ Dynamics::Dynamics(const Model& model, ForceScratch& scratch) : model_(model), s
 
 bool Dynamics::body_contact_forces(const State& state) {
   if (!smooth_bodies_) return false;
+  const softbody::ProfileScope profile(softbody::ProfilePhase::smooth_contact);
   scratch_.contact_force.assign(state.x.size(), Vec3::Zero());
   scratch_.collider.add_smooth_forces(model_.bodies, model_.mass_kg, state.x, state.v, *smooth_bodies_,
                                       scratch_.contact_force);
@@ -23,11 +25,14 @@ bool Dynamics::body_contact_forces(const State& state) {
 
 void Dynamics::floor_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                                     std::span<Vec3> f) const {
-  if (smooth_floor_) add_smooth_floor_forces(*smooth_floor_, body.masses.kg, x, v, f);
+  if (!smooth_floor_) return;
+  const softbody::ProfileScope profile(softbody::ProfilePhase::smooth_contact);
+  add_smooth_floor_forces(*smooth_floor_, body.masses.kg, x, v, f);
 }
 
 void Dynamics::gravity_and_spring_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                                          std::span<Vec3> f) const {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::forces);
   start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);  // starts the sum: no zeroing pass
   const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
   if (k != 0.0 || c != 0.0) add_spring_dampers(body.topology.edges, body.rest.edge_length_m, k, c, x, v, f);
@@ -41,6 +46,7 @@ void Dynamics::gravity_and_spring_forces(const Body& body, std::span<const Vec3>
 double Dynamics::gas_face_pass(std::size_t b, std::span<const Vec3> x) {
   const Body& body = model_.bodies[b];
   if (body.params.pressure_J == 0.0) return 0.0;
+  const softbody::ProfileScope profile(softbody::ProfilePhase::gas);
   const double volume = volume_and_area_sums(body.topology.faces, x, scratch_.area_sums[b]);
   return gas_force_per_area_sum(body.params.pressure_J, volume, body.rest.volume_m3);
 }

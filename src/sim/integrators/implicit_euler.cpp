@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "core/profile.hpp"
 #include "sim/forces/spring_jacobian.hpp"
 
 namespace sim {
@@ -109,11 +110,14 @@ void ImplicitEuler::step(Dynamics& dynamics, State& state, double dt) {
   if (pattern_vertices_ != n) build_pattern(dynamics.model(), n);  // first step, or another model
   dynamics.forces(state, force_);
   assemble(state, dynamics.model().mass_kg, dt);
-  solver_.compute(matrix_);
   Eigen::VectorXd& delta_v = state.carry.velocity_change;
-  if (delta_v.size() != static_cast<Eigen::Index>(3 * n)) delta_v.setZero(static_cast<Eigen::Index>(3 * n));
-  guess_ = delta_v;  // the last step's Δv: a warm start, deterministic
-  delta_v = solver_.solveWithGuess(rhs_, guess_);
+  {
+    const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
+    solver_.compute(matrix_);
+    if (delta_v.size() != static_cast<Eigen::Index>(3 * n)) delta_v.setZero(static_cast<Eigen::Index>(3 * n));
+    guess_ = delta_v;  // the last step's Δv: a warm start, deterministic
+    delta_v = solver_.solveWithGuess(rhs_, guess_);
+  }
   for (std::size_t i = 0; i < n; ++i) {
     state.v[i] += delta_v.segment<3>(static_cast<Eigen::Index>(3 * i));
     state.x[i] += dt * state.v[i];

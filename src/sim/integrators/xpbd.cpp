@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/profile.hpp"
 #include "sim/step/stability.hpp"
 
 namespace sim {
@@ -104,6 +105,7 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   }
   // 2. The edge constraints, body by body.
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
     const Body& body = model.bodies[b];
     const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
     const std::span<Vec3> x(state.x.data() + first, count);

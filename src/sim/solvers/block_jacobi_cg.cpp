@@ -5,6 +5,8 @@
 
 #include <Eigen/Cholesky>
 
+#include "core/profile.hpp"
+
 namespace sim {
 
 void BlockJacobiCg::build_preconditioner(const BlockSystem& a, std::span<const RankOneTerm> terms) {
@@ -46,6 +48,7 @@ void BlockJacobiCg::precondition(const Eigen::VectorXd& in, Eigen::VectorXd& out
 
 CgResult BlockJacobiCg::solve(const BlockSystem& a, std::span<const RankOneTerm> terms, const Eigen::VectorXd& b,
                               Eigen::VectorXd& x, double tolerance, int max_iterations) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   const Eigen::Index n = b.size();
   if (r_.size() != n) {
     r_.setZero(n);

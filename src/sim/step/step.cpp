@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/profile.hpp"
 #include "sim/contact/contact.hpp"
 #include "sim/step/diverged.hpp"
 #include "sim/step/guard.hpp"
@@ -19,6 +20,7 @@ constexpr int kMostSubsteps = 1024;  // solver.retry gives up past this many sub
 // Phase 1: the integrator advances x and v (forces evaluated inside). Adaptive integrators return their
 // error estimate (<= 1: within the tolerance), fixed-step ones 0.
 double integrate(const Model& model, State& state, Workspace& workspace, double h, bool with_error) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::integrate);
   Dynamics dynamics(model, workspace.forces);
   workspace.integrator->prepare(dynamics, state);
   if (with_error) return workspace.integrator->adaptive()->attempt(dynamics, state, h);
@@ -30,6 +32,7 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // force inside phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
+  const softbody::ProfileScope profile(softbody::ProfilePhase::body_contact);
   const PushLimit push{h, model.body_contact.push_speed_m_per_s,
                        !integrator_info(model.solver.integrator).position_based};
   return workspace.collider.resolve(model.bodies, model.inverse_mass, state, model.body_contact.material, push);
@@ -42,6 +45,7 @@ int resolve_body_contacts(const Model& model, State& state, Workspace& workspace
 // moves none.
 int resolve_floor(const Model& model, State& state, Workspace& workspace, double h) {
   if (!model.floor) return 0;
+  const softbody::ProfileScope profile(softbody::ProfilePhase::floor_contact);
   FloorContactFound found;
   switch (model.floor->contact) {
     case FloorContact::Paper:
@@ -66,6 +70,7 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace, double
 // Phase 4: the guard. Finite values every step; energy and volume every kFullCheckInterval steps, or every
 // step when `full` (a rejected step can be retried).
 std::optional<Divergence> guard(const Model& model, State& state, bool full) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::guard);
   if (full || ++state.guard.steps_since_full_check >= kFullCheckInterval) {
     state.guard.steps_since_full_check = 0;
     return check_all(model, state);
@@ -145,6 +150,7 @@ void reject_attempt(State& state, const Workspace& workspace, double next_dt_s) 
 }  // namespace
 
 void step(const Model& model, State& state, Workspace& workspace, double dt) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::step);
   workspace.deepest_floor_penetration_m = 0.0;
   const bool retry = model.solver.retry;
   if (retry) save_before_step(model, state, workspace);
@@ -163,6 +169,7 @@ bool advance_to(const Model& model, State& state, Workspace& workspace, double e
   std::optional<Divergence> last_finding;
   while (state.time_s < end_time_s) {
     if (stop && stop()) return false;
+    const softbody::ProfileScope profile(softbody::ProfilePhase::step);
     const double remaining = end_time_s - state.time_s;
     const bool last = state.next_dt_s >= remaining;
     const double dt = last ? remaining : state.next_dt_s;
@@ -206,6 +213,7 @@ bool advance_to(const Model& model, State& state, Workspace& workspace, double e
 }
 
 void check_before_frame(const Model& model, State& state) {
+  const softbody::ProfileScope profile(softbody::ProfilePhase::frame_guard);
   state.guard.steps_since_full_check = 0;
   if (auto found = check_all(model, state)) throw_diverged(model, *found, state.time_s, state.steps, state.last_dt_s);
 }
