@@ -82,7 +82,8 @@ TEST(Bounce, SquashSurvivesAFourTimesSmallerStep) { expect_squashes_and_springs_
 TEST(Bounce, GoesForwardTouchesFloorAndGoesBack) { expect_goes_back(run_bounce(1e-4, 2.0)); }
 
 // The bounce back is not forward Euler's instability: at a step four times smaller (0.15 of the stable
-// limit instead of 0.6) it stays. What causes it is the paper's contact response (see README).
+// limit instead of 0.6) it stays. What causes it is the paper's contact response (docs/physics/model.md,
+// "The bounce back").
 TEST(Bounce, GoingBackSurvivesAFourTimesSmallerStep) { expect_goes_back(run_bounce(2.5e-5, 2.0)); }
 
 }  // namespace

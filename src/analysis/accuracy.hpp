@@ -19,7 +19,7 @@ struct AccuracyOptions {
   double reference_dt_s = 0.0;  // reference step; 0: solver.dt / 10
   // The reference's method, at fixed steps: rk45 means Dormand–Prince's 5th-order formula without error
   // control. With contact events every method is first order at best, so a cheaper method at a finer
-  // step can make the better reference there (docs/integrators.md).
+  // step can make the better reference there (docs/physics/integrators.md).
   sim::IntegratorKind reference_integrator = sim::IntegratorKind::Rk45;
   double coarsest_factor = 32.0;  // fixed-step sweeps start at this × solver.dt, then refine
   // Each fixed-step run's dt is the previous one's over this (2: halving). A finer ratio (√2) puts more runs

@@ -25,8 +25,9 @@ struct LimitRow {
   double unstable_dt_s;  // smallest unstable dt found
 };
 
-// The bodies of docs/stability.md's table: scenes/bounce.json's ball, a stiff undamped breathing sphere, a coarse
-// stiff ball, and the bounce ball's material on icosphere:4 (its fastest modes more than half critically damped).
+// The bodies of docs/physics/stability.md's table: scenes/bounce.json's ball, a stiff undamped breathing sphere, a
+// coarse stiff ball, and the bounce ball's material on icosphere:4 (its fastest modes more than half critically
+// damped).
 std::vector<LimitBody> limit_bodies();
 
 // A world of `body` alone, gravity on, every vertex shaken by 0.5 m/s (rk45: fixed steps): in free flight,

@@ -88,7 +88,7 @@ std::vector<int> figure_frames(const scene::Scene& scene, const output::MotionTr
 
 double ms_per_frame(double total_s, int frames) { return frames > 0 ? 1000.0 * total_s / frames : 0.0; }
 
-// One line of figures the README and the benchmarks quote: what a frame costs, stage by stage.
+// One line of figures docs/performance.md and the benchmarks quote: what a frame costs, stage by stage.
 void print_summary(const scene::Scene& scene, const render::Renderer& renderer, const frames::RunStats& run,
                    const render::RenderTimings& t, const std::string& backend) {
   const int n = run.frames;

@@ -1,4 +1,4 @@
-// The program's error types and the exit status each maps to (documented in --help and the README).
+// The program's error types and the exit status each maps to (documented in --help and docs/guide/errors.md).
 #pragma once
 
 #include <stdexcept>

@@ -94,7 +94,7 @@ std::vector<std::string> integrator_names() {
 }
 
 // The smooth contact's keys (floor and collisions), read whatever the contact model, so that --set can switch a
-// scene to smooth. Per vertex of mass m the contact is a spring m/τ² and a dashpot 2ζm/τ (sim/settings.hpp).
+// scene to smooth. Per vertex of mass m the contact is a spring m/τ² and a dashpot 2ζm/τ (sim/model/settings.hpp).
 void add_smooth_contact(ObjectKeys& keys, double time_constant_s) {
   keys.keys.push_back(key("time_constant", {positive()}, "s",
                           "Smooth contact: τ = 1/ω of the contact's spring; an impact of one vertex lasts about π τ.",

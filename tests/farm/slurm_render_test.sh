@@ -2,7 +2,7 @@
 # The farm test (ctest label `farm`): installs Slurm, munge and GNU parallel where missing, starts a
 # single-node cluster on this machine (tests/farm/local_cluster.sh), renders a small scene with
 # scripts/slurm-render in 4 chunks, and checks that every frame is byte-identical to a local render and that
-# the video has every frame; then the README's GNU parallel recipe, and a two-value wedge. The cluster is
+# the video has every frame; then the GNU parallel recipe of docs/guide/caches-resume-farms.md, and a two-value wedge. The cluster is
 # stopped at the end whatever happens. Exit 77 (ctest: skipped) when the daemons cannot start (no root).
 #   slurm_render_test.sh SOFTBODY SOURCE_DIR SCRATCH_DIR
 set -euo pipefail
@@ -53,7 +53,7 @@ video_frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries 
 check "the farm video has every frame ($video_frames of $frames)" "[ '$video_frames' -eq $frames ]"
 check "the farm's CSV equals a local simulate's" "'$softbody' simulate '$scene' ${small[*]} --csv '$scratch/local.csv' >/dev/null && cmp -s '$scratch/local.csv' '$scratch/farm/simulation.csv'"
 
-# The README's GNU parallel recipe (one machine, many cores): cache once, then frame ranges in parallel.
+# The GNU parallel recipe of docs/guide/caches-resume-farms.md (one machine, many cores): cache once, then frame ranges in parallel.
 (
   cd "$scratch"
   "$softbody" simulate "$scene" "${small[@]}" --cache out/cache --csv out/simulation.csv >/dev/null

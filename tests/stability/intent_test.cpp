@@ -83,7 +83,7 @@ TEST(Intent, RestStartInflatesTheBody) {
 
 // The same intent on icosphere:2 and icosphere:3, dropped 2 m onto the floor: the centre-of-mass paths
 // through the first bounce (1.2 s) differ by less than 10 cm, a tenth of the radius (measured: 7.6 cm;
-// docs/stability.md compares levels 2 and 5).
+// docs/physics/stability.md compares levels 2 and 5).
 TEST(Intent, SameIntentBouncesAlikeOnCoarseAndFineMeshes) {
   const std::string floor = R"(, "floor": { "height": 0, "contact": "friction" })";
   sim::World coarse = world_from_text(shell("icosphere:2", "equilibrium", "[0, -9.81, 0]", floor));

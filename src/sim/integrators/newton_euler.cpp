@@ -11,7 +11,8 @@ namespace {
 constexpr double kNewtonTolerance = 1e-7;  // m/s: stop when the Newton step changes no velocity by more
 // A cap, not the usual count: smooth motion converges in 2–3 iterations; steps in which the post-step floor
 // contact has squashed the body start far from a minimum of a non-convex E (compressed springs) and converge
-// only linearly with the definite Hessian (README "Large steps" has the measured counts).
+// only linearly with the definite Hessian (docs/physics/integrators.md, "Large steps: `newton`", has the measured
+// counts).
 constexpr int kMostNewtonIterations = 30;
 // Each Newton system is solved to this relative residual (an inexact Newton method: the outer iteration then
 // converges linearly at about this rate, far faster than the tolerance above needs), in at most this many

@@ -71,7 +71,7 @@ struct StabilityEstimate {
 };
 
 // The safety factor `solver.dt: "auto"` applies to the estimate (contacts and large deformations move
-// the limit a little; measured margins in docs/stability.md).
+// the limit a little; measured margins in docs/physics/stability.md).
 constexpr double kAutoDtSafety = 0.7;
 
 BodyStats body_stats(const Body& body, std::span<const Vec3> x);
@@ -90,7 +90,7 @@ constexpr double kTravelFraction = 0.1;
 // bisection found the first unstable dt at 1.01 c/k. Its estimate is this fraction of the linear limit.
 constexpr double kSharpLimitMargin = 0.9;
 // Every explicit method with floor contact: the projection moves vertices between steps (measured on the floor,
-// 10 000 steps: Verlet 0.90-0.91, rk4 and rk45 0.99 of their free-flight limits; docs/stability.md).
+// 10 000 steps: Verlet 0.90-0.91, rk4 and rk45 0.99 of their free-flight limits; docs/physics/stability.md).
 constexpr double kContactMargin = 0.9;
 // Symplectic Euler on the floor, further: with the reversal done in its own terms (sim/integrators/
 // symplectic_euler.hpp) the damped bodies keep their free-flight limit, but an undamped one (icosphere:2,
