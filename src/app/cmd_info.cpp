@@ -73,11 +73,8 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
 }
 
 // What one xpbd substep costs per vertex, one thread (predict with gravity, the gas and, in the carried form that
-// auto picks, the constraints' carried forces; the edge pass, the velocities, the floor): 98 and 109 ns of CPU time
-// at icosphere:3 and :5 for the linearised form it replaced (build/bench_step --benchmark_filter='BM_Step/(1|7)/(3|5)$'
-// on a loaded machine; symplectic Euler's step there: 41 and 43 ns); the carried form measured 90 and 119 ns in the
-// bounce (bench_xpbd_convergence's CPU s per simulated s at 19 and 75 substeps, a loaded machine). The classical form
-// alone was 92 ns against symplectic's 50 and 62 ns.
+// auto picks, the constraints' carried forces; the edge pass, the velocities, the floor) [ns of CPU time]: about
+// 100 on the bounce at icosphere:3 and :5 (measurements: docs/notes/2026-12-05-header-derivations.md).
 constexpr double kXpbdSubstepNsPerVertex = 105.0;
 
 // xpbd's line: the substeps per frame `substeps: auto` picks, and the wall time per simulated second they cost.

@@ -25,9 +25,9 @@ namespace sim {
 // before (an overlap it started with, or one that contacts left). With `edge_capped` (velocity-based
 // integrators) also at most a twentieth of the surface's mean edge. Position-based integrators resolve their
 // contacts in every substep as constraints, so they push out all of a substep's travel, however fast.
-// A push moves a vertex without a force, against its springs and gas: the twentieth of an edge alone (about
-// 150 m/s at the explicit steps of 1 cm edges), or xpbd's old push of the whole depth, pushed an old overlap
-// out so fast that bodies started pressed together flew apart (issue 17's teapot lid).
+// A push moves a vertex without a force, against its springs and gas, so an old overlap leaves at
+// push_speed_m_per_s: pushing it out at once makes bodies started pressed together fly apart
+// (docs/physics/contact.md, "Contact between bodies"; docs/notes/2026-12-03-body-contact.md).
 // Built from the model for each step (sim/step/step.cpp): collisions.push_speed's default lives in sim::BodyContact.
 struct PushLimit {
   double step_s = 0.0;

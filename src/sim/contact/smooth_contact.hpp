@@ -13,9 +13,8 @@
 // d = 0 or d = δ the dashpot's third time derivative jumps (by 120 m ζω v_n⁴/δ³), so the step that straddles
 // the crossing has a local error O(h⁴) instead of the O(h²) of a switch: a method of order ≤ 3 keeps its
 // order through an impact, and rk4 keeps order 4 in its envelope, but that part of its error depends on
-// where in its step each vertex crosses, so it is not a smooth function of dt. It falls like 1/δ³: on the
-// bounce rk4's error at dt 4.6e-5 s is 2.4e-9 m at δ = 2 mm (pairwise orders −0.1 to 6.9 as dt shrinks) and
-// 2.3e-10 m at δ = 1 cm, where it follows dt⁴ (README, "rk4 and the ramp's ends").
+// where in its step each vertex crosses, so it is not a smooth function of dt. It falls like 1/δ³, which is why
+// scenes/bounce_smooth.json smooths over 1 cm (docs/physics/contact.md, "The smooth floor").
 // Friction scales with the elastic part alone, which is never negative, so the friction bound has no kink
 // where the dashpot pulls; it is regularised over the slip speed ε, so it is smooth in v_t too.
 // Restitution of a single vertex on the linear part: e = exp(−πζ/√(1 − ζ²)) (a damped half oscillation),

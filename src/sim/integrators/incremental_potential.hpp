@@ -26,7 +26,7 @@ namespace sim {
 //   dampers   D = Σ_e c/(2h) ((Δx_i − Δx_j)·d̂_e)²,  Δx = x − x_n,  d̂_e = d_e / |d_e| at x_n
 //   smooth floor: its spring, dashpot and friction (sim/contact/floor_potential.hpp; the dashpot's weight and
 //             the friction's normal force lagged: taken at x̂ by begin_step(), then wherever update_lags() says)
-//   smooth body contact: the same three per vertex near another body's surface (sim/integrators/
+//   smooth body contact: the same three per vertex near another body's surface (sim/contact/
 //             body_contact_potential.hpp; the contact frames lagged too); its Hessian is rank-one terms
 // ∇D = c ((v'_i − v'_j)·d̂_e) d̂_e is the model's damper force along the spring with its direction taken at
 // the start of the step (an O(h) change of direction, within backward Euler's O(h) error), which makes the
@@ -36,16 +36,12 @@ namespace sim {
 // The Hessian ∇²E = M/h² + Σ_e K_e + (c/h) Σ_e d̂d̂ᵀ + ∇²U_gas, assembled exactly or made positive definite:
 //   - springs: −∂f/∂x = k [d̂d̂ᵀ + (1 − L0/|d|)(I − d̂d̂ᵀ)] (sim/forces/spring_jacobian.hpp); definite:
 //     a compressed spring's negative geometric term clamped at zero (Choi & Ko 2002), as in `implicit`;
-//   - gas: ∇²(−nRT ln V) = nRT (∇V∇Vᵀ / V² − ∇²V / V). The first term is positive and rank one, u uᵀ with
-//     u = √nRT ∇V / V: it is returned as gas_terms(), applied as u (uᵀp) by the solver, never as a dense
-//     matrix. ∇²V is sparse with zero diagonal blocks: V = Σ_f x_a·(x_b × x_c)/6 is linear in each vertex,
-//     and an edge (i, j) with the faces (i, j, c) and (j, i, d) on its two sides has
-//     ∂²V/∂x_i∂x_j = [x_d − x_c]× / 6. So −(nRT/V)∇²V is, per edge, the 6×6 [[0, W], [Wᵀ, 0]] with
-//     W = [w]×, w = −(nRT/V)(x_d − x_c)/6, whose eigenvalues are ±|w| (twice) and 0: indefinite. Definite:
-//     each edge's term replaced by its projection on the positive semi-definite cone, ½(|H| + H) =
-//     ½ [[|w|(I − ŵŵᵀ), W], [Wᵀ, |w|(I − ŵŵᵀ)]] (W Wᵀ = |w|²I − wwᵀ, so |H| has the blocks √(W Wᵀ) =
-//     |w|(I − ŵŵᵀ)). The projection is not translation invariant (it stiffens the body's rigid motion by
-//     Σ|w|, ~10 % of M/h² on the bounce ball at 1/60 s), which is why the exact form is tried first.
+//   - gas: ∇²(−nRT ln V) = nRT (∇V∇Vᵀ / V² − ∇²V / V). The first term is rank one, u uᵀ with u = √nRT ∇V / V,
+//     returned as gas_terms() and applied as u (uᵀp) by the solver, never as a dense matrix. The second is, per
+//     edge (i, j) with the vertices c and d across it, the indefinite 6×6 [[0, W], [Wᵀ, 0]], W = [w]×,
+//     w = −(nRT/V)(x_d − x_c)/6 [N/m]; definite: its projection on the positive semi-definite cone, ½(|H| + H).
+//     The projection stiffens the body's rigid motion, which is why the exact form is tried first.
+//     Derivation: docs/notes/2026-12-05-header-derivations.md.
 // The line search uses E itself, so the clamps change only the Newton direction, never the solution.
 class IncrementalPotential {
  public:

@@ -28,12 +28,12 @@ namespace sim {
 // part (BlockSystem: pattern built once per model, values overwritten each iteration), u_b the gas's rank-one
 // term of body b (and the smooth body contact's terms, three per contact over its four vertices), applied as the
 // product u_b (u_bᵀ p) inside conjugate gradients, so the dense matrix is never formed
-// (sim/solvers/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero). It stops at a relative
-// residual of kSolveTolerance: a direct LDLᵀ (Eigen's SimplicialLDLT, AMD order, symbolic analysis once) was measured
-// first and costs far more per step (README "Large steps"), and its fill grows faster than the vertices. Why backward
+// (sim/solvers/block_jacobi_cg.hpp: block-Jacobi preconditioned, started from zero), to a relative residual of
+// kSolveTolerance: a direct LDLᵀ costs far more per step, and its fill grows faster than the vertices. Why backward
 // Euler and not BDF2 or the implicit midpoint rule: it is L-stable (stiff modes are damped, not left ringing at 1/60 s
 // steps) and a pure minimisation (the line search needs no energy safeguard); the price is first-order accuracy and
-// numerical damping of the slow modes, measured in README "Large steps".
+// numerical damping of the slow modes (measured: docs/physics/integrators.md, "Large steps: `newton`"; the direct
+// solve: docs/notes/2026-12-01-newton.md).
 //
 // Nothing is carried between steps (the Newton iteration starts from x̂ and each solve from zero), so a State
 // copy is a checkpoint. No allocation per step once sizes settle: the pattern, the gas terms and every vector are

@@ -16,11 +16,10 @@ namespace sim {
 // is not the time reversal of the motion (symplectic Euler is not symmetric: R G R ≠ G⁻¹ for R = diag(1, −1)),
 // and a vertex pressed onto the floor, reversed every step or two, gains energy: for a mode
 // ẍ = −μx − γẋ the map R·G has det −(1 − hγ) and trace hγ − h²μ, so |eigenvalues| ≤ 1 only while
-// h ≤ 2γ/μ = 2c/k (springs and dampers share λ), and at no h without dampers. On the bounce ball that was
-// a floor limit 0.79 × the free-flight one, and 0.03 × undamped (docs/stability.md). The reversal in the
-// integrator's own terms negates the velocity at x_{n+1}, v_{n+1} = v_{n+½} + (h/2) a_{n+1}: the stored
-// velocity becomes −v_{n+½} − h a_{n+1}, so the next kick gives exactly −v_{n+½}. A reversed vertex
-// therefore skips its next kick; then the floor costs symplectic Euler nothing (measured: as free flight).
+// h ≤ 2γ/μ = 2c/k (springs and dampers share λ), and at no h without dampers (docs/physics/stability.md,
+// "Floor contact and the step"). The reversal in the integrator's own terms negates the velocity at x_{n+1},
+// v_{n+1} = v_{n+½} + (h/2) a_{n+1}: the stored velocity becomes −v_{n+½} − h a_{n+1}, so the next kick gives
+// exactly −v_{n+½}. A reversed vertex therefore skips its next kick, and the floor costs symplectic Euler nothing.
 // The floor's contact phase lists the vertices it reversed in State::coasting; the next step reads the list
 // and empties it.
 class SymplecticEuler final : public Integrator {

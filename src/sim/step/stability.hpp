@@ -36,7 +36,7 @@
 namespace sim {
 
 // Power iterations per body: a fixed count, so the estimate costs 100 passes over the edges whatever the
-// mesh (0.75 s of CPU on the 187k-edge ogre); Gershgorin's bound caps λ where they have not converged.
+// mesh; Gershgorin's bound caps λ where they have not converged.
 inline constexpr int kPowerIterations = 100;
 
 // What the estimate knows about one body's fastest modes.
@@ -86,27 +86,23 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds);
 constexpr double kTravelFraction = 0.1;
 
 // Forward Euler's damper limit h < c/k is sharp: at h = c/k every underdamped mode has |g|² = 1 + hλ(hk − c) = 1
-// at once, so nothing is left for the nonlinear terms (stretch-dependent geometric stiffness, the gas); the
-// bisection found the first unstable dt at 1.01 c/k. Its estimate is this fraction of the linear limit.
+// at once, so nothing is left for the nonlinear terms (stretch-dependent geometric stiffness, the gas). Its
+// estimate is this fraction of the linear limit.
 constexpr double kSharpLimitMargin = 0.9;
-// Every explicit method with floor contact: the projection moves vertices between steps (measured on the floor,
-// 10 000 steps: Verlet 0.90-0.91, rk4 and rk45 0.99 of their free-flight limits; docs/physics/stability.md).
+// Every explicit method with floor contact: the projection moves vertices between steps, which costs up to a
+// tenth of the free-flight limit (measured: docs/physics/stability.md).
 constexpr double kContactMargin = 0.9;
-// Symplectic Euler on the floor, further: with the reversal done in its own terms (sim/integrators/
-// symplectic_euler.hpp) the damped bodies keep their free-flight limit, but an undamped one (icosphere:2,
-// k 5000 N/m, nRT 100 J) was stable only to 0.78 × it: the projection y ← floor moves a vertex without
-// changing its velocity, and without dampers nothing takes that energy out again. Measured, not derived;
-// with kContactMargin the estimate is 0.72 × the free-flight one.
+// Symplectic Euler on the floor, further: its reversal (sim/integrators/symplectic_euler.hpp) keeps a damped
+// body's free-flight limit, but the projection y ← floor moves a vertex without changing its velocity, and
+// without dampers nothing takes that energy out again. A measured factor, not derived (docs/physics/
+// stability.md, "Floor contact and the step"); with kContactMargin the estimate is 0.72 × the free-flight one.
 constexpr double kSymplecticProjectionFactor = 0.8;
-// Forward Euler with the paper's floor response (v ← −v, the tangential velocity included). The reversal is
-// not the time reversal of a forward-Euler step (R G R ≠ G⁻¹); for one mode reversed every step, R·(I + hA)
-// has det −(1 − hγ + h²μ) and trace hγ, so an eigenvalue exceeds 1 at every h: each reversal pumps energy
-// (about h²μ/2 of the mode's) that only the dampers remove. How much that costs depends on how strongly the
-// fastest modes are damped, ζ_max = γ/(2ω) = c√λ_max/(2√k): measured on icospheres 0-5 resting on the floor
-// (20 000 steps), stable to 0.85 c/k while ζ_max < 0.5 (icosphere:3, ζ 0.29) but only to 0.35 c/k and
-// 0.30 c/k at ζ_max 0.6 and 1.2 (icosphere:4 and :5). No model gives these numbers; they are measured, and
-// the estimate takes these fractions of c/k (10 % below the largest dt found stable). The friction contact
-// changes only the normal velocity and costs nothing (measured: as free flight).
+// Forward Euler with the paper's floor response (v ← −v, the tangential velocity included): for one mode
+// reversed every step, R·(I + hA) has an eigenvalue above 1 at every h, so each reversal pumps energy that only
+// the dampers remove. The stable step is a fraction of c/k that falls with the fastest mode's damping ratio
+// ζ_max = γ/(2ω) = c√λ_max/(2√k), measured on icospheres 0-5 and not derived (docs/physics/stability.md,
+// "Floor contact and the step"); the estimate takes 10 % below the largest dt found stable. The friction
+// contact changes only the normal velocity and costs nothing.
 constexpr double kPaperEulerFractionLightDamping = 0.75;  // of c/k, ζ_max < kPaperEulerZeta
 constexpr double kPaperEulerFractionHeavyDamping = 0.27;  // of c/k, ζ_max ≥ kPaperEulerZeta
 constexpr double kPaperEulerZeta = 0.5;
@@ -127,34 +123,21 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
 // contact, ModeBounds::omega_max), and (2) the contact travel of every integrator, a tenth of the shortest edge
 // per step (travel_dt_s).
 //
-// The classical form (h ω_max above the limit, or chosen substeps that put it there): the springs set no
-// stability limit (xpbd.hpp), but one constraint pass per substep leaves a pressurised network short of its
-// equilibrium: the ball flies inflated by a bias that grows with h ω_max and, at the same h ω_max, with the mesh
-// (one Gauss–Seidel pass carries a correction only a few edges). Measured on the bounce ball (k 1000 N/m,
-// c 1 N·s/m, nRT 50 J, 1 kg), free-flight volume against symplectic Euler at 2.5e-5 s (icosphere:3) and
-// 1.75e-5 s (icosphere:5):
-//   icosphere:3 (642 vertices, ω_max 2037 rad/s), h ω_max 3.4, 1.7, 0.85, 0.42: +3.0, +1.0, +0.39, +0.16 %
-//   icosphere:5 (10242 vertices, ω_max 8428 rad/s), h ω_max 3.5, 1.75, 0.88:      +6, +2.9, +1.3 %
-// fitted by bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower (within 10 % of each
-// point from 0.85 to 3.5); xpbd_bias_dt solves it for h (auto used it before the carried form). A fit of two
-// meshes and one material: a stiffer or softer body moves ω_max, which the fit follows, but it was not measured.
+// The classical form (h ω_max above the limit) takes no stability limit from the springs (xpbd.hpp), but one
+// constraint pass per substep leaves a pressurised body inflated by a free-flight volume bias, fitted as
+//   bias ≈ kXpbdBiasScale (h ω_max)^kXpbdBiasPower (N / 642)^kXpbdBiasMeshPower      (N: the body's vertices)
+// on the bounce ball at icosphere:3 and :5, one material (docs/notes/2026-12-05-header-derivations.md);
+// xpbd_bias_dt solves it for h.
 constexpr double kXpbdVolumeBias = 0.005;  // the bias xpbd_bias_dt aims for (0.5 % of the volume)
 constexpr double kXpbdBiasScale = 0.0048;  // bias at h ω_max = 1 on icosphere:3
 constexpr double kXpbdBiasPower = 1.25;
 constexpr double kXpbdBiasMeshPower = 0.43;
 constexpr int kXpbdMostAutoSubsteps = 10000;  // at least 1, at most this many
-// xpbd takes its carried form (sim/integrators/xpbd.hpp: the constraints' forces of the last substep applied in the
-// prediction, the pass solving for their change) while h ≤ xpbd_carried_dt: h ω_max ≤ kXpbdCarriedPhaseLimit. That
-// form has no volume bias but a stability limit of its explicit part. Measured on the bounce ball (k 1000 N/m,
-// c 1 N·s/m, nRT 50 J, 1 kg, smooth floor; ω_max with the contact; bench_xpbd_convergence, volume and centre of mass
-// against the rk45 1e-8 reference): icosphere:5 (ω_max 8442 rad/s, 1 s) diverged at h ω_max 4.7 (30 substeps per
-// 1/60 s), ran at 3.1 (45) with 4.1 % volume error at the impact, and at 2.3 and 1.9 (60, 75) with 1.3 and 0.46 %,
-// centre of mass 1.7 and 0.35 cm; icosphere:3 (ω_max 2097 rad/s, 3 s) ran at 2.9 (12) with 2.4 % in flight and at
-// 2.2 and 1.75 (16, 20) with 0.09 and 0.03 %. (Those runs started with a whole first kick; with the leapfrog
-// start, xpbd.hpp, icosphere:5 at 75 has 1.1 % at the impact and 1.3 cm: README, "The leapfrog start".) The
-// limit takes 1.9: about 1 % on both meshes, 0.6 × the fastest step that stayed stable (a fit of two meshes and
-// one material; the guard stops a run that diverges anyway, and solver.retry halves the substep, which keeps the
-// form).
+// xpbd takes its carried form (sim/integrators/xpbd.hpp) while h ≤ xpbd_carried_dt: h ω_max ≤
+// kXpbdCarriedPhaseLimit. That form has no volume bias, but its explicit part has a stability limit: 1.9 is
+// 0.6 × the fastest substep that stayed stable on the bounce ball (icosphere:3 and :5), with about 1 % volume
+// error on both (docs/notes/2026-12-05-header-derivations.md). The guard stops a run that diverges anyway, and
+// solver.retry halves the substep, which keeps the form.
 constexpr double kXpbdCarriedPhaseLimit = 1.9;
 // The largest substep of the carried form for a body with fastest mode ω_max (kUnlimited: no modes).
 double xpbd_carried_dt(double omega_max);
