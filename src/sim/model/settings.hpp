@@ -10,7 +10,7 @@
 namespace sim {
 
 // Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in
-// docs/integrators.md. kIntegrators below lists them with their names and properties.
+// docs/physics/integrators.md. kIntegrators below lists them with their names and properties.
 enum class IntegratorKind {
   Euler,       // forward Euler (Matyka & Ollila 2003, Eq. 11): first order
   Symplectic,  // semi-implicit Euler: v from the force, then x from the new v; first order, symplectic

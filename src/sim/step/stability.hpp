@@ -94,8 +94,9 @@ constexpr double kSharpLimitMargin = 0.9;
 constexpr double kContactMargin = 0.9;
 // Symplectic Euler on the floor, further: its reversal (sim/integrators/symplectic_euler.hpp) keeps a damped
 // body's free-flight limit, but the projection y ← floor moves a vertex without changing its velocity, and
-// without dampers nothing takes that energy out again. A measured factor, not derived (docs/physics/
-// stability.md, "Floor contact and the step"); with kContactMargin the estimate is 0.72 × the free-flight one.
+// without dampers nothing takes that energy out again. A measured factor, not derived
+// (docs/physics/stability.md, "Floor contact and the step"); with kContactMargin the estimate is 0.72 × the
+// free-flight one.
 constexpr double kSymplecticProjectionFactor = 0.8;
 // Forward Euler with the paper's floor response (v ← −v, the tangential velocity included): for one mode
 // reversed every step, R·(I + hA) has an eigenvalue above 1 at every h, so each reversal pumps energy that only
