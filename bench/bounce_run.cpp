@@ -8,13 +8,12 @@
 #include <numeric>
 
 #include "bullet_pressure_body.hpp"
-#include "frames/frame_clock.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/forces/energy.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/newton_euler.hpp"
-#include "sim/step/stability.hpp"
+#include "sim/step/step_plan.hpp"
 
 namespace bench {
 
@@ -39,12 +38,11 @@ double sample_aligned(double dt_s) {
   return kBounceSampleInterval_s / std::ceil(kBounceSampleInterval_s / dt_s * (1.0 - 1e-9));
 }
 
-double automatic_dt(const sim::World& world, sim::IntegratorKind integrator) {
-  const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-  if (integrator == sim::IntegratorKind::Xpbd) {
-    return frames::substep_dt(60, sim::auto_substeps(world.model, estimate, kBounceSampleInterval_s));
-  }
-  return sample_aligned(sim::auto_dt(estimate, integrator, kBounceSampleInterval_s, kBounceScene));
+// As "dt": "auto" in frames of the sample interval (xpbd: its automatic substeps).
+double automatic_dt(sim::World& world) {
+  world.model.solver.dt_auto = true;
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kBounceSampleInterval_s, kBounceScene);
+  return plan.substeps > 0 ? plan.dt_s : sample_aligned(plan.dt_s);
 }
 
 void sample(const std::vector<Vec3>& x, const std::vector<sim::Triangle>& faces, const Vec3& com, BounceRecord& r) {
@@ -84,7 +82,7 @@ sim::World bounce_world(const BounceSetup& setup, double& dt_s) {
   const scene::Scene s = bounce_scene(setup);
   std::vector<std::string> notes;
   sim::World world = setup::build_world(s, notes);
-  dt_s = setup.dt_s > 0.0 ? sample_aligned(setup.dt_s) : automatic_dt(world, setup.integrator);
+  dt_s = setup.dt_s > 0.0 ? sample_aligned(setup.dt_s) : automatic_dt(world);
   world.model.solver.dt_s = dt_s;
   world.state.next_dt_s = dt_s;
   return world;

@@ -15,7 +15,7 @@
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/forces/forces.hpp"
-#include "sim/step/stability.hpp"
+#include "sim/step/step_plan.hpp"
 #include "sim/step/world.hpp"
 
 namespace {
@@ -35,10 +35,7 @@ int run(const std::string& scene_file, const std::vector<std::string>& overrides
   sim::World world = setup::build_world(s, notes);
   for (const std::string& note : notes) std::printf("note: %s\n", note.c_str());
   const double frame_s = 1.0 / s.fps;
-  double dt = s.solver.dt_s;
-  if (s.solver.dt_auto) {
-    dt = sim::auto_dt(sim::estimate_stability(world.model, world.state), s.solver.integrator, frame_s, scene_file);
-  }
+  double dt = sim::resolve_step(world.model, world.state, frame_s, scene_file).dt_s;
   const long steps_per_frame = std::max(1L, static_cast<long>(std::ceil(frame_s / dt - 1e-9)));
   dt = frame_s / static_cast<double>(steps_per_frame);
   const std::vector<Vec3> initial = world.state.x;
@@ -57,7 +54,7 @@ int run(const std::string& scene_file, const std::vector<std::string>& overrides
   }
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("scene %s, %s, dt %.3g s, %.1f s simulated in %.1f s wall\n", scene_file.c_str(),
-              sim::to_string(s.solver.integrator).c_str(), dt, s.duration_s, wall_s);
+              sim::to_string(world.model.solver.integrator).c_str(), dt, s.duration_s, wall_s);
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
     const sim::Body& body = world.model.bodies[b];
     const analysis::ShapeDeviation end = deviation_of(world, b, initial);

@@ -114,7 +114,7 @@ TEST_P(Checkpoint, SteppingFromACopiedStateGivesTheSameBits) {
     EXPECT_EQ(resumed.state.steps, uninterrupted.state.steps);
     EXPECT_EQ(resumed.state.time_s, uninterrupted.state.time_s);
     EXPECT_EQ(resumed.state.rejected_steps, uninterrupted.state.rejected_steps);
-    EXPECT_EQ(resumed.state.substeps, uninterrupted.state.substeps);
+    EXPECT_EQ(resumed.state.retry_substeps, uninterrupted.state.retry_substeps);
     ASSERT_EQ(resumed.state.x.size(), uninterrupted.state.x.size());
     EXPECT_EQ(differing_vertices(resumed.state, uninterrupted.state), 0u)
         << "vertices whose x or v differ after resuming from the copy taken at t = " << copy.time_s << " s";

@@ -27,8 +27,9 @@ sim::World landed_ball(const std::string& integrator) {
 }
 
 bool same_bits(const sim::State& a, const sim::State& b) {
-  return a.x == b.x && a.v == b.v && a.time_s == b.time_s && a.steps == b.steps && a.substeps == b.substeps &&
-         a.next_dt_s == b.next_dt_s && a.last_dt_s == b.last_dt_s && a.carry.acceleration == b.carry.acceleration &&
+  return a.x == b.x && a.v == b.v && a.time_s == b.time_s && a.steps == b.steps &&
+         a.retry_substeps == b.retry_substeps && a.next_dt_s == b.next_dt_s && a.last_dt_s == b.last_dt_s &&
+         a.carry.acceleration == b.carry.acceleration &&
          a.carry.velocity_change.size() == b.carry.velocity_change.size() &&
          (a.carry.velocity_change.size() == 0 || a.carry.velocity_change == b.carry.velocity_change) &&
          a.carry.previous_error == b.carry.previous_error && a.carry.rejected_last == b.carry.rejected_last &&

@@ -130,8 +130,8 @@ int run_info(const InfoOptions& options) {
                        run.world.state.x.size());
     }
   }
-  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n", sim::to_string(run.scene.solver.integrator).c_str(),
-              run.clock.dt_s, run.clock.steps_per_frame);
+  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n",
+              sim::to_string(run.world.model.solver.integrator).c_str(), run.clock.dt_s, run.clock.steps_per_frame);
   return 0;
 }
 

@@ -9,61 +9,60 @@
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/step/stability.hpp"
+#include "sim/step/step_plan.hpp"
 
 namespace app {
+namespace {
+
+// The command's force threads when the scene leaves solver.threads at 0 (`threads_when_auto`; 0: one per core):
+// set on the model, and the world's workspace built again for them.
+void use_threads_when_auto(sim::World& world, int threads_when_auto) {
+  if (world.model.solver.threads != 0 || threads_when_auto == 0) return;
+  world.model.solver.threads = threads_when_auto;
+  world = sim::World(std::move(world.model), std::move(world.state));
+}
+
+}  // namespace
 
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
-  if (scene.solver.threads == 0) scene.solver.threads = threads_when_auto;
   std::vector<std::string> notes;
   std::vector<int> bodies_per_scene_body;
   // SIGINT / SIGTERM during setup (a long mesh repair, remesh, ...) end it when that phase ends.
   const softbody::AfterPhase after_phase = frames::throw_if_stop_requested_after;
   sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body, after_phase);
+  use_threads_when_auto(world, threads_when_auto);
   // A split body is several bodies from here on: one scene body each, so that colours and patterns follow.
   std::vector<scene::Body> bodies;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     bodies.insert(bodies.end(), static_cast<std::size_t>(bodies_per_scene_body[b]), scene.bodies[b]);
   scene.bodies = std::move(bodies);
-  const bool xpbd = scene.solver.integrator == sim::IntegratorKind::Xpbd;
-  if (xpbd && (scene.solver.substeps_auto || scene.solver.dt_auto)) {
-    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-    scene.solver.substeps = sim::auto_substeps(world.model, estimate, 1.0 / scene.fps);
-    after_phase("estimating the stable substep");
+  const sim::StepPlan step =
+      sim::resolve_step(world.model, world.state, 1.0 / scene.fps, scene.source.string(), after_phase);
+  if (step.substeps_chosen) {
     char note[200];
     std::snprintf(note, sizeof note,
                   "solver.substeps = auto: %d substeps per frame (h = %.4g s: within the carried form's limit and "
                   "the contact travel limit %.4g s)",
-                  scene.solver.substeps, frames::substep_dt(scene.fps, scene.solver.substeps), estimate.travel_dt_s);
+                  step.substeps, step.dt_s, step.travel_dt_s);
     notes.insert(notes.begin(), note);
-  }
-  if (xpbd && scene.solver.substeps > 0) {
-    scene.solver.dt_s = frames::substep_dt(scene.fps, scene.solver.substeps);
-    world.model.solver.dt_s = scene.solver.dt_s;
-  } else if (scene.solver.dt_auto) {
-    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-    scene.solver.dt_s = sim::auto_dt(estimate, scene.solver.integrator, 1.0 / scene.fps, scene.source.string());
-    after_phase("estimating the stable step");
-    world.state.next_dt_s = scene.solver.dt_s;
+  } else if (step.dt_chosen) {
+    const sim::IntegratorKind integrator = world.model.solver.integrator;
     char note[200];
     std::snprintf(note, sizeof note, "solver.dt = auto: %.4g s (%.2f x the estimated stable dt of %s, %.4g s)",
-                  scene.solver.dt_s, sim::kAutoDtSafety, sim::to_string(scene.solver.integrator).c_str(),
-                  estimate.stable_dt(scene.solver.integrator));
+                  step.dt_s, sim::kAutoDtSafety, sim::to_string(integrator).c_str(), step.stable_dt_s);
     notes.insert(notes.begin(), note);
   }
-  const frames::FrameClock clock =
-      frames::plan_frames(scene.duration_s, scene.fps, scene.solver.dt_s, scene.source.string());
-  const bool adaptive = scene.solver.integrator == sim::IntegratorKind::Rk45;  // chooses its own steps
-  if (!clock.dt_note.empty() && !adaptive && !scene.solver.dt_auto && !(xpbd && scene.solver.substeps > 0)) {
-    notes.push_back(clock.dt_note);
-  }
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, step.dt_s, scene.source.string());
+  const bool adaptive = world.adaptive();  // rk45 chooses its own steps
+  if (!clock.dt_note.empty() && !adaptive && step.dt_requested()) notes.push_back(clock.dt_note);
   for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }
 
 void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written,
                        std::FILE* out) {
-  const sim::Solver& solver = run.scene.solver;
+  const sim::Solver& solver = run.world.model.solver;
   char steps[160];
   if (solver.integrator == sim::IntegratorKind::Rk45) {
     std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,

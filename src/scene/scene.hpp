@@ -86,6 +86,8 @@ struct Scene {
   std::string name = "scene";
   double duration_s = 3.0;  // simulated seconds
   int fps = 30;             // frames per simulated second
+  // The scene file's request (with --set). The model copies it (setup::build_world) and sim::resolve_step
+  // resolves its substeps and automatic dt there: the world's model.solver is the copy in force.
   sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
   std::optional<sim::Floor> floor;  // no floor when absent

@@ -59,7 +59,7 @@ TEST(Guard, RetrySplitsFailedStepsInsteadOfStopping) {
   sim::World world = world_from_text(ball(R"({ "integrator": "euler", "retry": true })"));
   EXPECT_NO_THROW(testing_support::run_steps(world, 5000, 2.0e-4));
   EXPECT_GT(world.state.retried_steps, 0);
-  EXPECT_EQ(world.state.substeps, 2) << "half of 2e-4 s is below the 1.67e-4 s limit";
+  EXPECT_EQ(world.state.retry_substeps, 2) << "half of 2e-4 s is below the 1.67e-4 s limit";
   EXPECT_TRUE(world.state.x[0].allFinite());
 }
 

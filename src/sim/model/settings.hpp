@@ -131,12 +131,14 @@ struct Solver {
   IntegratorKind integrator = IntegratorKind::Euler;
   double dt_s = 1e-4;    // requested time step; the run uses the largest dt <= this that divides 1/fps
                          // (rk45: only the first trial step; it then chooses its own)
-  bool dt_auto = false;  // "dt": "auto": dt_s is set from the stable-dt estimate (sim/step/stability.hpp)
-  // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps; 0: dt_s
-  // decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy sim::auto_substeps states.
+  bool dt_auto = false;  // "dt": "auto": sim::resolve_step sets dt_s from the stable-dt estimate (stability.hpp)
+  // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps, set by
+  // sim::resolve_step; 0: dt_s decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy
+  // sim::auto_substeps states. Not the guard's retry substeps (State::retry_substeps).
   int substeps = 0;
   bool substeps_auto = false;
-  bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024)
+  bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024;
+                            // State::retry_substeps)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
   int threads = 0;          // threads for the force passes of large bodies; 0: one per core. Results do not depend

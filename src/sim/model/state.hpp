@@ -44,8 +44,9 @@ struct State {
   double time_s = 0.0;
   long long steps = 0;           // accepted steps
   long long rejected_steps = 0;  // adaptive integrators: attempts rejected by the error estimate or the guard
-  long long retried_steps = 0;   // solver.retry: steps redone in substeps
-  int substeps = 1;              // solver.retry: each step of dt is now this many substeps
+  long long retried_steps = 0;   // solver.retry: steps redone in retry substeps
+  int retry_substeps = 1;        // solver.retry: each step of dt is now this many substeps (not xpbd's
+                                 // solver.substeps, which divide the frame interval)
   double next_dt_s = 1e-4;       // adaptive integrators: the step tried next
   double last_dt_s = 0.0;        // the last step taken, for messages
 

@@ -86,7 +86,7 @@ std::string encode_state(const State& state) {
   w.scalar<std::int64_t>(state.steps);
   w.scalar<std::int64_t>(state.rejected_steps);
   w.scalar<std::int64_t>(state.retried_steps);
-  w.scalar<std::int32_t>(state.substeps);
+  w.scalar<std::int32_t>(state.retry_substeps);
   w.scalar(state.next_dt_s);
   w.scalar(state.last_dt_s);
   w.vectors(state.carry.acceleration);
@@ -114,7 +114,7 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.steps = r.scalar<std::int64_t>("step count");
   state.rejected_steps = r.scalar<std::int64_t>("rejected step count");
   state.retried_steps = r.scalar<std::int64_t>("retried step count");
-  state.substeps = r.scalar<std::int32_t>("substeps");
+  state.retry_substeps = r.scalar<std::int32_t>("substeps");
   state.next_dt_s = r.scalar<double>("next dt");
   state.last_dt_s = r.scalar<double>("last dt");
   state.carry.acceleration = r.vectors("carried acceleration", n);
@@ -137,7 +137,7 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.guard.budget_J = r.array<double>("guard budget", model.bodies.size());
   state.guard.steps_since_full_check = r.scalar<std::int32_t>("guard counter");
   r.expect_end();
-  if (state.substeps < 1) throw softbody::InputError("state has a substep count below 1");
+  if (state.retry_substeps < 1) throw softbody::InputError("state has a substep count below 1");
   return state;
 }
 

@@ -15,7 +15,7 @@
 namespace sim {
 namespace {
 
-constexpr int kMostSubsteps = 1024;  // solver.retry gives up past this many substeps per step
+constexpr int kMostRetrySubsteps = 1024;  // solver.retry gives up past this many substeps per step
 
 // Phase 1: the integrator advances x and v (forces evaluated inside). Adaptive integrators return their
 // error estimate (<= 1: within the tolerance), fixed-step ones 0.
@@ -92,10 +92,10 @@ std::optional<Divergence> fixed_step_phases(const Model& model, State& state, Wo
   return guard(model, state, /*full=*/model.solver.retry);
 }
 
-// A step of dt as state.substeps substeps, each checked: the first problem found.
-std::optional<Divergence> run_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
-  for (int s = 0; s < state.substeps; ++s) {
-    if (auto found = fixed_step_phases(model, state, workspace, dt / state.substeps)) return found;
+// A step of dt as state.retry_substeps substeps, each checked: the first problem found.
+std::optional<Divergence> run_retry_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
+  for (int s = 0; s < state.retry_substeps; ++s) {
+    if (auto found = fixed_step_phases(model, state, workspace, dt / state.retry_substeps)) return found;
   }
   return std::nullopt;
 }
@@ -124,13 +124,13 @@ void save_before_step(const Model& model, State& state, Workspace& workspace) {
 }
 
 // After the step from workspace.saved failed: the saved state again, in twice the substeps, until a run of
-// them passes the guard (true) or kMostSubsteps fail too (false). Later steps keep the count that worked.
+// them passes the guard (true) or kMostRetrySubsteps fail too (false). Later steps keep the count that worked.
 bool retry_in_more_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
-  while (state.substeps < kMostSubsteps) {
-    const int substeps = 2 * state.substeps;
+  while (state.retry_substeps < kMostRetrySubsteps) {
+    const int substeps = 2 * state.retry_substeps;
     state = workspace.saved;
-    state.substeps = substeps;
-    if (!run_substeps(model, state, workspace, dt)) {
+    state.retry_substeps = substeps;
+    if (!run_retry_substeps(model, state, workspace, dt)) {
       ++state.retried_steps;
       return true;
     }
@@ -154,7 +154,7 @@ void step(const Model& model, State& state, Workspace& workspace, double dt) {
   workspace.deepest_floor_penetration_m = 0.0;
   const bool retry = model.solver.retry;
   if (retry) save_before_step(model, state, workspace);
-  if (const std::optional<Divergence> found = run_substeps(model, state, workspace, dt)) {
+  if (const std::optional<Divergence> found = run_retry_substeps(model, state, workspace, dt)) {
     if (!retry || !retry_in_more_substeps(model, state, workspace, dt)) {
       throw_diverged(model, *found, state.time_s + dt, state.steps + 1, dt);
     }

@@ -1,0 +1,37 @@
+// Resolving the step from the model: xpbd's substeps and "dt": "auto".
+#include "sim/step/step_plan.hpp"
+
+#include "sim/step/stability.hpp"
+
+namespace sim {
+
+StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const std::string& context,
+                      const softbody::AfterPhase& after_phase) {
+  Solver& solver = model.solver;
+  StepPlan plan;
+  plan.dt_s = solver.dt_s;
+  const bool xpbd = solver.integrator == IntegratorKind::Xpbd;
+  plan.substeps = xpbd ? solver.substeps : 0;
+  if (xpbd && (solver.substeps_auto || solver.dt_auto)) {
+    const StabilityEstimate estimate = estimate_stability(model, state);
+    plan.substeps = auto_substeps(model, estimate, frame_interval_s);
+    plan.substeps_chosen = true;
+    plan.travel_dt_s = estimate.travel_dt_s;
+    if (after_phase) after_phase("estimating the stable substep");
+  }
+  if (plan.substeps > 0) {
+    solver.substeps = plan.substeps;
+    plan.dt_s = frame_interval_s / plan.substeps;
+  } else if (solver.dt_auto) {
+    const StabilityEstimate estimate = estimate_stability(model, state);
+    plan.dt_s = auto_dt(estimate, solver.integrator, frame_interval_s, context);
+    plan.dt_chosen = true;
+    plan.stable_dt_s = estimate.stable_dt(solver.integrator);
+    if (after_phase) after_phase("estimating the stable step");
+    state.next_dt_s = plan.dt_s;
+  }
+  solver.dt_s = plan.dt_s;
+  return plan;
+}
+
+}  // namespace sim

@@ -1,0 +1,72 @@
+// sim::resolve_step: xpbd's substeps and "dt": "auto" resolved on the model's copy of the solver settings.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/errors.hpp"
+#include "sim/step/stability.hpp"
+#include "sim/step/step_plan.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using testing_support::world_from_text;
+
+constexpr double kFrame_s = 1.0 / 30;
+
+// scenes/bounce.json's ball, coarser, above the floor.
+std::string ball(const std::string& solver) {
+  return R"({ "fps": 30, "floor": { "height": 0 }, "solver": )" + solver +
+         R"(, "bodies": [ { "mesh": "icosphere:2", "position": [0, 1, 0], "stiffness": 3000, "damping": 0.5, "pressure": 30 } ] })";
+}
+
+TEST(StepPlan, RequestedDtStaysAsItIs) {
+  sim::World world = world_from_text(ball(R"({ "integrator": "symplectic", "dt": 1e-4 })"));
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
+  EXPECT_TRUE(plan.dt_requested());
+  EXPECT_EQ(plan.dt_s, 1e-4);
+  EXPECT_EQ(world.model.solver.dt_s, 1e-4);
+}
+
+TEST(StepPlan, XpbdSubstepsDivideTheFrameInterval) {
+  sim::World world = world_from_text(ball(R"({ "integrator": "xpbd", "substeps": 7 })"));
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
+  EXPECT_FALSE(plan.dt_requested());
+  EXPECT_FALSE(plan.substeps_chosen);
+  EXPECT_EQ(plan.substeps, 7);
+  EXPECT_EQ(plan.dt_s, 1.0 / 30 / 7);
+  EXPECT_EQ(world.model.solver.dt_s, plan.dt_s);
+}
+
+TEST(StepPlan, XpbdAutoSubstepsComeFromTheEstimate) {
+  sim::World world = world_from_text(ball(R"({ "integrator": "xpbd", "substeps": "auto" })"));
+  const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
+  std::string phases;
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json",
+                                               [&](const std::string& phase) { phases += phase; });
+  EXPECT_TRUE(plan.substeps_chosen);
+  EXPECT_EQ(plan.substeps, sim::auto_substeps(world.model, estimate, kFrame_s));
+  EXPECT_EQ(world.model.solver.substeps, plan.substeps);
+  EXPECT_EQ(world.model.solver.dt_s, kFrame_s / plan.substeps);
+  EXPECT_EQ(plan.travel_dt_s, estimate.travel_dt_s);
+  EXPECT_EQ(phases, "estimating the stable substep");
+}
+
+TEST(StepPlan, DtAutoIsAlsoTheFirstTrialStep) {
+  sim::World world = world_from_text(ball(R"({ "integrator": "rk45", "dt": "auto" })"));
+  const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
+  EXPECT_TRUE(plan.dt_chosen);
+  EXPECT_EQ(plan.dt_s, sim::auto_dt(estimate, sim::IntegratorKind::Rk45, kFrame_s, "s.json"));
+  EXPECT_EQ(plan.stable_dt_s, estimate.stable_dt(sim::IntegratorKind::Rk45));
+  EXPECT_EQ(world.model.solver.dt_s, plan.dt_s);
+  EXPECT_EQ(world.state.next_dt_s, plan.dt_s);
+}
+
+TEST(StepPlan, DtAutoRefusesForwardEulerWithoutDampers) {
+  sim::World world = world_from_text(
+      R"({ "solver": { "integrator": "euler", "dt": "auto" }, "bodies": [ { "mesh": "icosphere:1", "damping": 0 } ] })");
+  EXPECT_THROW(sim::resolve_step(world.model, world.state, kFrame_s, "s.json"), softbody::InputError);
+}
+
+}  // namespace
