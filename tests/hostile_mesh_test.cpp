@@ -2,17 +2,26 @@
 // wrong, before any out-of-bounds read, endless loop or huge allocation (the files crash or hang assimp or
 // the welder when passed through unchecked).
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <optional>
+#include <thread>
 
 #include <gtest/gtest.h>
 
+#include "background_run.hpp"
 #include "core/errors.hpp"
 #include "geometry/mesh_repair.hpp"
 #include "mesh/fbx_check.hpp"
 #include "mesh/gltf_check.hpp"
+#include "mesh/import.hpp"
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
 #include "mesh/ply_header.hpp"
@@ -148,7 +157,18 @@ INSTANTIATE_TEST_SUITE_P(
         // coordinates that are not numbers, or whose squares overflow (welding, volumes).
         // (assimp reads coordinates as float: 1e300 arrives as infinity; it renumbers OBJ vertices).
         HostileMesh{"obj_nan_vertex.obj", "with coordinate nan (expected finite coordinates within +-1e+12)"},
-        HostileMesh{"obj_huge_vertex.obj", "with coordinate inf (expected finite coordinates"}),
+        HostileMesh{"obj_huge_vertex.obj", "with coordinate inf (expected finite coordinates"},
+        // assimp 5.2's OFF reader clamps an index past the vertices to the last one: the cube became open ("3
+        // boundary edges"), and with "repair" a closed mesh of the wrong volume.
+        HostileMesh{"off_face_index_past_the_vertices.off",
+                    "is an OFF file whose face 5 names vertex index 8, past its 8 vertices (expected indices from 0 "
+                    "to 7)"},
+        // triangles enough, but on fewer than 4 distinct points: said so, not "has 12 triangles; ... at least 4".
+        HostileMesh{"obj_all_vertices_at_one_point.obj",
+                    "has 12 triangles but all its vertices at one point (2, 3, 4): every triangle is degenerate"},
+        HostileMesh{"obj_one_vertex_far_away.obj",
+                    "has 12 triangles but its vertices at only 2 distinct points within a box from (0, 0, 0) to "
+                    "(1e+11, 1, 1)"}),
     [](const auto& test) {
       std::string name = test.param.file;
       for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -185,11 +205,11 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
   const auto document = [&](const std::string& accessors, const std::string& primitive) {
     return head + accessors + R"("meshes":[{"primitives":[)" + primitive + "]}]}";
   };
-  EXPECT_NO_THROW(mesh::check_gltf_document(document(accessor, R"({"attributes":{"POSITION":0}})")));
-  EXPECT_NO_THROW(mesh::check_gltf_document(document(accessor, R"({"attributes":{"POSITION":0},"mode":4})")));
+  EXPECT_NO_THROW(mesh::check_gltf_document(document(accessor, R"({"attributes":{"POSITION":0}})"), "."));
+  EXPECT_NO_THROW(mesh::check_gltf_document(document(accessor, R"({"attributes":{"POSITION":0},"mode":4})"), "."));
   const auto refusal = [](const std::string& json) {
     try {
-      mesh::check_gltf_document(json);
+      mesh::check_gltf_document(json, ".");
     } catch (const softbody::InputError& e) {
       return std::string(e.what());
     }
@@ -211,7 +231,7 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
   EXPECT_NE(refusal("[1, 2]").find("is not an object"), std::string::npos);
   EXPECT_NE(refusal("{\"asset\": ").find("does not parse"), std::string::npos);
   // glTF 1.0 keeps its keyed objects: not this check's business (assimp's glTF 1 reader takes it).
-  EXPECT_NO_THROW(mesh::check_gltf_document(R"({"asset":{"version":"1.0"},"accessors":{"a":{}}})"));
+  EXPECT_NO_THROW(mesh::check_gltf_document(R"({"asset":{"version":"1.0"},"accessors":{"a":{}}})", "."));
 }
 
 // An ASCII FBX of nothing but properties and connections (what the check reads).
@@ -398,6 +418,220 @@ TEST(SuspiciousMesh, SplitMakesEachSeparatePartItsOwnBody) {
   const sim::World joined = testing_support::world_from_text(
       R"({ "bodies": [ { "mesh": "data/hostile/two_separate_cubes.obj", "mass": 2, "pressure": 40 } ] })");
   EXPECT_EQ(joined.model.bodies.size(), 1u);
+}
+
+// ---- Files that crashed or hung assimp, or that it read as something else (large ones are written here) ----
+
+namespace fs = std::filesystem;
+using testing_support::scratch_dir;
+
+fs::path write_text(const fs::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+  return file;
+}
+
+// The time a refusal takes, printed for the record; each must come well within a second.
+std::string timed_load_error(const fs::path& file) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string error = load_error(file);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("[ measured ] %s refused in %.3f s\n", file.filename().c_str(), seconds);
+  EXPECT_LT(seconds, 5.0) << file;
+  return error;
+}
+
+// A binary FBX (version 7400: 4-byte record fields) of one record named "A" nested `levels` deep.
+std::string binary_fbx_nested(int levels) {
+  std::string bytes("Kaydara FBX Binary  \0\x1a\0", 23);
+  const auto u32 = [](std::uint32_t v) {
+    std::string out(4, '\0');
+    for (int k = 0; k < 4; ++k) out[static_cast<std::size_t>(k)] = static_cast<char>((v >> (8 * k)) & 0xff);
+    return out;
+  };
+  bytes += u32(7400);
+  // A record is 13 bytes of header, its 1-byte name, its nested record and (when it has one) a 13-byte null record.
+  std::vector<std::uint32_t> sizes(static_cast<std::size_t>(levels));
+  sizes.back() = 14;
+  for (std::size_t k = sizes.size() - 1; k-- > 0;) sizes[k] = sizes[k + 1] + 27;
+  const std::string null_record(13, '\0');
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    bytes += u32(static_cast<std::uint32_t>(bytes.size()) + sizes[k]) + u32(0) + u32(0) + '\x01' + 'A';
+  }
+  for (std::size_t k = 1; k < sizes.size(); ++k) bytes += null_record;
+  return bytes + null_record;
+}
+
+TEST(HostileMesh, DeepNestingIsRefusedBeforeAssimpRecursesIntoIt) {
+  const fs::path dir = scratch_dir("hostile_deep_nesting");
+  std::string ascii = "; FBX 7.4.0 project file\n";
+  for (int i = 0; i < 50000; ++i) ascii += "A: {\n";
+  for (int i = 0; i < 50000; ++i) ascii += "}\n";
+  EXPECT_NE(timed_load_error(write_text(dir / "blocks.fbx", ascii))
+                .find("is an FBX file whose { } blocks nest more than 256 levels deep"),
+            std::string::npos);
+  EXPECT_NE(timed_load_error(write_text(dir / "records.fbx", binary_fbx_nested(50000)))
+                .find("is an FBX file whose records nest more than 256 levels deep"),
+            std::string::npos);
+  EXPECT_EQ(fbx_refusal(binary_fbx_nested(256)), "");
+  EXPECT_NE(fbx_refusal(binary_fbx_nested(257)).find("records nest more than 256"), std::string::npos);
+  const std::string extras = std::string(200000, '[') + std::string(200000, ']');
+  EXPECT_NE(timed_load_error(write_text(dir / "extras.gltf", R"({"asset":{"version":"2.0"},"extras":)" + extras + "}"))
+                .find("is a glTF file whose JSON nests arrays and objects more than 256 levels deep (at byte "),
+            std::string::npos);
+  // A chain of 100,000 nodes (assimp recursed once per node); 256 levels are accepted, a cycle is refused.
+  const auto node_chain = [](int nodes, int last_child) {
+    std::string text = R"({"asset":{"version":"2.0"},"nodes":[)";
+    for (int i = 0; i + 1 < nodes; ++i) text += R"({"children":[)" + std::to_string(i + 1) + "]},";
+    return text + (last_child < 0 ? "{}" : R"({"children":[)" + std::to_string(last_child) + "]}") + "]}";
+  };
+  EXPECT_NE(timed_load_error(write_text(dir / "chain.gltf", node_chain(100000, -1)))
+                .find("is a glTF file whose nodes nest more than 256 levels deep"),
+            std::string::npos);
+  EXPECT_NO_THROW(mesh::check_gltf_document(node_chain(256, -1), "."));
+  EXPECT_THROW(mesh::check_gltf_document(node_chain(257, -1), "."), softbody::InputError);
+  EXPECT_THROW(mesh::check_gltf_document(node_chain(3, 0), "."), softbody::InputError);
+  // Brackets inside strings are text, not nesting.
+  EXPECT_EQ(load_error(write_text(dir / "strings.gltf", R"({"asset":{"version":"2.0","x":")" + extras + "\"}}"))
+                .find("levels deep"),
+            std::string::npos);
+}
+
+TEST(HostileMesh, FormatsOtherThanTheDocumentedOnesAreRefusedByName) {
+  const fs::path dir = scratch_dir("hostile_formats");
+  // XML readers (X3D, COLLADA, AMF, 3MF's model) recurse per element; none of them is read any more.
+  std::string x3d = "<X3D>";
+  for (int i = 0; i < 50000; ++i) x3d += "<Group>";
+  for (const char* name : {"deep.x3d", "deep.dae", "deep.amf", "scene.blend", "model.3ds", "model.X"}) {
+    const std::string error = timed_load_error(write_text(dir / name, x3d));
+    EXPECT_NE(error.find(" file, a format softbody does not read (expected OBJ, PLY, STL, glTF, OFF or FBX: a name "
+                         "ending in .obj, .ply, .stl, .gltf, .glb, .off or .fbx)"),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_NE(load_error(write_text(dir / "noextension", "v 0 0 0\n")).find("has no file name extension"),
+            std::string::npos);
+  // Upper-case extensions are the same formats.
+  EXPECT_EQ(load_error(write_text(dir / "UPPER.OBJ", "x")).find("does not read"), std::string::npos);
+}
+
+// A tetrahedron as glTF 2: 4 float positions and 12 unsigned short indices in one buffer of 72 bytes.
+std::string tetrahedron_bin() {
+  const float positions[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const std::uint16_t indices[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  std::string bytes(72, '\0');
+  std::memcpy(bytes.data(), positions, 48);
+  std::memcpy(bytes.data() + 48, indices, 24);
+  return bytes;
+}
+
+std::string tetrahedron_gltf(const std::string& uri) {
+  return R"({"asset":{"version":"2.0"},"buffers":[{"uri":")" + uri +
+         R"(","byteLength":72}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},)"
+         R"({"buffer":0,"byteOffset":48,"byteLength":24}],"accessors":[{"bufferView":0,"componentType":5126,)"
+         R"("count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,1]},{"bufferView":1,"componentType":5123,"count":12,)"
+         R"("type":"SCALAR"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
+         R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+}
+
+const char* kTetrahedronObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+
+// Only regular files in the folder of the file that names them are read: assimp blocked on a FIFO, and opened
+// ./cube.bin for a buffer named no/such/dir/cube.bin or http://127.0.0.1:1/cube.bin.
+TEST(HostileMesh, ReferencesMustBeRegularFilesInTheMeshFilesFolder) {
+  const fs::path dir = scratch_dir("hostile_references");
+  write_text(dir / "cube.bin", tetrahedron_bin());
+  fs::create_directories(dir / "sub" / "adir");
+  write_text(dir / "sub" / "cube.bin", tetrahedron_bin());
+  ASSERT_EQ(::mkfifo((dir / "fifo.bin").c_str(), 0600), 0);
+  ASSERT_EQ(::mkfifo((dir / "fifo.mtl").c_str(), 0600), 0);
+  EXPECT_EQ(load_error(write_text(dir / "good.gltf", tetrahedron_gltf("cube.bin"))), "");
+  EXPECT_EQ(load_error(write_text(dir / "below.gltf", tetrahedron_gltf("sub/cube.bin"))), "");
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"no/such/dir/cube.bin", "\" names " + (dir / "no/such/dir/cube.bin").string() + ", which does not exist"},
+      {"http://127.0.0.1:1/cube.bin", "\" is a URL or drive letter; softbody reads no file from elsewhere"},
+      {"../hostile_references/cube.bin", "\" leaves the mesh file's folder"},
+      {"/etc/passwd", "\" is an absolute path"},
+      {"fifo.bin", ", which is a FIFO (named pipe)"},
+      {"sub", ", which is a directory"},
+      {"", "\" names no file"}};
+  for (const auto& [uri, words] : refused) {
+    const std::string error = timed_load_error(write_text(dir / "refused.gltf", tetrahedron_gltf(uri)));
+    EXPECT_NE(error.find("is a glTF file whose buffers.0.uri \"" + uri + "\""), std::string::npos) << error;
+    EXPECT_NE(error.find(words + " (expected the name of a regular file in the mesh file's folder or below it)"),
+              std::string::npos)
+        << error;
+  }
+  write_text(dir / "materials.mtl", "newmtl a\n");
+  EXPECT_EQ(load_error(write_text(dir / "good.obj", std::string("mtllib materials.mtl\n") + kTetrahedronObj)), "");
+  const std::vector<std::pair<std::string, std::string>> libraries{{"fifo.mtl", "which is a FIFO (named pipe)"},
+                                                                   {"sub/adir", "which is a directory"},
+                                                                   {"missing.mtl", "which does not exist"},
+                                                                   {"http://host/a.mtl", "is a URL"}};
+  for (const auto& [library, words] : libraries) {
+    const std::string error =
+        timed_load_error(write_text(dir / "refused.obj", std::string(kTetrahedronObj) + "mtllib " + library + "\r\n"));
+    EXPECT_NE(error.find("is an OBJ file whose mtllib on line 9 \"" + library + "\""), std::string::npos) << error;
+    EXPECT_NE(error.find(words), std::string::npos) << error;
+  }
+}
+
+// A file name with a line break (or another control character) still gives a message of one line.
+TEST(HostileMesh, ControlCharactersInFileNamesAreEscaped) {
+  const fs::path dir = scratch_dir("hostile_names");
+  const std::string error = load_error(dir / "two\nlines\x01.obj");
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  EXPECT_NE(error.find("two\\nlines\\x01.obj does not exist"), std::string::npos) << error;
+}
+
+// An OBJ of `objects` one-triangle objects ("o"): assimp 5.2's time grows with the square of their number.
+std::string obj_of_objects(int objects) {
+  std::string text;
+  text.reserve(static_cast<std::size_t>(objects) * 60);
+  for (int i = 0; i < objects; ++i) {
+    const std::string n = std::to_string(3 * i + 1);
+    text += "o part" + std::to_string(i) + "\nv " + std::to_string(i) + " 0 0\nv " + std::to_string(i) + " 1 0\nv " +
+            std::to_string(i) + " 0 1\nf " + n + " " + std::to_string(3 * i + 2) + " " + std::to_string(3 * i + 3) +
+            "\n";
+  }
+  return text;
+}
+
+// The wait for assimp ends when `while_reading` throws, whatever assimp is doing (it reads on a thread of its own).
+TEST(HostileMesh, ALongReadInsideAssimpEndsWhenTheWaitIsAbandoned) {
+  const fs::path file = write_text(scratch_dir("hostile_long_read") / "objects.obj", obj_of_objects(40000));
+  struct Abandoned {};
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<std::chrono::steady_clock::time_point> thrown;
+  const auto while_reading = [&] {
+    if (std::chrono::steady_clock::now() - start > std::chrono::milliseconds(300)) {
+      thrown = std::chrono::steady_clock::now();
+      throw Abandoned{};
+    }
+  };
+  EXPECT_THROW(mesh::import_mesh_file(file, {}, while_reading), Abandoned);
+  ASSERT_TRUE(thrown);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - *thrown).count();
+  EXPECT_LT(seconds, 0.5);
+}
+
+// The same through the program: SIGTERM during the read of an OBJ of 200,000 objects (minutes inside assimp)
+// ends `prepare` within a second, exit 143, nothing written.
+TEST(HostileMesh, SigtermEndsALongReadInsideAssimpWithinASecond) {
+  const fs::path dir = scratch_dir("hostile_long_read_sigterm");
+  const fs::path file = write_text(dir / "objects.obj", obj_of_objects(200000));
+  testing_support::BackgroundRun run({"prepare", file.string(), (dir / "out.obj").string()}, dir);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  run.signal(SIGTERM);
+  const std::optional<int> status = run.wait_for_exit(std::chrono::seconds(10));
+  ASSERT_TRUE(status) << run.errors();
+  std::printf("[ measured ] exit %.2f s after SIGTERM\n", run.seconds_to_exit());
+  EXPECT_EQ(*status, 143) << run.errors();
+  EXPECT_LT(run.seconds_to_exit(), 1.0);
+  EXPECT_NE(run.errors().find("interrupted: SIGTERM: stopped during setup, after reading part of " + file.string() +
+                              "; nothing was written"),
+            std::string::npos)
+      << run.errors();
+  EXPECT_FALSE(fs::exists(dir / "out.obj"));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <unordered_map>
 
 #include "core/errors.hpp"
@@ -23,6 +24,29 @@ double bounding_diagonal(const TriMesh& mesh) {
     hi = hi.cwiseMax(v);
   }
   return (hi - lo).norm();
+}
+
+// A mesh with triangles enough whose vertices lie at fewer than 4 distinct points (after the weld): all at one
+// point, or the rest so close together beside a far one that the weld's tolerance, relative to the bounding box,
+// joined them.
+std::string too_few_points_words(const TriMesh& mesh) {
+  const std::string head = "has " + std::to_string(mesh.triangles.size()) + " triangles but ";
+  char where[200];
+  if (mesh.vertices.size() <= 1) {
+    const Vec3 p = mesh.vertices.empty() ? Vec3::Zero() : mesh.vertices[0];
+    std::snprintf(where, sizeof where, "all its vertices at one point (%.6g, %.6g, %.6g)", p.x(), p.y(), p.z());
+    return head + where + ": every triangle is degenerate (zero area)";
+  }
+  Vec3 lo = mesh.vertices[0], hi = mesh.vertices[0];
+  for (const Vec3& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  std::snprintf(where, sizeof where, "%zu distinct points within a box from (%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g)",
+                mesh.vertices.size(), lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z());
+  return head + "its vertices at only " + where +
+         " (vertices closer than 1e-7 of the box's diagonal are one point): every triangle is degenerate (zero "
+         "area); is one vertex far from the others?";
 }
 
 void check_degenerate_faces(const TriMesh& mesh) {
@@ -85,10 +109,11 @@ EdgeCounts count_edges(const TriMesh& mesh) {
 }
 
 void validate_closed(TriMesh& mesh, std::vector<std::string>& notes) {
-  if (mesh.triangles.size() < 4 || mesh.vertices.size() < 4) {
+  if (mesh.triangles.size() < 4) {
     fail(MeshDefect::TooSmall,
          "has " + std::to_string(mesh.triangles.size()) + " triangles; a closed surface needs at least 4");
   }
+  if (mesh.vertices.size() < 4) fail(MeshDefect::TooSmall, too_few_points_words(mesh));
   check_degenerate_faces(mesh);
   const EdgeCounts counts = count_edges(mesh);
   if (counts.boundary > 0) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "mesh/mesh_limits.hpp"
 
 namespace mesh {
 namespace {
@@ -43,6 +44,14 @@ void check_model_property(std::string_view name, std::string_view type) {
   if (type != "KTime") return;
   throw InputError("is an FBX file with a Model whose property \"" + std::string(name.substr(0, 40)) +
                    "\" is a time (KTime), which assimp's reader cannot convert (it aborts)");
+}
+
+// assimp's FBX parser (ASCII and binary) reads a nested block or record by recursing: 50,000 levels overflowed
+// its stack (SIGSEGV).
+void check_nesting(std::size_t levels, const char* what) {
+  if (levels <= static_cast<std::size_t>(kMostNestingLevels)) return;
+  throw InputError(std::string("is an FBX file whose ") + what + " nest more than " +
+                   std::to_string(kMostNestingLevels) + " levels deep, more than assimp's reader can follow");
 }
 
 // ---- ASCII FBX: tokens as assimp's tokenizer sees them (';' starts a comment, commas separate) ----
@@ -119,6 +128,7 @@ std::vector<Connection> read_ascii(std::string_view text) {
     if (token.quoted) continue;
     if (token.text == "{") {
       blocks.push_back(key);
+      check_nesting(blocks.size(), "{ } blocks");
     } else if (token.text == "}") {
       if (!blocks.empty()) blocks.pop_back();
     } else if (token.text.size() > 1 && token.text.back() == ':') {
@@ -250,6 +260,7 @@ std::vector<Connection> read_binary(std::string_view bytes) {
       if (end - nested_at < header) refuse(at, "has no room for the null record after its nested records");
       open.push_back({nested_at, static_cast<std::size_t>(end) - header});
       blocks.push_back(name);
+      check_nesting(blocks.size() + 1, "records");  // its nested records are one level deeper
     }
     return static_cast<std::size_t>(end);
   };

@@ -3,9 +3,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 #include "core/errors.hpp"
+#include "mesh/file_references.hpp"
+#include "mesh/mesh_limits.hpp"
 
 namespace mesh {
 namespace {
@@ -76,9 +81,111 @@ void check_primitive(const json& primitive, const std::string& where, std::size_
   }
 }
 
+// assimp's JSON reader (rapidjson) recurses once per array or object: 200,000 nested arrays in an "extras"
+// overflowed its stack (SIGSEGV). One pass over the brackets outside strings, before anything parses the text.
+void check_json_nesting(std::string_view json_text) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < json_text.size(); ++i) {
+    const char c = json_text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;  // the escaped character cannot end the string
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMostNestingLevels) {
+        throw InputError("is a glTF file whose JSON nests arrays and objects more than " +
+                         std::to_string(kMostNestingLevels) + " levels deep (at byte " + std::to_string(i) +
+                         "), more than assimp's reader can follow");
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+// Every buffer's uri (glTF 2: an array; glTF 1: an object of buffers) is embedded data ("data:") or a file in
+// the document's folder; a buffer without a uri is a GLB file's binary chunk.
+void check_buffer_files(const json& document, const std::filesystem::path& folder) {
+  const auto buffers = document.find("buffers");
+  if (buffers == document.end() || !buffers->is_structured()) return;
+  for (const auto& [key, buffer] : buffers->items()) {
+    if (!buffer.is_object() || !buffer.contains("uri")) continue;
+    const json& uri = buffer["uri"];
+    const std::string where = "is a glTF file whose buffers." + key + ".uri";
+    if (!uri.is_string()) throw InputError(where + " is not a string");
+    const std::string& name = uri.get_ref<const std::string&>();
+    if (name.rfind("data:", 0) == 0) continue;
+    check_referenced_file(name, folder, where);
+  }
+}
+
+// assimp's glTF readers, and its step that applies node transforms, recurse once per level of the node hierarchy:
+// a chain of 100,000 nodes overflowed the stack (SIGSEGV). Nodes are an array (glTF 2) or an object of ids
+// (glTF 1); children name nodes by index or id. Iterative: a crafted chain cannot overflow this stack either.
+void check_node_hierarchy(const json& document) {
+  const auto nodes = document.find("nodes");
+  if (nodes == document.end() || !nodes->is_structured()) return;
+  std::unordered_map<std::string, std::vector<std::string>> children;
+  for (const auto& [key, node] : nodes->items()) {
+    std::vector<std::string>& names = children[key];
+    if (!node.is_object() || !node.contains("children") || !node["children"].is_array()) continue;
+    for (const json& child : node["children"]) {
+      if (child.is_number_unsigned()) names.push_back(std::to_string(child.get<unsigned long long>()));
+      if (child.is_string()) names.push_back(child.get<std::string>());
+    }
+  }
+  std::unordered_map<std::string, int> levels;  // a finished node: the levels of its subtree, itself included
+  const auto refuse = [](const std::string& what) {
+    throw InputError("is a glTF file whose nodes " + what + ", more than assimp's reader can follow");
+  };
+  struct Frame {
+    const std::string* node;
+    std::size_t next_child = 0;
+    int below = 0;  // the deepest subtree of its children so far
+  };
+  std::unordered_map<std::string, bool> on_path;
+  for (const auto& [root, unused] : children) {
+    if (levels.count(root)) continue;
+    std::vector<Frame> path{{&root}};
+    on_path[root] = true;
+    while (!path.empty()) {
+      Frame& frame = path.back();
+      const std::vector<std::string>& mine = children.at(*frame.node);
+      if (frame.next_child < mine.size()) {
+        const std::string& child = mine[frame.next_child++];
+        if (!children.count(child)) continue;  // names no node: assimp reports it
+        if (on_path[child]) refuse("form a cycle (node " + child.substr(0, 40) + " is its own descendant)");
+        if (const auto done = levels.find(child); done != levels.end()) {
+          frame.below = std::max(frame.below, done->second);
+        } else {
+          if (path.size() >= static_cast<std::size_t>(kMostNestingLevels)) {
+            refuse("nest more than " + std::to_string(kMostNestingLevels) + " levels deep");
+          }
+          on_path[child] = true;
+          path.push_back({&child});
+        }
+        continue;
+      }
+      const int mine_levels = frame.below + 1;
+      if (path.size() + static_cast<std::size_t>(mine_levels) - 1 > static_cast<std::size_t>(kMostNestingLevels)) {
+        refuse("nest more than " + std::to_string(kMostNestingLevels) + " levels deep");
+      }
+      levels[*frame.node] = mine_levels;
+      on_path[*frame.node] = false;
+      path.pop_back();
+      if (!path.empty()) path.back().below = std::max(path.back().below, mine_levels);
+    }
+  }
+}
+
 }  // namespace
 
-void check_gltf_document(std::string_view json_text) {
+void check_gltf_document(std::string_view json_text, const std::filesystem::path& folder) {
+  check_json_nesting(json_text);
   json document;
   try {
     document = json::parse(json_text.begin(), json_text.end());
@@ -89,6 +196,8 @@ void check_gltf_document(std::string_view json_text) {
     throw InputError("is a glTF file whose JSON does not parse (" + std::string(e.what()) + ")");
   }
   if (!document.is_object()) throw InputError("is a glTF file whose JSON is not an object");
+  check_buffer_files(document, folder);
+  check_node_hierarchy(document);
   // glTF 1.0 (keyed objects instead of arrays) is left to assimp's glTF 1 reader as before.
   if (const auto asset = document.find("asset"); asset != document.end() && asset->is_object() &&
                                                  asset->contains("version") && (*asset)["version"].is_string() &&

@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <functional>
+#include <future>
+#include <memory>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include <assimp/postprocess.h>
@@ -18,7 +23,10 @@
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
 #include "mesh/fbx_check.hpp"
+#include "mesh/file_references.hpp"
 #include "mesh/gltf_check.hpp"
+#include "mesh/mesh_formats.hpp"
+#include "mesh/off_faces.hpp"
 #include "mesh/ply_header.hpp"
 #include "mesh/ply_strips.hpp"
 
@@ -66,18 +74,31 @@ void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
 // the file has given a single vertex (v) names none that exists. Refused before assimp sees it: its OBJ reader
 // (libassimp5 5.2.5) reads past the end of its line buffer when such a face is the file's only line (found by
 // fuzz_mesh_obj: tests/data/hostile/obj_face_only_line.obj).
-void check_obj_vertices_come_first(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const char keyword = line[0];  // assimp goes by the first character: a line that starts with a blank is none
-    if (keyword == 'v' && line.size() > 1 && (line[1] == ' ' || line[1] == '\t')) return;
-    if (keyword == 'f' || keyword == 'p' || keyword == 'l') {
+// Every material library (mtllib) must be a regular file in the OBJ's folder: assimp opens it (a FIFO blocked it
+// for ever), and one that does not open makes it open NAME.mtl beside the OBJ instead. Its name is the rest of the
+// line after the blanks (and line ends: assimp skips those too) that follow the keyword.
+void check_obj_file(std::string_view text, const std::filesystem::path& folder) {
+  bool vertex_seen = false;
+  std::size_t line_number = 1;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view line = text.substr(at, end - at);
+    const char keyword = line.empty() ? '\0' : line[0];  // assimp goes by the first character: a blank is none
+    if (keyword == 'v' && line.size() > 1 && (line[1] == ' ' || line[1] == '\t')) vertex_seen = true;
+    if (!vertex_seen && (keyword == 'f' || keyword == 'p' || keyword == 'l')) {
       throw InputError(
           "is an OBJ file with a face, point or line element before its first vertex (expected 'v x y z' "
           "lines before the elements that name them)");
     }
+    if (line.rfind("mtllib", 0) == 0 && line.size() > 6 && std::isspace(static_cast<unsigned char>(line[6]))) {
+      std::size_t name = at + 6;
+      while (name < text.size() && std::isspace(static_cast<unsigned char>(text[name]))) ++name;
+      const std::size_t name_end = std::min(text.find_first_of(std::string_view("\r\n\f\0", 4), name), text.size());
+      check_referenced_file(text.substr(name, name_end - name), folder,
+                            "is an OBJ file whose mtllib on line " + std::to_string(line_number));
+    }
+    at = end + 1;
+    ++line_number;
   }
 }
 
@@ -87,6 +108,7 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
     throw InputError(words + " (expected a regular mesh file)");
   }
+  check_format_is_accepted(file);
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (ec) throw InputError("cannot be read (" + ec.message() + ")");
@@ -97,8 +119,8 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
   constexpr std::uintmax_t kHeadBytes = 64 << 10;  // enough for any PLY or OFF header this loader accepts
   const std::string head = head_of(file, std::min(bytes, kHeadBytes));
   // By content or by name: assimp picks its reader by either (and loops on a .ply that has no PLY header).
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lower_case_extension(file);
+  const std::filesystem::path folder = file.parent_path();
   std::string bytes_for_assimp;
   if (looks_like_ply(head) || extension == ".ply") {
     std::string whole = head_of(file, bytes);
@@ -113,17 +135,21 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
       bytes_for_assimp = std::move(whole);
     }
   }
-  if (looks_like_off(head) || extension == ".off") check_off_header(head, bytes, limits);
+  if (looks_like_off(head) || extension == ".off") {
+    check_off_header(head, bytes, limits);
+    check_off_face_indices(head_of(file, bytes));
+  }
   if (head.rfind("glTF", 0) == 0 || extension == ".glb") {
     check_glb_header(head, bytes);
     constexpr std::uint32_t kJsonChunk = 0x4E4F534A;  // "JSON" read as a little-endian uint32 (glTF 2.0 §4.4.3)
     if (read_u32_le(head, 16) != kJsonChunk) {
       throw InputError("is a binary glTF 2 (GLB) file whose first chunk is not its JSON chunk");
     }
-    check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20));  // the JSON chunk
+    // the JSON chunk
+    check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20), folder);
   }
-  if (extension == ".gltf") check_gltf_document(head_of(file, bytes));
-  if (extension == ".obj") check_obj_vertices_come_first(file);
+  if (extension == ".gltf") check_gltf_document(head_of(file, bytes), folder);
+  if (extension == ".obj") check_obj_file(head_of(file, bytes), folder);
   if (extension == ".fbx" || looks_like_binary_fbx(head) || head.find("FBXHeaderExtension") != std::string::npos) {
     check_fbx_file(head_of(file, bytes));
   }
@@ -153,21 +179,64 @@ CornerUvs corner_uvs_of(const aiMesh& part, const aiFace& face) {
   return uvs;
 }
 
-}  // namespace
-
-TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& limits) {
-  const std::string bytes_for_assimp = check_before_reading(file, limits);
+// assimp's importer and what it read, shared with the thread that reads (which may outlive the wait for it).
+struct AssimpReadState {
   Assimp::Importer importer;
+  std::string bytes;  // read instead of the file where not empty
+  std::promise<const aiScene*> scene;
+};
+
+struct AssimpRead {
+  std::shared_ptr<AssimpReadState> state;
+  const aiScene* scene = nullptr;  // owned by state->importer; null where assimp could not read the file
+};
+
+// assimp reads on a thread of its own while this one waits, calling `while_reading` every 50 ms: a read that takes
+// long (an OBJ of 200,000 objects takes minutes: assimp's time grows with the square of the objects) cannot look at
+// a stop request itself, so `while_reading` does, and when it throws the reading thread is left to finish or die
+// with the process, which exits without waiting for it.
+AssimpRead read_with_assimp(const std::filesystem::path& file, std::string bytes_for_assimp,
+                            const std::function<void()>& while_reading) {
+  auto state = std::make_shared<AssimpReadState>();
+  keep_only_accepted_readers(state->importer);
   // Points and lines carry no surface: drop them. Normals and materials are not needed; the first UV channel is
   // kept per corner (assimp splits a vertex on a UV seam into one per side, and the weld joins them again).
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
-  // (triangulation reads the vertices a polygon's indices name).
-  const unsigned flags =
-      aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType;
-  const aiScene* scene = bytes_for_assimp.empty() ? importer.ReadFile(file.string(), flags)
-                                                  : importer.ReadFileFromMemory(bytes_for_assimp.data(),
-                                                                                bytes_for_assimp.size(), flags, "ply");
+  state->importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  state->bytes = std::move(bytes_for_assimp);
+  std::future<const aiScene*> done = state->scene.get_future();
+  std::thread reader([state, path = file.string()] {
+    // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
+    // (triangulation reads the vertices a polygon's indices name).
+    const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                           aiProcess_SortByPType;
+    try {
+      state->scene.set_value(state->bytes.empty() ? state->importer.ReadFile(path, flags)
+                                                  : state->importer.ReadFileFromMemory(
+                                                        state->bytes.data(), state->bytes.size(), flags, "ply"));
+    } catch (...) {
+      state->scene.set_exception(std::current_exception());
+    }
+  });
+  while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
+    if (!while_reading) continue;
+    try {
+      while_reading();
+    } catch (...) {
+      reader.detach();
+      throw;
+    }
+  }
+  reader.join();
+  return {state, done.get()};
+}
+
+}  // namespace
+
+TriMesh import_mesh_file(const std::filesystem::path& file, const MeshLimits& limits,
+                         const std::function<void()>& while_reading) {
+  const AssimpRead read = read_with_assimp(file, check_before_reading(file, limits), while_reading);
+  const aiScene* scene = read.scene;
+  const Assimp::Importer& importer = read.state->importer;
   if (scene == nullptr) throw InputError("cannot be read as a mesh: " + std::string(importer.GetErrorString()));
   TriMesh mesh;
   long long vertices = 0, triangles = 0;

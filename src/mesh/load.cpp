@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "core/one_line.hpp"
 #include "mesh/check.hpp"
 #include "mesh/generators.hpp"
 #include "mesh/import.hpp"
@@ -77,7 +78,7 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
   if (action.empty()) return "";
   if (!repair.enabled) {
     return "; add \"repair\": true to the body to " + action + " (or write a repaired copy: softbody prepare " +
-           file.string() + " OUT.obj)";
+           softbody::one_line(file.string()) + " OUT.obj)";
   }
   if (defect == MeshDefect::Open && !repair.holes) return "; repair.holes is false: set it to true to " + action;
   if (defect == MeshDefect::Degenerate && !repair.degenerate)
@@ -90,13 +91,15 @@ std::string repair_hint(MeshDefect defect, const RepairOptions& repair, const st
 
 LoadedMesh load_closed_mesh(const std::string& spec, const std::filesystem::path& file, const std::string& context,
                             const MeshLimits& limits, const Repair& repair, const softbody::AfterPhase& after_phase) {
-  const std::string what = file.empty() ? spec : file.string();
+  const std::string what = softbody::one_line(file.empty() ? spec : file.string());
   const auto phase_done = [&](const std::string& phase) {
     if (after_phase) after_phase(phase + " " + what);
   };
+  // A stop request while assimp reads ends the wait for it (assimp cannot be asked to stop).
+  const auto while_reading = [&] { phase_done("reading part of"); };
   try {
     LoadedMesh loaded;
-    loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits));
+    loaded.mesh = file.empty() ? generate(spec) : weld(import_mesh_file(file, limits, while_reading));
     phase_done(file.empty() ? "generating" : "reading");
     if (!file.empty() && repair.options.enabled) {
       if (!repair.step) throw std::logic_error("load_closed_mesh: repair asked for without a repair step");

@@ -16,3 +16,12 @@ struct MeshLimits {
 inline constexpr double kMaxMeshCoordinate = 1e12;
 
 }  // namespace mesh
+
+namespace mesh {
+
+// The deepest nesting of blocks (ASCII FBX), records (binary FBX) or arrays and objects (glTF's JSON) a mesh file
+// may hold: assimp's readers recurse once per level, and 50,000 levels overflowed their stack (SIGSEGV). Real
+// files nest a dozen levels.
+inline constexpr int kMostNestingLevels = 256;
+
+}  // namespace mesh
