@@ -84,15 +84,15 @@ void Dynamics::visit_net_forces(const State& state, std::vector<Vec3>& partial, 
     const Body& body = model_.bodies[b];
     const auto first = static_cast<std::size_t>(body.first_vertex);
     const auto count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> f(partial.data() + first, count);
+    const std::span<Vec3> f = Model::of(body, partial);
     if (scratch_.threads > 1 && count >= kParallelMinVertices) {
       visit_body_forces_in_parallel(b, state, f, body_contact, use);
       continue;
     }
-    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     gravity_and_spring_forces(body, x, v, f);
     floor_contact_forces(body, x, v, f);
-    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
+    if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     const std::span<const Vec3> area_sums = per_area_sum == 0.0 ? std::span<const Vec3>() : scratch_.area_sums[b];
     hand_out_net_forces(first, 0, count, f, area_sums, per_area_sum, use);
@@ -105,14 +105,14 @@ void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, 
   const Body& body = model_.bodies[b];
   const auto first = static_cast<std::size_t>(body.first_vertex);
   const std::size_t n = f.size();
-  const std::span<const Vec3> x(state.x.data() + first, n), v(state.v.data() + first, n);
+  const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
   // 1. Gravity, springs and dampers into f on one thread; the gas's face pass into its area sums on the other.
   double per_area_sum = 0.0;
   scratch_.runner->run(2, [&](int part) {
     if (part == 0) {
       gravity_and_spring_forces(body, x, v, f);
       floor_contact_forces(body, x, v, f);
-      if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, n), f);
+      if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     } else {
       per_area_sum = gas_face_pass(b, x);
     }
@@ -139,17 +139,15 @@ void Dynamics::gravity_and_gas_forces(const State& state, std::vector<Vec3>& for
   const bool body_contact = body_contact_forces(state);
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const Body& body = model_.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex);
-    const auto count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> f(force.data() + first, count);
-    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    const std::span<Vec3> f = Model::of(body, force);
+    const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);
     floor_contact_forces(body, x, v, f);  // a smooth contact is a force like gravity here (none otherwise)
-    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
+    if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     if (per_area_sum == 0.0) continue;
     const std::vector<Vec3>& area_sums = scratch_.area_sums[b];
-    for (std::size_t i = 0; i < count; ++i) f[i] += per_area_sum * area_sums[i];
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] += per_area_sum * area_sums[i];
   }
 }
 

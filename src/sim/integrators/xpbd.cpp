@@ -87,9 +87,8 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     if (!carried(b, h)) continue;
     const Body& body = model.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<const Vec3> x(state.x.data() + first, count);
-    const std::span<Vec3> f(force_.data() + first, count);
+    const std::span<const Vec3> x = Model::of(body, state.x);
+    const std::span<Vec3> f = Model::of(body, force_);
     const std::span<const double> body_tension(tension.data() + first_tension_[b],
                                                body.topology.edges.size() + body.topology.bending_links.size());
     if (body.params.stiffness_N_per_m != 0.0) {
@@ -107,10 +106,9 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
     const Body& body = model.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> x(state.x.data() + first, count);
-    const std::span<const Vec3> previous(previous_x_.data() + first, count);
-    const std::span<const double> w(model.inverse_mass.data() + first, count);
+    const std::span<Vec3> x = Model::of(body, state.x);
+    const std::span<const Vec3> previous = Model::of(body, previous_x_);
+    const std::span<const double> w = Model::of(body, model.inverse_mass);
     const std::size_t edges = body.topology.edges.size();
     const std::span<double> body_tension(tension.data() + first_tension_[b],
                                          edges + body.topology.bending_links.size());

@@ -45,9 +45,12 @@ struct Model {
   }
 
   std::size_t vertex_count() const { return mass_kg.size(); }
-  // A body's slice of a per-vertex array of the state.
-  std::span<const Vec3> of(const Body& body, std::span<const Vec3> all) const {
-    return all.subspan(static_cast<std::size_t>(body.first_vertex), static_cast<std::size_t>(body.vertex_count));
+  // A body's slice of a per-vertex array (positions, velocities, forces, masses: a vector or a span, const or
+  // not): the one way sim/ spells "this body's vertices".
+  template <class PerVertex>
+  static auto of(const Body& body, PerVertex&& all) {
+    return std::span(all).subspan(static_cast<std::size_t>(body.first_vertex),
+                                  static_cast<std::size_t>(body.vertex_count));
   }
 };
 

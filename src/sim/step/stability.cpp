@@ -373,7 +373,7 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
   double fastest = -1.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Body& body = bodies[b];
-    const ModeBounds bounds = mode_bounds(body, x.subspan(body.first_vertex, body.vertex_count));
+    const ModeBounds bounds = mode_bounds(body, Model::of(body, x));
     estimate.bodies.push_back(bounds);
     if (bounds.omega_max() > fastest) fastest = bounds.omega_max(), estimate.limiting_body = static_cast<int>(b);
     for (const IntegratorInfo& integrator : kIntegrators) {
