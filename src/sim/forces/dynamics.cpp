@@ -34,13 +34,7 @@ void Dynamics::gravity_and_spring_forces(const Body& body, std::span<const Vec3>
                                          std::span<Vec3> f) const {
   const softbody::ProfileScope profile(softbody::ProfilePhase::forces);
   start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);  // starts the sum: no zeroing pass
-  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
-  if (k != 0.0 || c != 0.0) add_spring_dampers(body.topology.edges, body.rest.edge_length_m, k, c, x, v, f);
-  const double k_b = body.params.bending_N_per_m;
-  if (k_b != 0.0) {  // the bending links are springs and dampers too (sim/forces/bending.hpp); none: no pass
-    add_spring_dampers(body.topology.bending_links, body.rest.bending_length_m, k_b,
-                       body.params.bending_damping_N_s_per_m, x, v, f);
-  }
+  add_spring_dampers(body.constraints, x, v, f);                   // the edges and the bending links
 }
 
 double Dynamics::gas_face_pass(std::size_t b, std::span<const Vec3> x) {

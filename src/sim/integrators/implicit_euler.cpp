@@ -23,25 +23,14 @@ void ImplicitEuler::build_pattern(const Model& model, std::size_t vertex_count) 
   };
   edges_.clear();
   for (const Body& body : model.bodies) {
-    for (std::size_t e = 0; e < body.topology.edges.size(); ++e) {
+    const DistanceConstraints& constraints = body.constraints;  // the edges, then the bending links
+    for (std::size_t e = 0; e < constraints.size(); ++e) {
       EdgeBlocks blocks;
-      blocks.i = body.first_vertex + body.topology.edges[e][0];
-      blocks.j = body.first_vertex + body.topology.edges[e][1];
-      blocks.rest_length_m = body.rest.edge_length_m[e];
-      blocks.stiffness_N_per_m = body.params.stiffness_N_per_m;
-      blocks.damping_N_s_per_m = body.params.damping_N_s_per_m;
-      add_pattern_block(blocks.i, blocks.j);
-      add_pattern_block(blocks.j, blocks.i);
-      edges_.push_back(blocks);
-    }
-    if (body.params.bending_N_per_m == 0.0) continue;
-    for (std::size_t l = 0; l < body.topology.bending_links.size(); ++l) {  // springs like the edges, own k_b, c_b
-      EdgeBlocks blocks;
-      blocks.i = body.first_vertex + body.topology.bending_links[l][0];
-      blocks.j = body.first_vertex + body.topology.bending_links[l][1];
-      blocks.rest_length_m = body.rest.bending_length_m[l];
-      blocks.stiffness_N_per_m = body.params.bending_N_per_m;
-      blocks.damping_N_s_per_m = body.params.bending_damping_N_s_per_m;
+      blocks.i = body.first_vertex + constraints.ends[e][0];
+      blocks.j = body.first_vertex + constraints.ends[e][1];
+      blocks.rest_length_m = constraints.rest_length_m[e];
+      blocks.stiffness_N_per_m = constraints.stiffness_N_per_m[e];
+      blocks.damping_N_s_per_m = constraints.damping_N_s_per_m[e];
       add_pattern_block(blocks.i, blocks.j);
       add_pattern_block(blocks.j, blocks.i);
       edges_.push_back(blocks);

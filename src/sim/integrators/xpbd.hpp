@@ -64,11 +64,11 @@ class Xpbd final : public Integrator {
   // Whether body b's substeps of h take the carried form (h ≤ xpbd_carried_dt).
   bool carried(std::size_t b, double h) const { return h <= carried_dt_[b]; }
 
-  std::vector<EdgeColouring> colourings_;       // per body of the model, computed on the first step
-  std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
-  std::vector<double> carried_dt_;              // per body: xpbd_carried_dt at the initial state, contacts included [s]
-  std::vector<std::size_t> first_tension_;  // per body: its edges' first entry in carry.edge_tension_N (links follow)
-  std::size_t tension_count_ = 0;           // every body's edges and links
+  std::vector<EdgeColouring>
+      colourings_;                  // per body of the model: its constraints' (edges, then links), on the first step
+  std::vector<double> carried_dt_;  // per body: xpbd_carried_dt at the initial state, contacts included [s]
+  std::vector<std::size_t> first_tension_;  // per body: its constraints' first entry in carry.edge_tension_N
+  std::size_t tension_count_ = 0;           // every body's constraints
   std::vector<Vec3> previous_x_;            // scratch: x at the start of the substep
   std::vector<Vec3> force_;                 // scratch: gravity + gas (+ carried tensions) on every vertex [N]
 };

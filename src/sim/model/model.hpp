@@ -55,7 +55,7 @@ struct Model {
 };
 
 // Appends `body` (its params set) to the model, its vertices starting at `x0` (world coordinates) with the
-// common velocity `v0` in `state`; sets body.first_vertex.
+// common velocity `v0` in `state`; sets body.first_vertex and builds body.constraints.
 void add_body(Model& model, State& state, Body body, const std::vector<Vec3>& x0, const Vec3& v0);
 
 // A model with these settings and no bodies yet, and its state at t = 0.
