@@ -10,42 +10,47 @@
 namespace sim {
 namespace {
 
-// The set's colours: the edges' colouring, then the bending links' (indices into the whole set), so that a pass
-// solves every edge before any link.
-EdgeColouring colour_constraints(const DistanceConstraints& constraints, int vertex_count) {
+// The set in the pass's order: the edges' colours, then the bending links' (each part coloured on its own), so
+// that a pass solves every edge before any link.
+std::vector<PassConstraint> pass_order(const DistanceConstraints& constraints, int vertex_count) {
   const std::span<const std::array<int, 2>> ends(constraints.ends);
-  EdgeColouring colouring = colour_edges(ends.first(constraints.edge_count), vertex_count);
-  const EdgeColouring links = colour_edges(ends.subspan(constraints.edge_count), vertex_count);
-  const int offset = static_cast<int>(constraints.edge_count), start = static_cast<int>(colouring.edges.size());
-  for (const int link : links.edges) colouring.edges.push_back(offset + link);
-  for (std::size_t c = 1; c < links.colour_start.size(); ++c)
-    colouring.colour_start.push_back(start + links.colour_start[c]);
-  return colouring;
+  std::vector<PassConstraint> pass;
+  pass.reserve(constraints.size());
+  const auto append = [&](const EdgeColouring& colouring, std::size_t offset) {
+    for (const int e : colouring.edges) {
+      const std::size_t index = offset + static_cast<std::size_t>(e);
+      const double k = constraints.stiffness_N_per_m[index];
+      pass.push_back({ends[index][0], ends[index][1], index, constraints.rest_length_m[index], k,
+                      constraints.damping_N_s_per_m[index], k == 0.0 ? 0.0 : 1.0 / k});
+    }
+  };
+  append(colour_edges(ends.first(constraints.edge_count), vertex_count), 0);
+  append(colour_edges(ends.subspan(constraints.edge_count), vertex_count), constraints.edge_count);
+  return pass;
 }
 
 // One pass over a body's distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ), each
 // with its k and c. x: the body's positions, previous: the same at the start of the substep, w: inverse masses
 // [1/kg], tension: the constraints' carried forces T [N], updated to this pass's. Carried (the prediction applied
 // T), the pass solves for the change: C − T/k; classical, for all of it.
-void solve_distances(const DistanceConstraints& constraints, const EdgeColouring& colouring, double h, bool carried,
-                     std::span<Vec3> x, std::span<const Vec3> previous, std::span<const double> w,
-                     std::span<double> tension) {
+void solve_distances(std::span<const PassConstraint> pass, double h, bool carried, std::span<Vec3> x,
+                     std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
   const double inverse_h2 = 1.0 / (h * h);
-  for (const int e : colouring.edges) {
-    const auto edge = static_cast<std::size_t>(e);
-    const double k = constraints.stiffness_N_per_m[edge], c = constraints.damping_N_s_per_m[edge];
+  for (const PassConstraint& constraint : pass) {
+    const std::size_t edge = constraint.index;
+    const double k = constraint.stiffness_N_per_m, c = constraint.damping_N_s_per_m;
     if (k == 0.0 && c == 0.0) continue;
     const bool carries = carried && k != 0.0;  // a damper alone carries nothing (its force would count twice: xpbd.hpp)
     const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
-    const double inverse_k = k == 0.0 ? 0.0 : 1.0 / k;
-    const auto [i, j] = constraints.ends[edge];
+    const double inverse_k = constraint.inverse_stiffness;
+    const int i = constraint.i, j = constraint.j;
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     if (length == 0.0) continue;                                   // coincident ends: no direction, no correction
     const Vec3 n = d / length;                                     // ∇_i C
     const double carried_tension = carries ? tension[edge] : 0.0;  // T [N]
-    const double stretch = length - constraints.rest_length_m[edge] - carried_tension * inverse_k;  // C − T/k [m]
-    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));  // ∇C·(x − x_prev) [m]
+    const double stretch = length - constraint.rest_length_m - carried_tension * inverse_k;  // C − T/k [m]
+    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));              // ∇C·(x − x_prev) [m]
     const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
     x[i] += (w[i] * lambda) * n;
     x[j] -= (w[j] * lambda) * n;
@@ -72,12 +77,12 @@ void add_carried_forces(const DistanceConstraints& constraints, std::span<const 
 }  // namespace
 
 void Xpbd::prepare_once(const Model& model) {
-  if (colourings_.size() == model.bodies.size()) return;
-  colourings_.clear();
+  if (passes_.size() == model.bodies.size()) return;
+  passes_.clear();
   first_tension_.clear();
   tension_count_ = 0;
   for (const Body& body : model.bodies) {
-    colourings_.push_back(colour_constraints(body.constraints, body.vertex_count));
+    passes_.push_back(pass_order(body.constraints, body.vertex_count));
     first_tension_.push_back(tension_count_);
     tension_count_ += body.constraints.size();
   }
@@ -117,7 +122,7 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
     const std::span<Vec3> x = Model::of(body, state.x);
     const std::span<const Vec3> previous = Model::of(body, previous_x_);
     const std::span<const double> w = Model::of(body, model.inverse_mass);
-    solve_distances(body.constraints, colourings_[b], h, carried(b, h), x, previous, w,
+    solve_distances(passes_[b], h, carried(b, h), x, previous, w,
                     std::span(tension).subspan(first_tension_[b], body.constraints.size()));
   }
   // 3. Velocities from the positions.
