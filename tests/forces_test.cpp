@@ -120,7 +120,9 @@ TEST(SpringDamper, FusedLoopEqualsSpringsPlusDampers) {
   std::vector<Vec3> reference(x.size(), Vec3::Zero()), fused(x.size(), Vec3::Zero());
   reference::add_springs(edges, rest, 3000.0, x, reference);
   reference::add_dampers(edges, 0.5, x, v, reference);
-  sim::add_spring_dampers(edges, rest, 3000.0, 0.5, x, v, fused);
+  sim::DistanceConstraints damped{edges, rest, std::vector<double>(edges.size(), 3000.0),
+                                  std::vector<double>(edges.size(), 0.5), edges.size()};
+  sim::add_spring_dampers(damped, x, v, fused);
   double worst = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     worst = std::max(worst, (fused[i] - reference[i]).norm());
@@ -130,7 +132,9 @@ TEST(SpringDamper, FusedLoopEqualsSpringsPlusDampers) {
   EXPECT_LT(worst, 1e-12 * scale) << "worst " << worst << " of " << scale;
   std::vector<Vec3> undamped(x.size(), Vec3::Zero()), springs(x.size(), Vec3::Zero());
   reference::add_springs(edges, rest, 3000.0, x, springs);
-  sim::add_spring_dampers(edges, rest, 3000.0, 0.0, x, v, undamped);  // c = 0: the spring-only loop
+  sim::DistanceConstraints undamped_springs = damped;
+  undamped_springs.damping_N_s_per_m.assign(edges.size(), 0.0);
+  sim::add_spring_dampers(undamped_springs, x, v, undamped);  // c = 0: the spring-only loop
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_LT((undamped[i] - springs[i]).norm(), 1e-12 * scale);
 }
 

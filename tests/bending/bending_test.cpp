@@ -64,9 +64,9 @@ TEST(BendingForce, IsMinusTheGradientOfTheEnergy) {
   const mesh::TriMesh sphere = mesh::icosphere(2);
   const double k_b = 250.0;
   sim::Body body = links_only_body(sphere.vertices, sphere.triangles, k_b);
-  const sim::Body reference = body;
   const std::vector<Vec3> x = perturbed(sphere.vertices, 0.02);  // edges ~0.3 m: a few % bent
   sim::World world = sim::one_body_world(Vec3::Zero(), std::nullopt, sim::Solver{}, std::move(body), x, Vec3::Zero());
+  const sim::Body& reference = world.model.bodies[0];  // its constraints built by the model
   const std::vector<Vec3> f = forces_of(world);
   // Central differences of E_b: O(h²) truncation (h = 1e-6 m) against round-off ε E / h.
   const double h = 1e-6;

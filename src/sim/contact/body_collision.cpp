@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "sim/contact/contact_response.hpp"
+#include "sim/model/model.hpp"
 
 namespace sim {
 namespace {
@@ -23,7 +24,9 @@ struct ClosestPoint {
 };
 
 // The unit normal of triangle t (counter-clockwise seen from outside).
-Vec3 face_normal(const Vec3* x, const Triangle& t) { return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized(); }
+Vec3 face_normal(std::span<const Vec3> x, const Triangle& t) {
+  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).normalized();
+}
 
 // Closest point of triangle (a, b, c) to p, by the Voronoi region p falls in (vertex, edge or face).
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -90,7 +93,7 @@ void BodyCollider::build_grid(const Body& surface, std::span<const Vec3> x_all, 
   grid_triangles_.clear();
   cell_start_.assign(static_cast<std::size_t>(grid_cells_.prod()) + 1, 0);
   // Pass 1: each triangle's box and cells, counted per cell (in cell_start_[c + 1]).
-  const Vec3* x = x_all.data() + surface.first_vertex;
+  const std::span<const Vec3> x = Model::of(surface, x_all);
   for (std::size_t f = 0; f < face_count; ++f) {
     const Triangle& t = surface.topology.faces[f];
     const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
@@ -190,7 +193,7 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
   const Box region{moving_box.lo.cwiseMax(surface_box.lo) - Vec3::Constant(search),
                    moving_box.hi.cwiseMin(surface_box.hi) + Vec3::Constant(search)};
   build_grid(surface, x, region, search, std::max(2 * search, kCellFraction * edge));
-  const Vec3* x_surface = x.data() + surface.first_vertex;
+  const std::span<const Vec3> x_surface = Model::of(surface, x);
   for (int i = 0; i < moving.vertex_count; ++i) {
     const int vertex = moving.first_vertex + i;
     const Vec3 p = x[vertex];
@@ -233,7 +236,7 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
                                                      const ContactMaterial& material, const PushLimit& push) {
   const double edge = surface.rest.mean_edge_m;
   const double search = kSearchFraction * edge, thickness = kThicknessFraction * edge;
-  const Vec3* x_surface = state.x.data() + surface.first_vertex;
+  const std::span<const Vec3> x_surface = Model::of(surface, state.x);
   int contacts = 0;
   for_each_nearest(moving, surface, state.x, search, [&](int vertex, const Nearest& best) {
     const Vec3 p = state.x[vertex];
@@ -298,7 +301,8 @@ const BodyCollider::Adjacency& BodyCollider::adjacency(std::size_t body_index, c
   return a;
 }
 
-Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights) {
+Vec3 BodyCollider::surface_pseudonormal(const Body& surface, std::span<const Vec3> x_surface, int face,
+                                        const Vec3& weights) {
   const std::vector<Triangle>& faces = surface.topology.faces;
   const Triangle& t = faces[static_cast<std::size_t>(face)];
   const int zeros = (weights[0] == 0.0) + (weights[1] == 0.0) + (weights[2] == 0.0);
@@ -325,7 +329,7 @@ Vec3 BodyCollider::surface_pseudonormal(const Body& surface, const Vec3* x_surfa
 
 BodyCollider::SmoothFrame BodyCollider::contact_frame(const Body& surface, std::span<const Vec3> x, int vertex,
                                                       const Nearest& best, double search) {
-  const Vec3* x_surface = x.data() + surface.first_vertex;
+  const std::span<const Vec3> x_surface = Model::of(surface, x);
   const Triangle& t = surface.topology.faces[best.triangle];
   const Vec3 offset = x[vertex] - best.point;
   const double distance = offset.norm();

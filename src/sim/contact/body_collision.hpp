@@ -105,7 +105,7 @@ class BodyCollider {
   // angle there). A face normal alone gives the wrong side next to a sharp edge or corner (a point in front of
   // an edge is as near to both faces; on the far face's side it is behind the near face's plane).
   // Not unit length. `x_surface`: the surface body's positions.
-  Vec3 surface_pseudonormal(const Body& surface, const Vec3* x_surface, int face, const Vec3& weights);
+  Vec3 surface_pseudonormal(const Body& surface, std::span<const Vec3> x_surface, int face, const Vec3& weights);
   // Per body (built on first use; the topology is fixed): the face across each face's edge k (the edge opposite
   // corner k), and each vertex's faces (compressed rows).
   struct Adjacency {

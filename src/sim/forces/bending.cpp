@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <tuple>
 
+#include "sim/forces/energy.hpp"
+
 namespace sim {
 
 std::vector<std::array<int, 2>> bending_links(std::span<const Triangle> faces) {
@@ -39,14 +41,8 @@ void add_bending_links(Body& body, std::span<const Vec3> x) {
 }
 
 double bending_energy(const Body& body, std::span<const Vec3> x) {
-  double energy = 0.0;
-  const auto& links = body.topology.bending_links;
-  for (std::size_t l = 0; l < links.size(); ++l) {
-    const auto [a, b] = links[l];
-    const double stretch = (x[a] - x[b]).norm() - body.rest.bending_length_m[l];
-    energy += 0.5 * body.params.bending_N_per_m * stretch * stretch;  // ½ k_b (|x_a − x_b| − ℓ0)²
-  }
-  return energy;
+  const DistanceConstraints& constraints = body.constraints;  // the links follow the edges
+  return constraint_energy(constraints, constraints.edge_count, constraints.size(), x);
 }
 
 }  // namespace sim

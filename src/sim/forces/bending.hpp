@@ -32,7 +32,7 @@ std::vector<std::array<int, 2>> bending_links(std::span<const Triangle> faces);
 // body.topology.bending_links and body.rest.bending_length_m from the mesh's faces and positions x.
 void add_bending_links(Body& body, std::span<const Vec3> x);
 
-// E_b = Σ_links ½ k_b (|x_a − x_b| − ℓ0)² [J] (0 without links).
+// E_b = Σ_links ½ k_b (|x_a − x_b| − ℓ0)² [J] (0 without links): body.constraints' links, so a body of a model.
 double bending_energy(const Body& body, std::span<const Vec3> x);
 
 }  // namespace sim

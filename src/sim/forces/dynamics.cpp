@@ -34,13 +34,7 @@ void Dynamics::gravity_and_spring_forces(const Body& body, std::span<const Vec3>
                                          std::span<Vec3> f) const {
   const softbody::ProfileScope profile(softbody::ProfilePhase::forces);
   start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);  // starts the sum: no zeroing pass
-  const double k = body.params.stiffness_N_per_m, c = body.params.damping_N_s_per_m;
-  if (k != 0.0 || c != 0.0) add_spring_dampers(body.topology.edges, body.rest.edge_length_m, k, c, x, v, f);
-  const double k_b = body.params.bending_N_per_m;
-  if (k_b != 0.0) {  // the bending links are springs and dampers too (sim/forces/bending.hpp); none: no pass
-    add_spring_dampers(body.topology.bending_links, body.rest.bending_length_m, k_b,
-                       body.params.bending_damping_N_s_per_m, x, v, f);
-  }
+  add_spring_dampers(body.constraints, x, v, f);                   // the edges and the bending links
 }
 
 double Dynamics::gas_face_pass(std::size_t b, std::span<const Vec3> x) {
@@ -84,15 +78,15 @@ void Dynamics::visit_net_forces(const State& state, std::vector<Vec3>& partial, 
     const Body& body = model_.bodies[b];
     const auto first = static_cast<std::size_t>(body.first_vertex);
     const auto count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> f(partial.data() + first, count);
+    const std::span<Vec3> f = Model::of(body, partial);
     if (scratch_.threads > 1 && count >= kParallelMinVertices) {
       visit_body_forces_in_parallel(b, state, f, body_contact, use);
       continue;
     }
-    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     gravity_and_spring_forces(body, x, v, f);
     floor_contact_forces(body, x, v, f);
-    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
+    if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     const std::span<const Vec3> area_sums = per_area_sum == 0.0 ? std::span<const Vec3>() : scratch_.area_sums[b];
     hand_out_net_forces(first, 0, count, f, area_sums, per_area_sum, use);
@@ -105,14 +99,14 @@ void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, 
   const Body& body = model_.bodies[b];
   const auto first = static_cast<std::size_t>(body.first_vertex);
   const std::size_t n = f.size();
-  const std::span<const Vec3> x(state.x.data() + first, n), v(state.v.data() + first, n);
+  const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
   // 1. Gravity, springs and dampers into f on one thread; the gas's face pass into its area sums on the other.
   double per_area_sum = 0.0;
   scratch_.runner->run(2, [&](int part) {
     if (part == 0) {
       gravity_and_spring_forces(body, x, v, f);
       floor_contact_forces(body, x, v, f);
-      if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, n), f);
+      if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     } else {
       per_area_sum = gas_face_pass(b, x);
     }
@@ -139,17 +133,15 @@ void Dynamics::gravity_and_gas_forces(const State& state, std::vector<Vec3>& for
   const bool body_contact = body_contact_forces(state);
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const Body& body = model_.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex);
-    const auto count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> f(force.data() + first, count);
-    const std::span<const Vec3> x(state.x.data() + first, count), v(state.v.data() + first, count);
+    const std::span<Vec3> f = Model::of(body, force);
+    const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);
     floor_contact_forces(body, x, v, f);  // a smooth contact is a force like gravity here (none otherwise)
-    if (body_contact) add_contact_forces(std::span<const Vec3>(scratch_.contact_force).subspan(first, count), f);
+    if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     if (per_area_sum == 0.0) continue;
     const std::vector<Vec3>& area_sums = scratch_.area_sums[b];
-    for (std::size_t i = 0; i < count; ++i) f[i] += per_area_sum * area_sums[i];
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] += per_area_sum * area_sums[i];
   }
 }
 

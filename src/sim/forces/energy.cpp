@@ -26,15 +26,21 @@ double kinetic_energy(const Body& body, std::span<const Vec3> v) {
   return kinetic;
 }
 
-double spring_energy(const Body& body, std::span<const Vec3> x) {
+double constraint_energy(const DistanceConstraints& constraints, std::size_t begin, std::size_t end,
+                         std::span<const Vec3> x) {
   double energy = 0.0;
-  for (std::size_t e = 0; e < body.topology.edges.size(); ++e) {
-    const auto [i, j] = body.topology.edges[e];
-    const double stretch = (x[i] - x[j]).norm() - body.rest.edge_length_m[e];
-    energy += 0.5 * body.params.stiffness_N_per_m * stretch * stretch;  // ½ k (|d| − L0)²
+  for (std::size_t e = begin; e < end; ++e) {
+    const auto [i, j] = constraints.ends[e];
+    const double stretch = (x[i] - x[j]).norm() - constraints.rest_length_m[e];
+    energy += 0.5 * constraints.stiffness_N_per_m[e] * stretch * stretch;  // ½ k (|d| − L0)²
   }
-  if (!body.topology.bending_links.empty()) energy += bending_energy(body, x);  // the links are springs too
   return energy;
+}
+
+double spring_energy(const Body& body, std::span<const Vec3> x) {
+  const DistanceConstraints& constraints = body.constraints;
+  // The edges' sum, then the bending links' (bending_energy) added to it.
+  return constraint_energy(constraints, 0, constraints.edge_count, x) + bending_energy(body, x);
 }
 
 double gas_energy(const Body& body, double volume_m3) {

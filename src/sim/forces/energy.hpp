@@ -17,6 +17,9 @@ Vec3 momentum(const Body& body, std::span<const Vec3> v);
 double kinetic_energy(const Body& body, std::span<const Vec3> v);
 // Σ_e ½ k (|d_e| − L0_e)² over the edges, plus the bending links' ½ k_b (|d| − ℓ0)² (sim/forces/bending.hpp) [J].
 double spring_energy(const Body& body, std::span<const Vec3> x);
+// Σ ½ k (|x_i − x_j| − L0)² over constraints [begin, end) of the set [J].
+double constraint_energy(const DistanceConstraints& constraints, std::size_t begin, std::size_t end,
+                         std::span<const Vec3> x);
 // −nRT ln(V / V0) at the enclosed volume V [m³], V held at guarded_volume() [J]; 0 without gas.
 double gas_energy(const Body& body, double volume_m3);
 

@@ -14,11 +14,14 @@ namespace {
 
 constexpr std::size_t kEdgeBlock = 64;  // edges per gather / compute / scatter round: scratch stays in L1
 
-// One block of edges: the per-edge coefficient s_e with f_i = s_e d_e (and -s_e d_e on j).
+// One block of constraints, [first, first + n): the coefficient s_e with f_i = s_e d_e (and -s_e d_e on j).
 template <bool kDamped>
-void spring_damper_block(std::span<const std::array<int, 2>> edges, const double* rest_length_m, double k, double c,
+void spring_damper_block(const DistanceConstraints& constraints, std::size_t first, std::size_t n,
                          std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force) {
-  const std::size_t n = edges.size();
+  const std::span<const std::array<int, 2>> edges = std::span(constraints.ends).subspan(first, n);
+  const double* rest_length_m = constraints.rest_length_m.data() + first;
+  const double* k = constraints.stiffness_N_per_m.data() + first;
+  const double* c = constraints.damping_N_s_per_m.data() + first;
   alignas(64) double dx[kEdgeBlock], dy[kEdgeBlock], dz[kEdgeBlock], rate[kEdgeBlock], s[kEdgeBlock];
   for (std::size_t e = 0; e < n; ++e) {  // gather: d = x_i - x_j, and (v_i - v_j)·d
     const auto [i, j] = edges[e];
@@ -31,8 +34,8 @@ void spring_damper_block(std::span<const std::array<int, 2>> edges, const double
   for (std::size_t e = 0; e < n; ++e) {  // no indirection: vectorised
     const double length_squared = dx[e] * dx[e] + dy[e] * dy[e] + dz[e] * dz[e];
     const double length = std::sqrt(length_squared);
-    double numerator = -k * (length - rest_length_m[e]) * length;
-    if constexpr (kDamped) numerator -= c * rate[e];
+    double numerator = -k[e] * (length - rest_length_m[e]) * length;
+    if constexpr (kDamped) numerator -= c[e] * rate[e];
     // Coincident endpoints (L = 0, so d = 0 and the numerator is 0): divide by 1, no force.
     s[e] = numerator / (length_squared > 0.0 ? length_squared : 1.0);
   }
@@ -61,14 +64,18 @@ double sum_of_dots_from(std::span<const Vec3> x, std::span<const Vec3> g, const 
 
 }  // namespace
 
-void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
-                        double c, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force) {
-  for (std::size_t first = 0; first < edges.size(); first += kEdgeBlock) {
-    const std::span<const std::array<int, 2>> block = edges.subspan(first, std::min(kEdgeBlock, edges.size() - first));
-    if (c != 0.0) {
-      spring_damper_block<true>(block, rest_length_m.data() + first, k, c, x, v, force);
-    } else {
-      spring_damper_block<false>(block, rest_length_m.data() + first, k, c, x, v, force);
+void add_spring_dampers(const DistanceConstraints& constraints, std::span<const Vec3> x, std::span<const Vec3> v,
+                        std::span<Vec3> force) {
+  for (std::size_t first = 0; first < constraints.size(); first += kEdgeBlock) {
+    const std::size_t n = std::min(kEdgeBlock, constraints.size() - first);
+    const auto nonzero = [first, n](const std::vector<double>& values) {
+      return std::any_of(values.begin() + static_cast<std::ptrdiff_t>(first),
+                         values.begin() + static_cast<std::ptrdiff_t>(first + n), [](double a) { return a != 0.0; });
+    };
+    if (nonzero(constraints.damping_N_s_per_m)) {
+      spring_damper_block<true>(constraints, first, n, x, v, force);
+    } else if (nonzero(constraints.stiffness_N_per_m)) {
+      spring_damper_block<false>(constraints, first, n, x, v, force);
     }
   }
 }

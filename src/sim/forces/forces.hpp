@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "sim/model/body.hpp"
 
 namespace sim {
 
@@ -19,13 +20,15 @@ using softbody::Vec3;
 void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force);
 
 // Hooke springs, f_i += -k (|d| - L0) d̂ with d = x_i - x_j, and dampers along them, f_i += -c ((v_i - v_j)·d̂) d̂,
-// the opposite on j, in one fused pass over the edges: with L = |d|,
+// the opposite on j, in one fused pass over a body's distance constraints (its edges, then its bending links): with
+// L = |d|,
 //   f_i = -k (L - L0) d/L - c ((v_i - v_j)·d) d/L²  =  [(-k (L - L0) L - c (v_i - v_j)·d) / L²] d,
 // one square root and one division per edge (the two forces one at a time agree to round-off). The
-// edges go in blocks: gather the differences, compute the coefficients in a loop without indirection
-// (which the compiler vectorises), then scatter, so results do not depend on the vector width.
-void add_spring_dampers(std::span<const std::array<int, 2>> edges, std::span<const double> rest_length_m, double k,
-                        double c, std::span<const Vec3> x, std::span<const Vec3> v, std::span<Vec3> force);
+// constraints go in blocks: gather the differences, compute the coefficients in a loop without indirection
+// (which the compiler vectorises), then scatter, so results do not depend on the vector width. A block whose
+// constraints have no damping skips the dampers' terms; one with neither springs nor dampers is skipped.
+void add_spring_dampers(const DistanceConstraints& constraints, std::span<const Vec3> x, std::span<const Vec3> v,
+                        std::span<Vec3> force);
 
 // Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.

@@ -1,10 +1,14 @@
-// Linearised backward Euler (Baraff & Witkin 1998) with a sparse conjugate-gradient solve.
+// Linearised backward Euler (Baraff & Witkin 1998) with a conjugate-gradient solve.
 #pragma once
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCore>
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "sim/integrators/integrators.hpp"
+#include "sim/solvers/block_jacobi_cg.hpp"
+#include "sim/solvers/block_system.hpp"
 
 namespace sim {
 
@@ -12,45 +16,38 @@ namespace sim {
 // of backward Euler, v' = v + Δv, x' = x + h v', with
 //   (M − h ∂f/∂v − h² ∂f/∂x) Δv = h (f0 + h ∂f/∂x v0).
 // What is linearised and what is not:
-//   - springs (the edges and the bending links, sim/forces/bending.hpp): ∂f/∂x assembled exactly except for the
-//     definiteness fix below;
+//   - springs (the body's distance constraints: the edges and the bending links, sim/forces/bending.hpp): ∂f/∂x
+//     assembled exactly except for the definiteness fix below;
 //   - dampers: ∂f/∂v assembled exactly; their ∂f/∂x (small, non-symmetric) is dropped, as in the paper;
 //   - pressure and gravity: explicit, in f0 only. The gas force's Jacobian is a dense rank-one term plus
 //     an indefinite face term; the gas is soft next to the springs, so it does not limit the step here.
 // Definiteness: a compressed spring's geometric term k (1 − L0/|d|)(I − d̂d̂ᵀ) is negative, which can make
 // the matrix indefinite (Choi & Ko 2002). It is clamped at zero, so every spring block is positive
-// semi-definite, the system matrix is symmetric positive definite, and conjugate gradients apply.
+// semi-definite, the system matrix is symmetric positive definite, and conjugate gradients apply: the
+// block-Jacobi one newton uses (sim/solvers/block_jacobi_cg.hpp), started from the last step's Δv.
 // First order; its numerical damping removes energy at large h, so it is stable far beyond the explicit
 // methods' limit (tests/integrators/stability_test.cpp).
 //
-// Allocation: the sparsity pattern, the matrix and the vectors are built on the first step (and again if
-// the number of vertices changes, i.e. another model); later steps only overwrite values. Eigen's CG solve
-// allocates its own four work vectors per call: the one allocation per step left.
+// Allocation: the system's pattern and the vectors are built on the first step (and again if the number of
+// vertices changes, i.e. another model); later steps only overwrite values.
 // Carried over (State::carry.velocity_change): the last step's Δv, the solve's warm start.
 class ImplicitEuler final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
 
  private:
-  // Row-major: the product in CG then gathers along rows, which measured faster than column scatter.
-  using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  // Where one 3×3 block lives in the matrix's value array: the offset of each of its three rows.
-  using BlockRows = std::array<Eigen::Index, 3>;
-  struct EdgeBlocks {
-    int i = 0, j = 0;  // world vertex indices
+  struct Spring {  // one distance constraint, world vertex indices
+    int i = 0, j = 0;
     double rest_length_m = 0.0, stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
-    BlockRows ii{}, jj{}, ij{}, ji{};
   };
 
   void build_pattern(const Model& model, std::size_t vertex_count);
   void assemble(const State& state, std::span<const double> mass_kg, double dt);
-  void add_block(const BlockRows& block, const Eigen::Matrix3d& value, double sign);
 
-  std::vector<EdgeBlocks> edges_;
-  std::vector<BlockRows> diagonal_;  // per vertex
-  SparseMatrix matrix_;
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> solver_;
-  Eigen::VectorXd rhs_, guess_;
+  std::vector<Spring> springs_;  // every body's constraints, in the system's pair order
+  BlockSystem system_;           // A = M + h² K + h C
+  BlockJacobiCg cg_;
+  Eigen::VectorXd rhs_;
   std::vector<Vec3> force_;
   std::size_t pattern_vertices_ = 0;
 };

@@ -40,28 +40,23 @@ void IncrementalPotential::build(const Model& model) {
       across[{bb, c}] = a;
       across[{c, a}] = bb;
     }
-    for (std::size_t e = 0; e < body.topology.edges.size(); ++e) {
-      const auto [i, j] = body.topology.edges[e];
+    const DistanceConstraints& constraints = body.constraints;  // the edges, then the bending links
+    for (std::size_t e = 0; e < constraints.size(); ++e) {
+      const auto [i, j] = constraints.ends[e];
       pairs_.push_back({first + i, first + j});
-      rest_length_m_.push_back(body.rest.edge_length_m[e]);
-      const auto ij = across.find({i, j}), ji = across.find({j, i});
+      rest_length_m_.push_back(constraints.rest_length_m[e]);
       Edge edge;
       edge.body = static_cast<int>(b);
-      // A closed, consistently wound mesh has both; without one side the edge gets no curvature term.
-      edge.across_ij = ij == across.end() ? -1 : first + ij->second;
-      edge.across_ji = ji == across.end() ? -1 : first + ji->second;
-      edge.stiffness_N_per_m = body.params.stiffness_N_per_m;
-      edge.damping_N_s_per_m = body.params.damping_N_s_per_m;
-      edges_.push_back(edge);
-    }
-    if (body.params.bending_N_per_m != 0.0) {
-      for (std::size_t l = 0; l < body.topology.bending_links.size(); ++l) {  // a spring, no face across it
-        const auto [i, j] = body.topology.bending_links[l];
-        pairs_.push_back({first + i, first + j});
-        rest_length_m_.push_back(body.rest.bending_length_m[l]);
-        edges_.push_back(
-            {static_cast<int>(b), -1, -1, body.params.bending_N_per_m, body.params.bending_damping_N_s_per_m});
+      edge.across_ij = edge.across_ji = -1;
+      if (e < constraints.edge_count) {  // a mesh edge has faces across it; a bending link none
+        const auto ij = across.find({i, j}), ji = across.find({j, i});
+        // A closed, consistently wound mesh has both; without one side the edge gets no curvature term.
+        edge.across_ij = ij == across.end() ? -1 : first + ij->second;
+        edge.across_ji = ji == across.end() ? -1 : first + ji->second;
       }
+      edge.stiffness_N_per_m = constraints.stiffness_N_per_m[e];
+      edge.damping_N_s_per_m = constraints.damping_N_s_per_m[e];
+      edges_.push_back(edge);
     }
     if (body.params.pressure_J != 0.0) {
       gas_.push_back({static_cast<int>(b), std::vector<Vec3>(static_cast<std::size_t>(body.vertex_count))});

@@ -10,27 +10,47 @@
 namespace sim {
 namespace {
 
-// One pass over distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ): the edges'
-// with k, c, or the bending links' with k_b, c_b. x: the body's positions, previous: the same at the start of
-// the substep, w: inverse masses [1/kg], tension: the constraints' carried forces T [N], updated to this pass's.
-// Carried (the prediction applied T), the pass solves for the change: C − T/k; classical, for all of it.
-void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double k, double c,
-                     const EdgeColouring& colouring, double h, bool carried, std::span<Vec3> x,
+// The set in the pass's order: the edges' colours, then the bending links' (each part coloured on its own), so
+// that a pass solves every edge before any link.
+std::vector<PassConstraint> pass_order(const DistanceConstraints& constraints, int vertex_count) {
+  const std::span<const std::array<int, 2>> ends(constraints.ends);
+  std::vector<PassConstraint> pass;
+  pass.reserve(constraints.size());
+  const auto append = [&](const EdgeColouring& colouring, std::size_t offset) {
+    for (const int e : colouring.edges) {
+      const std::size_t index = offset + static_cast<std::size_t>(e);
+      const double k = constraints.stiffness_N_per_m[index];
+      pass.push_back({ends[index][0], ends[index][1], index, constraints.rest_length_m[index], k,
+                      constraints.damping_N_s_per_m[index], k == 0.0 ? 0.0 : 1.0 / k});
+    }
+  };
+  append(colour_edges(ends.first(constraints.edge_count), vertex_count), 0);
+  append(colour_edges(ends.subspan(constraints.edge_count), vertex_count), constraints.edge_count);
+  return pass;
+}
+
+// One pass over a body's distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ), each
+// with its k and c. x: the body's positions, previous: the same at the start of the substep, w: inverse masses
+// [1/kg], tension: the constraints' carried forces T [N], updated to this pass's. Carried (the prediction applied
+// T), the pass solves for the change: C − T/k; classical, for all of it.
+void solve_distances(std::span<const PassConstraint> pass, double h, bool carried, std::span<Vec3> x,
                      std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
-  if (k == 0.0 && c == 0.0) return;
-  carried = carried && k != 0.0;             // a damper alone carries nothing (its force would count twice: xpbd.hpp)
-  const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
-  const double inverse_k = k == 0.0 ? 0.0 : 1.0 / k, inverse_h2 = 1.0 / (h * h);
-  for (const int e : colouring.edges) {
-    const auto edge = static_cast<std::size_t>(e);
-    const auto [i, j] = edges[edge];
+  const double inverse_h2 = 1.0 / (h * h);
+  for (const PassConstraint& constraint : pass) {
+    const std::size_t edge = constraint.index;
+    const double k = constraint.stiffness_N_per_m, c = constraint.damping_N_s_per_m;
+    if (k == 0.0 && c == 0.0) continue;
+    const bool carries = carried && k != 0.0;  // a damper alone carries nothing (its force would count twice: xpbd.hpp)
+    const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
+    const double inverse_k = constraint.inverse_stiffness;
+    const int i = constraint.i, j = constraint.j;
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     if (length == 0.0) continue;                                   // coincident ends: no direction, no correction
     const Vec3 n = d / length;                                     // ∇_i C
-    const double carried_tension = carried ? tension[edge] : 0.0;  // T [N]
-    const double stretch = length - rest[edge] - carried_tension * inverse_k;    // C − T/k [m]
-    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));  // ∇C·(x − x_prev) [m]
+    const double carried_tension = carries ? tension[edge] : 0.0;  // T [N]
+    const double stretch = length - constraint.rest_length_m - carried_tension * inverse_k;  // C − T/k [m]
+    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));              // ∇C·(x − x_prev) [m]
     const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
     x[i] += (w[i] * lambda) * n;
     x[j] -= (w[j] * lambda) * n;
@@ -38,11 +58,13 @@ void solve_distances(std::span<const std::array<int, 2>> edges, std::span<const 
   }
 }
 
-// f_i −= T_e n̂_e, f_j += T_e n̂_e for every constraint e = (i, j): the carried tensions as forces [N].
-void add_carried_forces(std::span<const std::array<int, 2>> edges, std::span<const double> tension,
+// f_i −= T_e n̂_e, f_j += T_e n̂_e for every constraint e = (i, j) with a spring (k ≠ 0): the carried tensions as
+// forces [N].
+void add_carried_forces(const DistanceConstraints& constraints, std::span<const double> tension,
                         std::span<const Vec3> x, std::span<Vec3> f) {
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const auto [i, j] = edges[e];
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    if (constraints.stiffness_N_per_m[e] == 0.0) continue;
+    const auto [i, j] = constraints.ends[e];
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     if (length == 0.0) continue;
@@ -55,16 +77,14 @@ void add_carried_forces(std::span<const std::array<int, 2>> edges, std::span<con
 }  // namespace
 
 void Xpbd::prepare_once(const Model& model) {
-  if (colourings_.size() == model.bodies.size()) return;
-  colourings_.clear();
-  link_colourings_.clear();
+  if (passes_.size() == model.bodies.size()) return;
+  passes_.clear();
   first_tension_.clear();
   tension_count_ = 0;
   for (const Body& body : model.bodies) {
-    colourings_.push_back(colour_edges(body.topology.edges, body.vertex_count));
-    link_colourings_.push_back(colour_edges(body.topology.bending_links, body.vertex_count));
+    passes_.push_back(pass_order(body.constraints, body.vertex_count));
     first_tension_.push_back(tension_count_);
-    tension_count_ += body.topology.edges.size() + body.topology.bending_links.size();
+    tension_count_ += body.constraints.size();
   }
   StabilityEstimate estimate = estimate_stability(model.bodies, model.initial_x);  // the initial state: deterministic
   scale_for_contacts(estimate, model);
@@ -87,40 +107,23 @@ void Xpbd::step(Dynamics& dynamics, State& state, double dt) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     if (!carried(b, h)) continue;
     const Body& body = model.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<const Vec3> x(state.x.data() + first, count);
-    const std::span<Vec3> f(force_.data() + first, count);
-    const std::span<const double> body_tension(tension.data() + first_tension_[b],
-                                               body.topology.edges.size() + body.topology.bending_links.size());
-    if (body.params.stiffness_N_per_m != 0.0) {
-      add_carried_forces(body.topology.edges, body_tension.first(body.topology.edges.size()), x, f);
-    }
-    if (body.params.bending_N_per_m != 0.0) {
-      add_carried_forces(body.topology.bending_links, body_tension.subspan(body.topology.edges.size()), x, f);
-    }
+    const std::span<const Vec3> x = Model::of(body, state.x);
+    const std::span<Vec3> f = Model::of(body, force_);
+    add_carried_forces(body.constraints, std::span(tension).subspan(first_tension_[b], body.constraints.size()), x, f);
   }
   for (std::size_t i = 0; i < state.x.size(); ++i) {
     state.v[i] += (kick * model.inverse_mass[i]) * force_[i];
     state.x[i] += h * state.v[i];
   }
-  // 2. The edge constraints, body by body.
+  // 2. The distance constraints (edges, then bending links), body by body.
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
     const Body& body = model.bodies[b];
-    const auto first = static_cast<std::size_t>(body.first_vertex), count = static_cast<std::size_t>(body.vertex_count);
-    const std::span<Vec3> x(state.x.data() + first, count);
-    const std::span<const Vec3> previous(previous_x_.data() + first, count);
-    const std::span<const double> w(model.inverse_mass.data() + first, count);
-    const std::size_t edges = body.topology.edges.size();
-    const std::span<double> body_tension(tension.data() + first_tension_[b],
-                                         edges + body.topology.bending_links.size());
-    solve_distances(body.topology.edges, body.rest.edge_length_m, body.params.stiffness_N_per_m,
-                    body.params.damping_N_s_per_m, colourings_[b], h, carried(b, h), x, previous, w,
-                    body_tension.first(edges));
-    if (body.params.bending_N_per_m == 0.0) continue;
-    solve_distances(body.topology.bending_links, body.rest.bending_length_m, body.params.bending_N_per_m,
-                    body.params.bending_damping_N_s_per_m, link_colourings_[b], h, carried(b, h), x, previous, w,
-                    body_tension.subspan(edges));
+    const std::span<Vec3> x = Model::of(body, state.x);
+    const std::span<const Vec3> previous = Model::of(body, previous_x_);
+    const std::span<const double> w = Model::of(body, model.inverse_mass);
+    solve_distances(passes_[b], h, carried(b, h), x, previous, w,
+                    std::span(tension).subspan(first_tension_[b], body.constraints.size()));
   }
   // 3. Velocities from the positions.
   const double inverse_h = 1.0 / h;

@@ -34,21 +34,30 @@ namespace sim {
 // springs behave like backward Euler, and the explicit gas keeps h < 2/ω_gas.
 // The derivation, the measurements and the form this replaced: docs/notes/2026-12-05-header-derivations.md;
 // for users: docs/physics/integrators.md, "Large steps: `xpbd`".
+// One distance constraint as xpbd's pass reads it: a copy of the body's set laid out in the pass's (colour) order,
+// so that the pass reads one record after another.
+struct PassConstraint {
+  int i = 0, j = 0;       // the body's local vertices
+  std::size_t index = 0;  // in the body's constraint set (and its carried tensions)
+  double rest_length_m = 0.0, stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
+  double inverse_stiffness = 0.0;  // 1/k [m/N] (0 without a spring)
+};
+
 class Xpbd final : public Integrator {
  public:
   void step(Dynamics& dynamics, State& state, double dt) override;
 
  private:
-  // The colourings, every body's offsets into the carried tensions and its form's limit, on the first step.
+  // The passes' orders, every body's offsets into the carried tensions and its form's limit, on the first step.
   void prepare_once(const Model& model);
   // Whether body b's substeps of h take the carried form (h ≤ xpbd_carried_dt).
   bool carried(std::size_t b, double h) const { return h <= carried_dt_[b]; }
 
-  std::vector<EdgeColouring> colourings_;       // per body of the model, computed on the first step
-  std::vector<EdgeColouring> link_colourings_;  // per body: its bending links (empty without bending)
-  std::vector<double> carried_dt_;              // per body: xpbd_carried_dt at the initial state, contacts included [s]
-  std::vector<std::size_t> first_tension_;  // per body: its edges' first entry in carry.edge_tension_N (links follow)
-  std::size_t tension_count_ = 0;           // every body's edges and links
+  // Per body of the model: its constraints in colour order (the edges' colours, then the links'), on the first step.
+  std::vector<std::vector<PassConstraint>> passes_;
+  std::vector<double> carried_dt_;          // per body: xpbd_carried_dt at the initial state, contacts included [s]
+  std::vector<std::size_t> first_tension_;  // per body: its constraints' first entry in carry.edge_tension_N
+  std::size_t tension_count_ = 0;           // every body's constraints
   std::vector<Vec3> previous_x_;            // scratch: x at the start of the substep
   std::vector<Vec3> force_;                 // scratch: gravity + gas (+ carried tensions) on every vertex [N]
 };

@@ -46,6 +46,23 @@ Body build_body(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, 
   return body;
 }
 
+DistanceConstraints distance_constraints(const Body& body) {
+  DistanceConstraints set;
+  const auto add = [&set](std::span<const std::array<int, 2>> ends, std::span<const double> rest, double k, double c) {
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      set.ends.push_back(ends[e]);
+      set.rest_length_m.push_back(rest[e]);
+      set.stiffness_N_per_m.push_back(k);
+      set.damping_N_s_per_m.push_back(c);
+    }
+  };
+  const Params& p = body.params;
+  add(body.topology.edges, body.rest.edge_length_m, p.stiffness_N_per_m, p.damping_N_s_per_m);
+  set.edge_count = set.size();
+  add(body.topology.bending_links, body.rest.bending_length_m, p.bending_N_per_m, p.bending_damping_N_s_per_m);
+  return set;
+}
+
 double mean_edge_length(const RestShape& rest) {
   double sum = 0.0;
   for (double length : rest.edge_length_m) sum += length;

@@ -47,12 +47,26 @@ struct Params {
   double bending_damping_N_s_per_m = 0.0;  // c_b = c k_b / k: the links' dampers, the edges' damping time c/k
 };
 
+// The body's springs as one set of distance constraints C = |x_i − x_j| − L0 (as Jolt's edge constraints): the
+// mesh edges (k, c) first, then the bending links (k_b, c_b), both in their topology's order, each constraint with
+// its own rest length, stiffness and damping. Built once by add_body() from the topology, rest shape and params;
+// every spring loop (forces, energy, the integrators' Jacobians and passes, the stability estimate) runs over it.
+struct DistanceConstraints {
+  std::vector<std::array<int, 2>> ends;   // the two vertices (local indices, a < b)
+  std::vector<double> rest_length_m;      // L0 [m]
+  std::vector<double> stiffness_N_per_m;  // k [N/m]: F = -k (|d| - L0) d̂
+  std::vector<double> damping_N_s_per_m;  // c [N·s/m]: F = -c ((v_i - v_j)·d̂) d̂
+  std::size_t edge_count = 0;             // constraints [0, edge_count) are the mesh edges, the rest bending links
+  std::size_t size() const { return ends.size(); }
+};
+
 struct Body {
   Topology topology;
   RestShape rest;
   VertexMasses masses;
   Params params;
-  int first_vertex = 0;  // where this body's vertices start in the state's arrays (State::x, v)
+  DistanceConstraints constraints;  // from the above, by add_body()
+  int first_vertex = 0;             // where this body's vertices start in the state's arrays (State::x, v)
   int vertex_count = 0;
 };
 
@@ -64,6 +78,9 @@ std::vector<double> lump_masses_by_area(const std::vector<Vec3>& x, const std::v
 // their present lengths, area-lumped masses of `total_mass` [kg], the rest volume. Params are left zero and
 // first_vertex to the caller.
 Body build_body(const std::vector<Vec3>& x, const std::vector<Triangle>& faces, double total_mass);
+
+// The body's edges and bending links as one constraint set, with its params' stiffness and damping.
+DistanceConstraints distance_constraints(const Body& body);
 
 // The mean rest edge length [m] (updates rest.mean_edge_m after the rest lengths changed).
 double mean_edge_length(const RestShape& rest);

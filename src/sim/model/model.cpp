@@ -20,6 +20,7 @@ State initial_state(const Model& model) {
 void add_body(Model& model, State& state, Body body, const std::vector<Vec3>& x0, const Vec3& v0) {
   body.first_vertex = static_cast<int>(state.x.size());
   body.vertex_count = static_cast<int>(x0.size());
+  body.constraints = distance_constraints(body);
   model.mass_kg.insert(model.mass_kg.end(), body.masses.kg.begin(), body.masses.kg.end());
   model.inverse_mass.insert(model.inverse_mass.end(), body.masses.inverse.begin(), body.masses.inverse.end());
   model.initial_x.insert(model.initial_x.end(), x0.begin(), x0.end());

@@ -45,14 +45,17 @@ struct Model {
   }
 
   std::size_t vertex_count() const { return mass_kg.size(); }
-  // A body's slice of a per-vertex array of the state.
-  std::span<const Vec3> of(const Body& body, std::span<const Vec3> all) const {
-    return all.subspan(static_cast<std::size_t>(body.first_vertex), static_cast<std::size_t>(body.vertex_count));
+  // A body's slice of a per-vertex array (positions, velocities, forces, masses: a vector or a span, const or
+  // not): the one way sim/ spells "this body's vertices".
+  template <class PerVertex>
+  static auto of(const Body& body, PerVertex&& all) {
+    return std::span(all).subspan(static_cast<std::size_t>(body.first_vertex),
+                                  static_cast<std::size_t>(body.vertex_count));
   }
 };
 
 // Appends `body` (its params set) to the model, its vertices starting at `x0` (world coordinates) with the
-// common velocity `v0` in `state`; sets body.first_vertex.
+// common velocity `v0` in `state`; sets body.first_vertex and builds body.constraints.
 void add_body(Model& model, State& state, Body body, const std::vector<Vec3>& x0, const Vec3& v0);
 
 // A model with these settings and no bodies yet, and its state at t = 0.

@@ -122,7 +122,7 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.carry.velocity_change =
       Eigen::Map<const Eigen::VectorXd>(change.data(), static_cast<Eigen::Index>(change.size()));
   std::size_t constraints = 0;
-  for (const Body& body : model.bodies) constraints += body.topology.edges.size() + body.topology.bending_links.size();
+  for (const Body& body : model.bodies) constraints += body.constraints.size();
   state.carry.edge_tension_N = r.array<double>("carried edge tensions", constraints);
   state.carry.previous_error = r.scalar<double>("step-size controller error");
   state.carry.rejected_last = r.scalar<std::uint8_t>("step-size controller flag") != 0;

@@ -47,7 +47,7 @@ void BlockJacobiCg::precondition(const Eigen::VectorXd& in, Eigen::VectorXd& out
 }
 
 CgResult BlockJacobiCg::solve(const BlockSystem& a, std::span<const RankOneTerm> terms, const Eigen::VectorXd& b,
-                              Eigen::VectorXd& x, double tolerance, int max_iterations) {
+                              Eigen::VectorXd& x, double tolerance, int max_iterations, CgStart start) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   const Eigen::Index n = b.size();
   if (r_.size() != n) {
@@ -56,12 +56,18 @@ CgResult BlockJacobiCg::solve(const BlockSystem& a, std::span<const RankOneTerm>
     p_.setZero(n);
     q_.setZero(n);
   }
+  const bool warm = start == CgStart::Given && x.size() == n;
   if (x.size() != n) x.resize(n);
   build_preconditioner(a, terms);
   CgResult result;
-  x.setZero();
-  r_ = b;  // r = b − S·0
   const double stop = tolerance * b.norm();
+  if (warm && stop > 0.0) {
+    apply(a, terms, x, q_);
+    r_ = b - q_;  // r = b − S x
+  } else {
+    x.setZero();
+    r_ = b;  // r = b − S·0
+  }
   if (r_.norm() <= stop) {
     result.converged = true;
     return result;

@@ -28,17 +28,20 @@ struct CgResult {
   bool negative_curvature = false;  // a direction p with pᵀ S p <= 0 was met: S is not positive definite
 };
 
+// Where a solve starts: from x = 0, or from the x it is given (a warm start, e.g. the last step's solution).
+enum class CgStart { Zero, Given };
+
 // Solves S x = b for S = A + Σ_t u_t u_tᵀ (A a BlockSystem; the rank-one terms are applied as products, so S is
-// never formed: A x + u (uᵀx)), from x = 0, by preconditioned conjugate gradients (Hestenes & Stiefel 1952;
-// Saad, Iterative Methods for Sparse Linear Systems, Alg. 9.1) with the inverse of each vertex's 3×3
-// diagonal block of S as the preconditioner. Stops at |r| <= tolerance · |b|, after max_iterations, or at the
-// first search direction of non-positive curvature (then x is the last iterate). Started from zero, every
-// iterate x_k with S positive definite has bᵀx_k > 0: with b = −∇E, a descent direction for any k.
-// The work vectors are sized on the first solve and reused (no allocation after it for the same size).
+// never formed: A x + u (uᵀx)), from x = 0 or a given x, by preconditioned conjugate gradients (Hestenes & Stiefel
+// 1952; Saad, Iterative Methods for Sparse Linear Systems, Alg. 9.1) with the inverse of each vertex's 3×3 diagonal
+// block of S as the preconditioner. Stops at |r| <= tolerance · |b|, after max_iterations, or at the first search
+// direction of non-positive curvature (then x is the last iterate); b = 0 gives x = 0. Started from zero, every iterate
+// x_k with S positive definite has bᵀx_k > 0: with b = −∇E, a descent direction for any k. The work vectors are sized
+// on the first solve and reused (no allocation after it for the same size).
 class BlockJacobiCg {
  public:
   CgResult solve(const BlockSystem& a, std::span<const RankOneTerm> terms, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                 double tolerance, int max_iterations);
+                 double tolerance, int max_iterations, CgStart start = CgStart::Zero);
 
  private:
   void apply(const BlockSystem& a, std::span<const RankOneTerm> terms, const Eigen::VectorXd& in, Eigen::VectorXd& out);

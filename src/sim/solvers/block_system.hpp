@@ -1,4 +1,5 @@
-// The Newton system's sparse part: a symmetric matrix of 3×3 vertex blocks, assembled in place.
+// The implicit integrators' sparse part (implicit's M + h² K + h C, newton's Hessian): a symmetric matrix of 3×3 vertex
+// blocks, assembled in place.
 #pragma once
 
 #include <array>

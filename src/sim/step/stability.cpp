@@ -25,38 +25,35 @@ double geometric_share(double length, double rest_length) {
   return length > rest_length ? 1.0 - rest_length / length : 0.0;
 }
 
-// y += weight · K u over these springs: K_e = d̂d̂ᵀ + g (I − d̂d̂ᵀ) on each (the spring's Hessian per unit
-// stiffness, compressions clamped).
-void add_spring_matvec(std::span<const std::array<int, 2>> edges, std::span<const double> rest, double weight,
-                       std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const auto [i, j] = edges[e];
+// Constraint e's stiffness per unit of the edges' k: 1 on the edges, k_b / k on the bending links (then c_b / c is
+// the same ratio, so the damping stays proportional, C = (c/k) K). Without springs (k ≤ 0): 1 on the edges, 0 on
+// the links.
+double relative_stiffness(const Body& body, std::size_t e) {
+  const double k = body.params.stiffness_N_per_m;
+  if (k > 0.0) return body.constraints.stiffness_N_per_m[e] / k;
+  return e < body.constraints.edge_count ? 1.0 : 0.0;
+}
+
+// y = K u with k = 1 over the body's constraints: K_e = w_e [d̂d̂ᵀ + g (I − d̂d̂ᵀ)] on each (the spring's Hessian
+// per unit stiffness, compressions clamped; w_e its relative_stiffness).
+void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
+  y.assign(u.size(), Vec3::Zero());
+  const DistanceConstraints& constraints = body.constraints;
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const double weight = relative_stiffness(body, e);
+    if (weight <= 0.0) continue;
+    const auto [i, j] = constraints.ends[e];
     const Vec3 d = x[i] - x[j];
     const double length = d.norm();
     if (length == 0.0) continue;
     const Vec3 n = d / length;
     const Vec3 du = u[i] - u[j];
-    const double g = geometric_share(length, rest[e]);
+    const double g = geometric_share(length, constraints.rest_length_m[e]);
     Vec3 f = n * n.dot(du) + g * (du - n * n.dot(du));
     if (weight != 1.0) f *= weight;
     y[i] += f;
     y[j] -= f;
   }
-}
-
-// The bending links' stiffness relative to the edges', k_b / k (0 without links).
-double link_weight(const Body& body) {
-  const double k = body.params.stiffness_N_per_m;
-  return body.topology.bending_links.empty() || k <= 0.0 ? 0.0 : body.params.bending_N_per_m / k;
-}
-
-// y = K u with k = 1: the edges, plus the bending links weighted by k_b / k (then c_b / c is the same ratio,
-// so the damping stays proportional, C = (c/k) K).
-void spring_matvec(const Body& body, std::span<const Vec3> x, const std::vector<Vec3>& u, std::vector<Vec3>& y) {
-  y.assign(u.size(), Vec3::Zero());
-  add_spring_matvec(body.topology.edges, body.rest.edge_length_m, 1.0, x, u, y);
-  const double r = link_weight(body);
-  if (r > 0.0) add_spring_matvec(body.topology.bending_links, body.rest.bending_length_m, r, x, u, y);
 }
 
 // λ_max of M⁻¹K (k = 1) by power iterations with the M-weighted Rayleigh quotient uᵀKu / uᵀMu [1/kg].
@@ -91,18 +88,13 @@ double power_lambda(const Body& body, std::span<const Vec3> x) {
 // Gershgorin: every eigenvalue of M⁻¹K lies below max_i Σ_{e∋i} 2 max(1, g_e) / m_i (diagonal block
 // plus off-diagonal blocks, each of norm max(1, g)) [1/kg].
 double gershgorin_lambda(const Body& body, std::span<const Vec3> x) {
-  const Topology& t = body.topology;
+  const DistanceConstraints& constraints = body.constraints;
   std::vector<double> row(x.size(), 0.0);
-  for (std::size_t e = 0; e < t.edges.size(); ++e) {
-    const auto [i, j] = t.edges[e];
-    const double w = 2.0 * std::max(1.0, geometric_share((x[i] - x[j]).norm(), body.rest.edge_length_m[e]));
-    row[i] += w;
-    row[j] += w;
-  }
-  const double r = link_weight(body);
-  for (std::size_t l = 0; r > 0.0 && l < t.bending_links.size(); ++l) {  // the links' blocks, k_b / k each
-    const auto [i, j] = t.bending_links[l];
-    const double w = 2.0 * r * std::max(1.0, geometric_share((x[i] - x[j]).norm(), body.rest.bending_length_m[l]));
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const double r = relative_stiffness(body, e);
+    if (r <= 0.0) continue;
+    const auto [i, j] = constraints.ends[e];
+    const double w = 2.0 * r * std::max(1.0, geometric_share((x[i] - x[j]).norm(), constraints.rest_length_m[e]));
     row[i] += w;
     row[j] += w;
   }
@@ -373,7 +365,7 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
   double fastest = -1.0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const Body& body = bodies[b];
-    const ModeBounds bounds = mode_bounds(body, x.subspan(body.first_vertex, body.vertex_count));
+    const ModeBounds bounds = mode_bounds(body, Model::of(body, x));
     estimate.bodies.push_back(bounds);
     if (bounds.omega_max() > fastest) fastest = bounds.omega_max(), estimate.limiting_body = static_cast<int>(b);
     for (const IntegratorInfo& integrator : kIntegrators) {
