@@ -161,4 +161,42 @@ TEST(Cli, ProfileIsPrintedWhenTheRunDiverges) {
   EXPECT_NE(result.output.find("\n  guard "), std::string::npos) << result.output;
 }
 
+// An output path that is one of the run's inputs (the scene file, a mesh file, by inode: a hard link too) is
+// refused before anything is written, and the input is left as it was.
+TEST(Cli, OutputsThatAreTheRunsInputsAreRefused) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing_support::scratch_dir("cli_outputs_onto_inputs");
+  fs::copy_file(std::string(SOFTBODY_SOURCE_DIR) + "/tests/data/cube_quads.obj", dir / "cube.obj");
+  fs::copy_file(dir / "cube.obj", dir / "frame_0002.obj");  // what `export` names its frame 2
+  {
+    std::ofstream scene(dir / "s.json");
+    scene << R"({"duration": 0.1, "bodies": [ { "mesh": "cube.obj" } ]})";
+  }
+  fs::create_hard_link(dir / "s.json", dir / "link.json");
+  const std::string scene_text = file_bytes((dir / "s.json").string());
+  const std::string mesh_text = file_bytes((dir / "cube.obj").string());
+  const std::string scene = (dir / "s.json").string();
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"simulate " + scene + " --csv " + scene, "--csv " + scene + ": is the scene file (" + scene + ")"},
+      {"simulate " + scene + " --csv " + (dir / "link.json").string(), ": is the scene file"},
+      {"simulate " + scene + " --csv " + (dir / "cube.obj").string(), ": is the mesh file of bodies.0"},
+      {"export " + scene + " -o " + dir.string() + " --set bodies.0.mesh=frame_0002.obj",
+       "-o " + (dir / "frame_0002.obj").string() + ": is the mesh file of bodies.0"},
+  };
+  for (const auto& c : cases) {
+    const auto result = run_softbody(c.arguments);
+    EXPECT_EQ(result.exit_status, 2) << c.arguments << ": " << result.output;
+    const std::size_t error = result.output.find("error: ");  // after the mesh's notes (its quads triangulated)
+    ASSERT_NE(error, std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find('\n', error), result.output.size() - 1) << result.output;
+    EXPECT_NE(result.output.find(c.message, error), std::string::npos) << result.output;
+  }
+  EXPECT_EQ(file_bytes(scene), scene_text);
+  EXPECT_EQ(file_bytes((dir / "cube.obj").string()), mesh_text);
+  EXPECT_EQ(file_bytes((dir / "frame_0002.obj").string()), mesh_text);
+  EXPECT_FALSE(fs::exists(dir / "frame_0000.obj"));
+}
+
 }  // namespace

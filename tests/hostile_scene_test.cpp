@@ -1,16 +1,19 @@
 // Hostile and careless scene files and --set values (tests/data/hostile/*.json): nesting that overflowed the
 // stack, numbers that overflowed the frame count, the frame clock or the stability scan, names and patterns
-// that wrote outside the output folder. Each is refused before any work: exit 2, one line naming the file,
-// the key and the limit, and no output written.
+// that wrote outside the output folder, keys given twice, control characters and lengths in names, derived
+// quantities that overflow, and scenes whose bodies together exceed the memory. Each is refused before any work: exit
+// 2, one line naming the file, the key and the limit, and no output written.
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
 #include "frames/frame_clock.hpp"
+#include "mesh/generators.hpp"
 #include "scene/json_text.hpp"
 #include "scene/overrides.hpp"
 #include "scene/scene_json.hpp"
+#include "setup/scene_totals.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -72,7 +75,51 @@ INSTANTIATE_TEST_SUITE_P(
         HostileScene{"scenes/bounce.json --set bodies.0.mass=1e400",
                      "bodies.0.mass: expected a number > 0, got string \"1e400\""},
         HostileScene{"scenes/bounce.json --set bodies.0.scale=1e-7",
-                     "bodies.0.scale: expected a finite number in [1e-6, 1e6]"}),
+                     "bodies.0.scale: expected a finite number in [1e-6, 1e6]"},
+        // A key given twice: in a file, and in a --set value.
+        HostileScene{HOSTILE "duplicate_key.json",
+                     HOSTILE "duplicate_key.json: bodies.0.mass: expected each key once in an object, got it twice: "
+                             "number 1.0, then number 1000000000.0"},
+        HostileScene{"scenes/bounce.json --set 'floor={\"height\": 0, \"height\": 1}'",
+                     "--set floor={\"height\": 0, \"height\": 1}: height: expected each key once in an object, got it "
+                     "twice: number 0, then number 1"},
+        // Control characters and lengths in what names files.
+        HostileScene{"scenes/bounce.json --set 'bodies.0.mesh=\"cube.obj\\u0000junk\"'",
+                     "bodies.0.mesh: expected a name without control characters (NUL, line breaks, ...): it names a "
+                     "file, got string \"cube.obj\\u0000junk\""},
+        HostileScene{HOSTILE "name_nul.json",
+                     HOSTILE "name_nul.json: name: expected a name without control characters"},
+        HostileScene{HOSTILE "output_dir_newline.json", "output.dir: expected a name without control characters"},
+        HostileScene{"scenes/bounce.json --set 'output.pattern=\"frame_%04d\\n.png\"'",
+                     "output.pattern: expected a name without control characters"},
+        HostileScene{HOSTILE "name_300_bytes.json",
+                     HOSTILE "name_300_bytes.json: name: expected at most 255 bytes (what a file name may hold), got "
+                             "string \"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa... (300 bytes)"},
+        HostileScene{
+            "scenes/bounce.json --set output.dir=out/$(printf 'a%.0s' $(seq 256))/b",
+            "output.dir: expected each part between slashes at most 255 bytes (what a file name may hold), got "
+            "one of 256 bytes"},
+        // Numbers within their ranges whose derived quantities overflow: refused before any step.
+        HostileScene{HOSTILE "mass_subnormal.json",
+                     "bodies.0.mass: expected a finite number > 0 and 0 or at least 2.2e-308 in magnitude (not "
+                     "subnormal)"},
+        HostileScene{"scenes/bounce.json --set bodies.0.mass=1e-320", "bodies.0.mass: expected a finite number > 0"},
+        HostileScene{HOSTILE "mass_1e-300.json", HOSTILE
+                     "mass_1e-300.json: bodies.0.stiffness: k/m = 5.02e+304 1/s² (k = 1e+03 N/m, the lightest "
+                     "vertex 1.99e-302 kg), beyond the limit of 1e200 1/s²: expected a smaller bodies.0.stiffness "
+                     "or a larger bodies.0.mass"},
+        HostileScene{HOSTILE "frequency_1e300.json",
+                     HOSTILE "frequency_1e300.json: bodies.0.stiffness.frequency: the springs' k = inf N/m, not "
+                             "finite"},
+        HostileScene{HOSTILE "smooth_time_constant_1e-300.json",
+                     HOSTILE "smooth_time_constant_1e-300.json: floor.time_constant: the smooth contact's ω² = 1/τ² = "
+                             "inf 1/s², beyond the limit of 1e200 1/s²"},
+        // Many bodies that each fit the per-file limits: the scene's totals.
+        HostileScene{HOSTILE "many_icospheres.json",
+                     HOSTILE "many_icospheres.json: limits.max_total_vertices: the scene's bodies hold 49152600 "
+                             "vertices (meshes and simulation proxies), more than the limit of"},
+        HostileScene{"scenes/bounce.json --set limits.max_total_triangles=100",
+                     "limits.max_total_triangles: the scene's bodies hold 1280 triangles"}),
     [](const auto& test) {
       std::string name = std::to_string(test.index) + "_" + test.param.arguments;
       if (name.rfind("tests/data/hostile/") != std::string::npos) name.erase(name.find("tests/data/hostile/"), 19);
@@ -127,6 +174,44 @@ TEST(HostileScene, SetValuesThatAreNotUtf8GetTheKeysMessage) {
   scene::apply_override(document, "name=caf\xff");  // a valid value whose bytes are not UTF-8: dumped, replaced
   scene::apply_override(document, "floor.contact=paper");
   EXPECT_NO_THROW(scene::scene_from_json(document, "s.json"));
+}
+
+// A 10 MB name or --set value is echoed in a message cut to about 100 bytes, with its length.
+TEST(HostileScene, LongValuesAreCutInMessages) {
+  const std::string long_key(100000, 'k');  // an argument may hold at most 128 KiB
+  const auto result = run_softbody("simulate scenes/bounce.json --set bodies.0." + long_key +
+                                   "=1 --csv build/hostile_long_should_not_exist.csv");
+  EXPECT_EQ(result.exit_status, 2) << result.output.substr(0, 400);
+  EXPECT_LT(result.output.size(), 400u) << result.output.substr(0, 400);
+  EXPECT_NE(result.output.find("... (100009 bytes): unknown key"), std::string::npos) << result.output.substr(0, 400);
+  EXPECT_EQ(scene::message_text("a\nb\x01"), "a\\nb\\x01");
+  EXPECT_EQ(scene::message_text(std::string(20, 'x'), 10), "xxxxxxx... (20 bytes)");
+  EXPECT_EQ(scene::describe_json(nlohmann::json(std::string(10 << 20, 'a'))),
+            "string \"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa... (10485760 bytes)");
+}
+
+// The scene's totals count a generator's size without building it.
+TEST(HostileScene, GeneratorSizesMatchTheGenerators) {
+  for (const char* spec : {"icosphere:0", "icosphere:3", "cube:1", "cube:7", "torus:12,5", "capsule:4", "capsule:13"}) {
+    const mesh::TriMesh built = mesh::generate(spec);
+    const setup::MeshSize size = setup::generator_size(spec);
+    EXPECT_EQ(size.vertices, static_cast<long long>(built.vertices.size())) << spec;
+    EXPECT_EQ(size.triangles, static_cast<long long>(built.triangles.size())) << spec;
+  }
+  EXPECT_EQ(setup::generator_size("icosphere:7").vertices, 163842);
+}
+
+// A duplicate key is refused wherever it is, and the parse error names where.
+TEST(HostileScene, DuplicateKeysAreRefusedAtAnyDepth) {
+  EXPECT_NO_THROW(scene::parse_json_limited(R"({"a": {"b": 1}, "c": [{"b": 2}, {"b": 3}]})", "t", false));
+  try {
+    scene::parse_json_limited(R"({"a": [{"b": {"x": 1}}, {"b": [1], "b": {"y": 2}}]})", "t", false);
+    FAIL() << "accepted";
+  } catch (const softbody::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "t: a.1.b: expected each key once in an object, got it twice: an array, then an "
+              "object");
+  }
 }
 
 TEST(HostileScene, DepthLimitLeavesRoomForRealScenes) {

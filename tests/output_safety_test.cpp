@@ -205,4 +205,21 @@ TEST(OutputSafety, SigintDuringPointCacheExportWritesTheCompleteFrames) {
   EXPECT_FALSE(fs::exists(stale));
 }
 
+// A finished output (a video's temporary) put in place of a device is written through it, never replacing it.
+TEST(OutputSafety, MoveIntoPlaceWritesThroughADevice) {
+  const fs::path dir = scratch_dir("move_into_place");
+  const fs::path temporary = dir / ".v.mp4.tmp1";
+  std::ofstream(temporary) << "video bytes";
+  output::move_into_place(temporary, "/dev/null");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_FALSE(fs::exists(temporary));
+  std::ofstream(temporary) << "video bytes";
+  output::move_into_place(temporary, dir / "v.mp4");  // a regular file: renamed into place
+  EXPECT_EQ(read_text(dir / "v.mp4"), "video bytes");
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_TRUE(output::is_written_through("/dev/null"));
+  EXPECT_FALSE(output::is_written_through(dir / "v.mp4"));
+  EXPECT_FALSE(output::is_written_through(dir / "nothing.mp4"));
+}
+
 }  // namespace

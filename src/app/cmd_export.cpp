@@ -48,6 +48,12 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   const std::filesystem::path dir =
       options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::PointCacheExporter exporter(dir, format);
+  const std::vector<output::InputFile> inputs = scene_inputs(run.scene);
+  // The files written at the end, one pair per body: none may be an input.
+  for (int body = 0; body < static_cast<int>(run.world.model.bodies.size()); ++body) {
+    output::refuse_output_onto_inputs(exporter.mesh_path(body), inputs, "-o");
+    output::refuse_output_onto_inputs(exporter.cache_path(body), inputs, "-o");
+  }
   output::remove_stale_temporaries(dir);  // a killed run's half-written cache
   std::vector<frames::FrameSink*> sinks = {&exporter};
   const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
@@ -72,6 +78,9 @@ int run_export(const ExportOptions& options) {
   const std::filesystem::path dir =
       options.dir.empty() ? run.scene.output.dir / "meshes" : std::filesystem::path(options.dir);
   output::MeshExporter exporter(dir, mesh_format);
+  output::refuse_numbered_outputs_onto_inputs(
+      dir, run.clock.frame_count, [&](int i) { return exporter.frame_path(i).filename(); }, scene_inputs(run.scene),
+      "-o");
   output::remove_stale_temporaries(dir);
   if (!options.resume && planned.plan().frames.everything()) {
     // A whole new run: an earlier run's meshes go first, so that a run that fails leaves no mix of the two.

@@ -136,6 +136,12 @@ int run_render(const RenderOptions& options) {
   scene::Scene& scene = run.scene;
   if (!options.output_dir.empty()) scene.output.dir = options.output_dir;
   scene::check_frame_pattern(scene.output.pattern, scene.source.string());
+  const std::vector<output::InputFile> inputs = scene_inputs(scene);  // no output may replace one
+  if (!options.video_file.empty()) output::refuse_output_onto_inputs(options.video_file, inputs, "--video");
+  output::refuse_output_onto_inputs(scene.output.dir / "figure.png", inputs, "-o");
+  output::refuse_numbered_outputs_onto_inputs(
+      scene.output.dir, run.clock.frame_count,
+      [&](int i) { return std::filesystem::path(output::frame_file_name(scene.output.pattern, i)); }, inputs, "-o");
 
   const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);

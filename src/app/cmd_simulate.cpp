@@ -42,7 +42,10 @@ int run_simulate(const SimulateOptions& options) {
   const bool to_stdout = csv == "-";
   if (to_stdout && options.resume)
     throw softbody::InputError("--resume keeps a journal beside the CSV: use it with a --csv FILE, not -");
-  if (!to_stdout) output::remove_stale_temporaries(csv.parent_path().empty() ? "." : csv.parent_path());
+  if (!to_stdout) {
+    output::refuse_output_onto_inputs(csv, scene_inputs(run.scene), "--csv");
+    output::remove_stale_temporaries(csv.parent_path().empty() ? "." : csv.parent_path());
+  }
   // --resume: the rows go to a journal as they are made, and every frame's state beside it.
   std::unique_ptr<ResumableRun> resumable;
   std::unique_ptr<output::CsvSink> csv_sink;

@@ -7,6 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "output/input_guard.hpp"
+#include "scene/scene.hpp"
+
 namespace app {
 
 // Options every scene command takes: the scene file and --set overrides.
@@ -17,6 +20,10 @@ struct SceneOptions {
 
 // Adds SCENE and --set PATH=VALUE (repeatable) to a subcommand.
 void add_scene_options(CLI::App& command, SceneOptions& options);
+
+// The files a run of `scene` reads (the scene file, each body's mesh file), which no output may replace
+// (output/input_guard.hpp).
+std::vector<output::InputFile> scene_inputs(const scene::Scene& scene);
 
 // Adds --profile to a subcommand (simulate, render, export).
 void add_profile_option(CLI::App& command, bool& profile);

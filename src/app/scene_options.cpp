@@ -16,6 +16,15 @@ void add_scene_options(CLI::App& command, SceneOptions& options) {
       ->allow_extra_args(false);
 }
 
+std::vector<output::InputFile> scene_inputs(const scene::Scene& scene) {
+  std::vector<output::InputFile> inputs{{scene.source, "the scene file"}};
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    if (!scene.bodies[b].mesh_file.empty())
+      inputs.push_back({scene.bodies[b].mesh_file, "the mesh file of bodies." + std::to_string(b)});
+  }
+  return inputs;
+}
+
 void add_profile_option(CLI::App& command, bool& profile) {
   command.add_flag("--profile", profile,
                    "At the end, print to standard error the time of each phase (setup, step, forces, gas, constraint "

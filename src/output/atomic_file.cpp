@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 namespace output {
 
@@ -81,11 +82,40 @@ void write_through(const std::filesystem::path& path, std::string_view bytes) {
 
 }  // namespace
 
+bool is_written_through(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  return type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::regular &&
+         type != std::filesystem::file_type::directory && type != std::filesystem::file_type::none;
+}
+
+void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!is_written_through(path)) {
+    std::filesystem::rename(temporary, path, ec);
+    if (!ec) return;
+    std::filesystem::remove(temporary);
+    throw std::runtime_error(path.string() + ": cannot rename into place (" + ec.message() + ")");
+  }
+  std::ifstream in(temporary, std::ios::binary);
+  std::FILE* out = std::fopen(path.c_str(), "wb");
+  bool written = in && out != nullptr;
+  const int open_errno = errno;
+  std::vector<char> chunk(1 << 20);
+  while (written && in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const auto count = static_cast<std::size_t>(in.gcount());
+    written = std::fwrite(chunk.data(), 1, count, out) == count;
+  }
+  const bool closed = out != nullptr && std::fclose(out) == 0;
+  const int write_errno = out == nullptr ? open_errno : errno;
+  std::filesystem::remove(temporary, ec);
+  if (!written || !closed)
+    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(write_errno) + ")");
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  std::error_code status_ec;
-  const auto type = std::filesystem::status(path, status_ec).type();
-  if (path == "-" || (type != std::filesystem::file_type::not_found && type != std::filesystem::file_type::regular &&
-                      type != std::filesystem::file_type::directory && type != std::filesystem::file_type::none)) {
+  if (path == "-" || is_written_through(path)) {
     write_through(path, bytes);
     return;
   }
@@ -101,12 +131,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
       throw std::runtime_error(path.string() + ": write failed (disk full?)");
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary);
-    throw std::runtime_error(path.string() + ": cannot rename into place (" + ec.message() + ")");
-  }
+  move_into_place(temporary, path);
 }
 
 }  // namespace output

@@ -12,6 +12,15 @@ namespace output {
 // regular file (/dev/null, a FIFO, a terminal) is written through, never replaced; "-" is standard output.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+// Whether `path` exists and is not a regular file or a folder (a device, a FIFO): outputs write through it.
+bool is_written_through(const std::filesystem::path& path);
+
+// Puts the finished `temporary` in place of `path`: renamed onto it (from the same folder), or, when `path` is
+// written through (is_written_through), its bytes copied into it and the temporary removed, so that a device
+// is never replaced by a regular file. Throws std::runtime_error naming `path` on failure (the temporary is
+// then removed).
+void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
 // Removes the files `name_of(0)` .. `name_of(last)` in `dir` that exist (the frames of an earlier run, before
 // a new run writes its own: a run that then fails leaves no mix of two runs), stopping early after 1000
 // indices in a row with no file. Returns how many it removed.

@@ -53,6 +53,8 @@ VideoPipe::VideoPipe(std::filesystem::path path, int width_px, int height_px, in
     : path_(std::move(path)), width_(width_px), height_(height_px) {
   if (!path_.parent_path().empty()) std::filesystem::create_directories(path_.parent_path());
   temporary_ = temporary_path_for(path_);
+  // A device or FIFO is written through at the end (move_into_place); its folder (/dev) may not be writable.
+  if (is_written_through(path_)) temporary_ = std::filesystem::temp_directory_path() / temporary_.filename();
   log_ = temporary_;
   log_ += ".log";
   std::signal(SIGPIPE, SIG_IGN);
@@ -114,9 +116,13 @@ void VideoPipe::finish() {
   ::close(std::exchange(input_fd_, -1));  // end of input: ffmpeg flushes the encoder and writes the index
   const int status = wait_for_ffmpeg();
   if (status != 0) fail("ffmpeg exited with status " + std::to_string(status));
+  // A device or FIFO (an existing non-regular file) is written through, never replaced.
+  try {
+    move_into_place(temporary_, path_);
+  } catch (const std::runtime_error& e) {
+    fail(std::string("cannot put the video in place: ") + e.what());
+  }
   std::error_code ec;
-  std::filesystem::rename(temporary_, path_, ec);
-  if (ec) fail("cannot rename the video into place (" + ec.message() + ")");
   std::filesystem::remove(log_, ec);
   finished_ = true;
 }

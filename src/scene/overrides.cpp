@@ -12,7 +12,7 @@ namespace {
 using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& assignment, const std::string& what) {
-  throw softbody::InputError("--set " + assignment + ": " + what);
+  throw softbody::InputError("--set " + message_text(assignment) + ": " + what);
 }
 
 std::vector<std::string> split_path(const std::string& path) {
@@ -32,7 +32,8 @@ bool is_index(const std::string& part) {
 
 json parse_value(const std::string& assignment, const std::string& text) {
   if (!json::accept(text)) return json(text);  // a bare word such as euler (or 1e400: refused as not a number)
-  return parse_json_limited(text, "--set " + assignment, /*comments=*/false);  // nesting limited
+  // Nesting limited, and a key given twice refused.
+  return parse_json_limited(text, "--set " + message_text(assignment), /*comments=*/false);
 }
 
 }  // namespace
@@ -46,19 +47,22 @@ void apply_override(json& document, const std::string& assignment) {
   json* node = &document;
   std::string walked;
   for (const std::string& part : parts) {
-    if (part.empty()) fail(assignment, "empty key in path '" + path + "'");
+    if (part.empty()) fail(assignment, "empty key in path '" + message_text(path) + "'");
     walked += (walked.empty() ? "" : ".") + part;
     if (node->is_array()) {
-      if (!is_index(part)) fail(assignment, walked + ": expected an array index, got '" + part + "'");
+      if (!is_index(part))
+        fail(assignment, message_text(walked) + ": expected an array index, got '" + message_text(part) + "'");
       // At most 9 digits before converting: no index that large can exist (and stoul could overflow).
       const std::size_t index = part.size() > 9 ? node->size() : std::stoul(part);
       if (index >= node->size()) {
-        fail(assignment, walked + ": index out of range (the array has " + std::to_string(node->size()) + " elements)");
+        fail(assignment, message_text(walked) + ": index out of range (the array has " + std::to_string(node->size()) +
+                             " elements)");
       }
       node = &(*node)[index];
     } else {
       if (node->is_null()) *node = json::object();
-      if (!node->is_object()) fail(assignment, walked + ": cannot set a key inside a " + node->type_name());
+      if (!node->is_object())
+        fail(assignment, message_text(walked) + ": cannot set a key inside a " + node->type_name());
       node = &(*node)[part];
     }
   }

@@ -77,6 +77,13 @@ struct Output {
   std::string pattern = "frame_%04d.png";
 };
 
+// "limits" of the whole scene: vertices and triangles summed over every body's mesh and simulation proxy
+// (setup/scene_totals.hpp), so that many bodies cannot together exhaust the memory.
+struct SceneTotals {
+  long long max_vertices = 4'000'000;
+  long long max_triangles = 8'000'000;
+};
+
 struct Scene {
   std::filesystem::path source;  // the scene file ("" when built in code)
   // The validated document with --set applied, less the keys that do not change the simulation (name,
@@ -92,6 +99,7 @@ struct Scene {
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
   std::optional<sim::Floor> floor;  // no floor when absent
   mesh::MeshLimits limits;          // "limits": the most a mesh file may hold (raisable)
+  SceneTotals totals;               // "limits": the most the whole scene may hold (raisable)
   std::vector<Body> bodies;
   sim::BodyContact collisions;  // between bodies, when there are several
   RenderSettings render;

@@ -46,7 +46,7 @@ class ObjectReader {
   }
 
   [[noreturn]] void fail(const std::string& path, const std::string& expected, const json* got) const {
-    std::string message = file_.string() + ": " + (path.empty() ? "(top level)" : path) + ": " + expected;
+    std::string message = file_.string() + ": " + (path.empty() ? "(top level)" : message_text(path)) + ": " + expected;
     if (got != nullptr) message += ", got " + describe(*got);
     throw softbody::InputError(message);
   }
@@ -75,6 +75,10 @@ class ObjectReader {
     if (!value.is_number()) fail(path, "expected a number" + words, &value);
     const double x = value.get<double>();
     if (!std::isfinite(x) || !in_range(form, x)) fail(path, "expected a finite number" + words, &value);
+    // A subnormal number (below 2.2e-308) has lost precision, and quantities derived from it overflow (1/x).
+    if (x != 0.0 && !std::isnormal(x))
+      fail(path, "expected a finite number" + words + " and 0 or at least 2.2e-308 in magnitude (not subnormal)",
+           &value);
     return x;
   }
 
@@ -106,7 +110,39 @@ class ObjectReader {
     if (!at(key).is_string() || at(key).get<std::string>().empty()) {
       fail(child(key), "expected a non-empty string", &at(key));
     }
+    check_text(key);
     return at(key).get<std::string>();
+  }
+
+  // A string within the key's length, and one that names a file without control characters or parts longer
+  // than a file name.
+  void check_text(const std::string& key) const {
+    const Key& k = spec(key);
+    const std::string& text = at(key).get_ref<const std::string&>();
+    if (k.max_bytes != 0 && text.size() > k.max_bytes) {
+      const std::string why = !k.names_file                      ? ""
+                              : k.max_bytes == kMaxFileNameBytes ? " (what a file name may hold)"
+                                                                 : " (what a path may hold)";
+      fail(child(key), "expected at most " + std::to_string(k.max_bytes) + " bytes" + why, &at(key));
+    }
+    if (!k.names_file) return;
+    const auto control = std::find_if(text.begin(), text.end(), [](char c) {
+      return static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) == 0x7f;
+    });
+    if (control != text.end()) {
+      fail(child(key), "expected a name without control characters (NUL, line breaks, ...): it names a file", &at(key));
+    }
+    std::size_t part_start = 0;
+    for (std::size_t slash = 0; slash != std::string::npos; part_start = slash + 1) {
+      slash = text.find('/', part_start);
+      const std::size_t part = (slash == std::string::npos ? text.size() : slash) - part_start;
+      if (part > kMaxFileNameBytes) {
+        fail(child(key),
+             "expected each part between slashes at most " + std::to_string(kMaxFileNameBytes) +
+                 " bytes (what a file name may hold), got one of " + std::to_string(part) + " bytes",
+             &at(key));
+      }
+    }
   }
 
   // The value of `options` named by the key's string (or its default); the names must be the table's choices, in
@@ -482,16 +518,21 @@ Light read_light(const ObjectReader& top) {
   return light;
 }
 
-// "limits": what a mesh file may hold, raised for large meshes (mesh/mesh_limits.hpp).
-mesh::MeshLimits read_limits(const ObjectReader& top) {
-  mesh::MeshLimits limits;
-  if (!top.has("limits")) return limits;
+// "limits": what a mesh file (mesh/mesh_limits.hpp) and the whole scene (setup/scene_totals.hpp) may hold,
+// raised for large meshes and many bodies.
+void read_limits(const ObjectReader& top, Scene& s) {
+  s.totals.max_vertices =
+      top.spec("limits").form(FormKind::Object).object->key("max_total_vertices").default_value.get<long long>();
+  s.totals.max_triangles =
+      top.spec("limits").form(FormKind::Object).object->key("max_total_triangles").default_value.get<long long>();
+  if (!top.has("limits")) return;
   const ObjectReader r = top.object("limits");
-  limits.max_triangles = r.integer("max_triangles");
-  limits.max_vertices = r.integer("max_vertices");
-  limits.max_file_bytes = static_cast<std::uintmax_t>(r.integer("max_file_mb")) << 20;
+  s.limits.max_triangles = r.integer("max_triangles");
+  s.limits.max_vertices = r.integer("max_vertices");
+  s.limits.max_file_bytes = static_cast<std::uintmax_t>(r.integer("max_file_mb")) << 20;
+  s.totals.max_vertices = r.integer("max_total_vertices");
+  s.totals.max_triangles = r.integer("max_total_triangles");
   r.reject_unknown();
-  return limits;
 }
 
 Output read_output(const ObjectReader& top, const std::string& name) {
@@ -530,7 +571,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.solver = read_solver(top);
   s.gravity_m_per_s2 = top.vec3("gravity");
   s.floor = read_floor(top);
-  s.limits = read_limits(top);
+  read_limits(top, s);
   s.bodies = read_bodies(top);
   s.collisions = read_collisions(top);
   s.render = read_render(top);

@@ -87,6 +87,17 @@ Key required(Key k) {
   return k;
 }
 
+// No control character (U+0000 to U+001F, U+007F), as a JSON Schema pattern (ECMA 262).
+const char* const kNoControlCharacters = "^[^\\u0000-\\u001f\\u007f]+$";
+
+// A string that becomes a file name (at most kMaxFileNameBytes) or a path (at most kMaxPathBytes).
+Key names_file(Key k, std::size_t max_bytes) {
+  k.names_file = true;
+  k.max_bytes = max_bytes;
+  if (k.pattern.empty()) k.pattern = kNoControlCharacters;
+  return k;
+}
+
 std::vector<std::string> integrator_names() {
   std::vector<std::string> names;
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) names.emplace_back(integrator.name);
@@ -131,10 +142,12 @@ struct Table {
     top.path = "(top level)";
     top.description = "A scene file: JSON with // and /* */ comments. Only \"bodies\" is required.";
     Key name = key_without_default("name", {of_kind(FormKind::String)}, "",
-                                   "The scene's name: names the output folder out/NAME.",
+                                   "The scene's name: names the output folder out/NAME (at most 255 bytes, no "
+                                   "slash or control character).",
                                    "the scene file's name without its extension");
-    name.pattern = "^[^/\\\\]+$";
+    name.pattern = "^[^/\\\\\\u0000-\\u001f\\u007f]+$";
     name.refused = {".", ".."};
+    name = names_file(name, kMaxFileNameBytes);
     top.keys = {
         key_without_default("$schema", {of_kind(FormKind::String)}, "",
                             "The JSON Schema the file follows (for editors); the program ignores it."),
@@ -145,7 +158,8 @@ struct Table {
         key("gravity", {vec3()}, "m/s²", "Acceleration of gravity.", json::array({0.0, -9.81, 0.0})),
         key_without_default("floor", {of_kind(FormKind::Null), object(floor)}, "",
                             "The ground plane y = height; null or left out: no floor.", "no floor"),
-        key_without_default("limits", {object(limits)}, "", "The most a mesh file may hold (raisable)."),
+        key_without_default("limits", {object(limits)}, "",
+                            "The most a mesh file and the whole scene may hold (raisable)."),
         required(key_without_default("bodies", {object_list(body)}, "", "The soft bodies, at least one.")),
         key_without_default("collisions", {object(collisions)}, "", "Contact between bodies, when there are several."),
         key_without_default("render", {object(render)}, "", "The pictures `softbody render` makes."),
@@ -199,13 +213,21 @@ struct Table {
 
   void fill_limits() {
     limits.path = "limits";
-    limits.description = "The most a mesh file may hold before it is read; raise them for large meshes.";
+    limits.description =
+        "The most a mesh file, and the whole scene, may hold before they are read; raise them for large meshes and "
+        "many bodies.";
     constexpr long long kMost = 2'000'000'000;
     limits.keys = {
         key("max_triangles", {integer(1, kMost)}, "", "Triangles (and faces a header announces) per mesh file.",
             2'000'000),
         key("max_vertices", {integer(1, kMost)}, "", "Vertices per mesh file, as written (before welding).", 2'000'000),
         key("max_file_mb", {integer(1, 1 << 20)}, "MiB", "Size of a mesh file; larger ones are not read.", 256),
+        key("max_total_vertices", {integer(1, kMost)}, "",
+            "Vertices of the whole scene: every body's mesh and simulation proxy, summed. Each takes about 0.3 kB "
+            "of memory with the explicit integrators and 3.5 kB with implicit (4,000,000: about 14 GB).",
+            4'000'000),
+        key("max_total_triangles", {integer(1, kMost)}, "", "Triangles of the whole scene, summed as the vertices.",
+            8'000'000),
     };
   }
 
@@ -213,10 +235,11 @@ struct Table {
     body.path = "bodies[]";
     body.description = "One soft body: a closed triangle mesh of springs (its edges) around a gas.";
     body.keys = {
-        key("mesh", {of_kind(FormKind::String)}, "",
-            "A generator (\"icosphere:L\", \"cube:N\", \"torus:M,N\", \"capsule:N\") or a mesh file path relative to "
-            "the scene file.",
-            "icosphere:3"),
+        names_file(key("mesh", {of_kind(FormKind::String)}, "",
+                       "A generator (\"icosphere:L\", \"cube:N\", \"torus:M,N\", \"capsule:N\") or a mesh file path "
+                       "relative to the scene file (at most 4095 bytes, no control character).",
+                       "icosphere:3"),
+                   kMaxPathBytes),
         key("position", {vec3()}, "m", "Where the mesh's origin is placed.", json::array({0.0, 0.0, 0.0})),
         key("scale", {number(at_least(1e-6), at_most(1e6))}, "", "Uniform scale applied to the mesh before placing it.",
             1.0),
@@ -354,10 +377,14 @@ struct Table {
     output.path = "output";
     output.description = "Where outputs are written.";
     output.keys = {
-        key_without_default("dir", {of_kind(FormKind::String)}, "", "The output folder.", "out/NAME"),
-        key("pattern", {of_kind(FormKind::String)}, "",
-            "File name of the frames: ends in .png and holds one frame number conversion (%d, %04d, ...).",
-            "frame_%04d.png"),
+        names_file(key_without_default("dir", {of_kind(FormKind::String)}, "",
+                                       "The output folder (at most 4095 bytes, no control character).", "out/NAME"),
+                   kMaxPathBytes),
+        names_file(key("pattern", {of_kind(FormKind::String)}, "",
+                       "File name of the frames: ends in .png and holds one frame number conversion (%d, %04d, "
+                       "...); at most 255 bytes, no control character.",
+                       "frame_%04d.png"),
+                   kMaxFileNameBytes),
     };
   }
 };

@@ -44,6 +44,11 @@ struct Form {
   const ObjectKeys* object = nullptr;
 };
 
+// What a file name and a path may be: a file system's limits (NAME_MAX, PATH_MAX less its NUL). Names and paths
+// hold no control character either (a NUL would cut the name short, a line break would split a message).
+inline constexpr std::size_t kMaxFileNameBytes = 255;
+inline constexpr std::size_t kMaxPathBytes = 4095;
+
 // One key of an object.
 struct Key {
   std::string name;
@@ -55,6 +60,9 @@ struct Key {
   bool required = false;
   std::string pattern;  // String: a regular expression (ECMA 262) the value matches (the schema's "pattern")
   std::vector<std::string> refused;  // String: values refused although they match
+  std::size_t max_bytes = 0;         // String: the most bytes of UTF-8 (0: no bound); the schema's maxLength
+  bool names_file = false;           // String: becomes a file or folder name: no control characters, and each
+                                     // /-separated part at most kMaxFileNameBytes
 
   const Form& form(FormKind kind) const;  // throws std::logic_error when the key has no such form
   bool accepts(FormKind kind) const;

@@ -36,6 +36,8 @@ ordered_json integer_schema(const Form& form) {
 
 ordered_json string_schema(const Key& key) {
   ordered_json schema{{"type", "string"}, {"minLength", 1}};
+  // maxLength counts characters, the parser bytes: the schema's bound is the necessary one.
+  if (key.max_bytes != 0) schema["maxLength"] = key.max_bytes;
   if (!key.pattern.empty()) schema["pattern"] = key.pattern;
   if (!key.refused.empty()) schema["not"] = {{"enum", key.refused}};
   return schema;

@@ -1,6 +1,7 @@
 // Building the world of a scene.
 #include "setup/build_world.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/errors.hpp"
@@ -9,6 +10,8 @@
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
 #include "setup/bind_skin.hpp"
+#include "setup/derived_quantities.hpp"
+#include "setup/scene_totals.hpp"
 #include "setup/simulation_proxy.hpp"
 #include "sim/forces/bending.hpp"
 #include "sim/model/intent.hpp"
@@ -98,12 +101,19 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, scene.solver);
   model.body_contact = scene.collisions;
   sim::State state = sim::initial_state(model);
+  SceneTotals totals(scene);
+  totals.check();  // generators' sizes and proxies' counts are known before any mesh is built
+  double heaviest_vertex_kg = 0.0;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
     const std::string key = "bodies." + std::to_string(b);
     mesh::LoadedMesh loaded = mesh::load_closed_mesh(spec.mesh, spec.mesh_file, key_path + ".mesh", scene.limits,
                                                      {spec.repair, geometry::repair_mesh}, after_phase);
+    MeshSize size{static_cast<long long>(loaded.mesh.vertices.size()),
+                  static_cast<long long>(loaded.mesh.triangles.size())};
+    totals.count(b, size);
+    totals.check();  // as each mesh file is read
     for (std::string& note : loaded.notes) {
       if (spec.split && note.find("separate closed parts") != std::string::npos) continue;  // split below
       notes.push_back(std::move(note));
@@ -112,7 +122,13 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
     for (const BodyPart& part : parts) {
       const bool proxied = wants_proxy(spec);
       const mesh::TriMesh proxy = proxied ? simulation_proxy(part.mesh, spec, key_path, notes) : mesh::TriMesh{};
-      if (proxied) phase_done("remeshing " + key + " into its simulation proxy");
+      if (proxied) {
+        size.vertices += static_cast<long long>(proxy.vertices.size());
+        size.triangles += static_cast<long long>(proxy.triangles.size());
+        totals.count(b, size);
+        totals.check();
+        phase_done("remeshing " + key + " into its simulation proxy");
+      }
       const mesh::TriMesh& simulated = proxied ? proxy : part.mesh;
       const std::vector<softbody::Vec3> x0 = place_mesh(simulated, spec);
       check_placed(x0, key_path);
@@ -120,6 +136,8 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
       raw.bending_N_per_m = spec.bending_N_per_m;
       body.params = sim::resolve_params(raw, spec.intent, body, x0, key_path, notes);
+      check_body_quantities(body, spec, scene.source.string(), key);
+      for (const double m : body.masses.kg) heaviest_vertex_kg = std::max(heaviest_vertex_kg, m);
       if (body.params.bending_N_per_m > 0.0) sim::add_bending_links(body, x0);  // none: no links, no cost
       phase_done("resolving the parameters of " + key);
       if (proxied) {
@@ -135,6 +153,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));
   }
+  check_contact_quantities(scene, heaviest_vertex_kg);
   return sim::World(std::move(model), std::move(state));
 }
 

@@ -23,6 +23,9 @@ HOSTILE_REFUSED_BY_SCHEMA = {
     "deep_file.json",  # not an object
     "deep_value.json",  # a mass that is an array
     "name_dotdot.json",  # name "..": refused
+    "name_300_bytes.json",  # beyond maxLength 255
+    "name_nul.json",  # a control character: the pattern refuses it
+    "output_dir_newline.json",  # the same
     "position_1e308.json",  # beyond +-1e6
     "scale_1e200.json",  # beyond 1e6
     "scale_1e-200.json",  # below 1e-6
