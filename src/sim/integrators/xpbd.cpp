@@ -11,17 +11,22 @@ namespace sim {
 namespace {
 
 // The set in the pass's order: the edges' colours, then the bending links' (each part coloured on its own), so
-// that a pass solves every edge before any link.
-std::vector<PassConstraint> pass_order(const DistanceConstraints& constraints, int vertex_count) {
+// that a pass solves every edge before any link; consecutive constraints with the same k and c form a segment.
+Pass pass_order(const DistanceConstraints& constraints, int vertex_count) {
   const std::span<const std::array<int, 2>> ends(constraints.ends);
-  std::vector<PassConstraint> pass;
-  pass.reserve(constraints.size());
+  Pass pass;
+  pass.constraints.reserve(constraints.size());
   const auto append = [&](const EdgeColouring& colouring, std::size_t offset) {
     for (const int e : colouring.edges) {
       const std::size_t index = offset + static_cast<std::size_t>(e);
-      const double k = constraints.stiffness_N_per_m[index];
-      pass.push_back({ends[index][0], ends[index][1], index, constraints.rest_length_m[index], k,
-                      constraints.damping_N_s_per_m[index], k == 0.0 ? 0.0 : 1.0 / k});
+      const double k = constraints.stiffness_N_per_m[index], c = constraints.damping_N_s_per_m[index];
+      if (pass.segments.empty() || pass.segments.back().stiffness_N_per_m != k ||
+          pass.segments.back().damping_N_s_per_m != c) {
+        const std::size_t at = pass.constraints.size();
+        pass.segments.push_back({at, at, k, c, k == 0.0 ? 0.0 : 1.0 / k});
+      }
+      pass.constraints.push_back({ends[index][0], ends[index][1], index, constraints.rest_length_m[index]});
+      pass.segments.back().end = pass.constraints.size();
     }
   };
   append(colour_edges(ends.first(constraints.edge_count), vertex_count), 0);
@@ -30,31 +35,34 @@ std::vector<PassConstraint> pass_order(const DistanceConstraints& constraints, i
 }
 
 // One pass over a body's distance constraints C = |x_i − x_j| − L0 in colour order (see xpbd.hpp for Δλ), each
-// with its k and c. x: the body's positions, previous: the same at the start of the substep, w: inverse masses
-// [1/kg], tension: the constraints' carried forces T [N], updated to this pass's. Carried (the prediction applied
-// T), the pass solves for the change: C − T/k; classical, for all of it.
-void solve_distances(std::span<const PassConstraint> pass, double h, bool carried, std::span<Vec3> x,
-                     std::span<const Vec3> previous, std::span<const double> w, std::span<double> tension) {
+// segment with its k and c. x: the body's positions, previous: the same at the start of the substep, w: inverse
+// masses [1/kg], tension: the constraints' carried forces T [N], updated to this pass's. Carried (the prediction
+// applied T), the pass solves for the change: C − T/k; classical, for all of it.
+void solve_distances(const Pass& pass, double h, bool carried, std::span<Vec3> x, std::span<const Vec3> previous,
+                     std::span<const double> w, std::span<double> tension) {
   const double inverse_h2 = 1.0 / (h * h);
-  for (const PassConstraint& constraint : pass) {
-    const std::size_t edge = constraint.index;
-    const double k = constraint.stiffness_N_per_m, c = constraint.damping_N_s_per_m;
+  for (const PassSegment& segment : pass.segments) {
+    const double k = segment.stiffness_N_per_m, c = segment.damping_N_s_per_m;
     if (k == 0.0 && c == 0.0) continue;
     const bool carries = carried && k != 0.0;  // a damper alone carries nothing (its force would count twice: xpbd.hpp)
     const double kh2 = k * h * h, ch = c * h;  // k h² [kg], c h [kg]: the constraint's stiffness and damping per step
-    const double inverse_k = constraint.inverse_stiffness;
-    const int i = constraint.i, j = constraint.j;
-    const Vec3 d = x[i] - x[j];
-    const double length = d.norm();
-    if (length == 0.0) continue;                                   // coincident ends: no direction, no correction
-    const Vec3 n = d / length;                                     // ∇_i C
-    const double carried_tension = carries ? tension[edge] : 0.0;  // T [N]
-    const double stretch = length - constraint.rest_length_m - carried_tension * inverse_k;  // C − T/k [m]
-    const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));              // ∇C·(x − x_prev) [m]
-    const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
-    x[i] += (w[i] * lambda) * n;
-    x[j] -= (w[j] * lambda) * n;
-    tension[edge] = carried_tension - lambda * inverse_h2;  // the constraint's force this substep [N]
+    const double inverse_k = segment.inverse_stiffness;
+    for (std::size_t s = segment.begin; s < segment.end; ++s) {
+      const PassConstraint& constraint = pass.constraints[s];
+      const std::size_t edge = constraint.index;
+      const int i = constraint.i, j = constraint.j;
+      const Vec3 d = x[i] - x[j];
+      const double length = d.norm();
+      if (length == 0.0) continue;                                   // coincident ends: no direction, no correction
+      const Vec3 n = d / length;                                     // ∇_i C
+      const double carried_tension = carries ? tension[edge] : 0.0;  // T [N]
+      const double stretch = length - constraint.rest_length_m - carried_tension * inverse_k;  // C − T/k [m]
+      const double approach = n.dot((x[i] - previous[i]) - (x[j] - previous[j]));  // ∇C·(x − x_prev) [m]
+      const double lambda = (-kh2 * stretch - ch * approach) / ((kh2 + ch) * (w[i] + w[j]) + 1.0);  // Δλ
+      x[i] += (w[i] * lambda) * n;
+      x[j] -= (w[j] * lambda) * n;
+      tension[edge] = carried_tension - lambda * inverse_h2;  // the constraint's force this substep [N]
+    }
   }
 }
 

@@ -37,10 +37,22 @@ namespace sim {
 // One distance constraint as xpbd's pass reads it: a copy of the body's set laid out in the pass's (colour) order,
 // so that the pass reads one record after another.
 struct PassConstraint {
-  int i = 0, j = 0;       // the body's local vertices
-  std::size_t index = 0;  // in the body's constraint set (and its carried tensions)
-  double rest_length_m = 0.0, stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
+  int i = 0, j = 0;            // the body's local vertices
+  std::size_t index = 0;       // in the body's constraint set (and its carried tensions)
+  double rest_length_m = 0.0;  // L0
+};
+
+// A run of the pass whose constraints share their k and c (the edges' run, then the bending links'), so that the
+// inner loop reads only ends and rest lengths.
+struct PassSegment {
+  std::size_t begin = 0, end = 0;  // [begin, end) in Pass::constraints
+  double stiffness_N_per_m = 0.0, damping_N_s_per_m = 0.0;
   double inverse_stiffness = 0.0;  // 1/k [m/N] (0 without a spring)
+};
+
+struct Pass {
+  std::vector<PassConstraint> constraints;
+  std::vector<PassSegment> segments;
 };
 
 class Xpbd final : public Integrator {
@@ -54,7 +66,7 @@ class Xpbd final : public Integrator {
   bool carried(std::size_t b, double h) const { return h <= carried_dt_[b]; }
 
   // Per body of the model: its constraints in colour order (the edges' colours, then the links'), on the first step.
-  std::vector<std::vector<PassConstraint>> passes_;
+  std::vector<Pass> passes_;
   std::vector<double> carried_dt_;          // per body: xpbd_carried_dt at the initial state, contacts included [s]
   std::vector<std::size_t> first_tension_;  // per body: its constraints' first entry in carry.edge_tension_N
   std::size_t tension_count_ = 0;           // every body's constraints
