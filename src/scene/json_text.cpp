@@ -1,12 +1,13 @@
 // Depth-limited JSON parsing that tracks the key path, so that every parse error names where it is.
 #include "scene/json_text.hpp"
 
-#include <cstdio>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/one_line.hpp"
 
 namespace scene {
 namespace {
@@ -135,19 +136,9 @@ std::string describe_json(const json& value) {
 }
 
 std::string message_text(const std::string& text, std::size_t most) {
-  std::string shown;
-  std::size_t read = 0;
-  for (; read < text.size() && shown.size() <= most; ++read) {
-    const auto byte = static_cast<unsigned char>(text[read]);
-    if (byte >= 0x20 && byte != 0x7f) {
-      shown += text[read];
-      continue;
-    }
-    char escaped[8];
-    std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-    shown += byte == '\n' ? "\\n" : escaped;
-  }
-  if (read == text.size() && shown.size() <= most) return shown;
+  // One more byte than fits: an escaped byte never shows shorter than itself, so the cut is decided by these.
+  const std::string shown = softbody::one_line(std::string_view(text).substr(0, most + 1));
+  if (text.size() <= most && shown.size() <= most) return shown;
   return shown.substr(0, utf8_boundary(shown, most - 3)) + "... (" + std::to_string(text.size()) + " bytes)";
 }
 

@@ -21,8 +21,9 @@ nlohmann::json parse_json_limited(const std::string& text, const std::string& wh
 // printed at all (no recursion on hostile values).
 std::string describe_json(const nlohmann::json& value);
 
-// Text from the input (a key path, a --set assignment) as a message may echo it: control characters escaped
-// (\x00, \n), and beyond `most` bytes cut with an ellipsis and the length ("aaaa... (10485760 bytes)").
+// Text from the input (a key path, a --set assignment) as a message may echo it: control characters escaped as
+// softbody::one_line does (\x00, \n), and beyond `most` bytes cut with an ellipsis and the length
+// ("aaaa... (10485760 bytes)").
 std::string message_text(const std::string& text, std::size_t most = 100);
 
 }  // namespace scene
