@@ -12,17 +12,6 @@
 #include "sim/step/step_plan.hpp"
 
 namespace app {
-namespace {
-
-// The command's force threads when the scene leaves solver.threads at 0 (`threads_when_auto`; 0: one per core):
-// set on the model, and the world's workspace built again for them.
-void use_threads_when_auto(sim::World& world, int threads_when_auto) {
-  if (world.model.solver.threads != 0 || threads_when_auto == 0) return;
-  world.model.solver.threads = threads_when_auto;
-  world = sim::World(std::move(world.model), std::move(world.state));
-}
-
-}  // namespace
 
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
@@ -30,8 +19,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   std::vector<int> bodies_per_scene_body;
   // SIGINT / SIGTERM during setup (a long mesh repair, remesh, ...) end it when that phase ends.
   const softbody::AfterPhase after_phase = frames::throw_if_stop_requested_after;
-  sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body, after_phase);
-  use_threads_when_auto(world, threads_when_auto);
+  sim::World world = setup::build_world(scene, notes, &bodies_per_scene_body, after_phase, threads_when_auto);
   // A split body is several bodies from here on: one scene body each, so that colours and patterns follow.
   std::vector<scene::Body> bodies;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)

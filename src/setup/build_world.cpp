@@ -94,11 +94,14 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
 }
 
 sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
-                       std::vector<int>* bodies_per_scene_body, const softbody::AfterPhase& after_phase) {
+                       std::vector<int>* bodies_per_scene_body, const softbody::AfterPhase& after_phase,
+                       int threads_when_auto) {
   const auto phase_done = [&](const std::string& phase) {
     if (after_phase) after_phase(phase);
   };
-  sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, scene.solver);
+  sim::Solver solver = scene.solver;  // the scene file's request, completed by the command's thread default
+  if (solver.threads == 0) solver.threads = threads_when_auto;
+  sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, solver);
   model.body_contact = scene.collisions;
   sim::State state = sim::initial_state(model);
   SceneTotals totals(scene);

@@ -22,7 +22,9 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
 // in every part); `bodies_per_scene_body`, when given, receives how many bodies each scene body became.
 // `after_phase` is called after each long phase of each body: reading, repairing and checking its mesh
 // (mesh::load_closed_mesh), remeshing its proxy, resolving its parameters (intent, bending links).
+// `threads_when_auto`: the model's force threads where the scene leaves solver.threads at 0 (0: one per core).
 sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
-                       std::vector<int>* bodies_per_scene_body = nullptr, const softbody::AfterPhase& after_phase = {});
+                       std::vector<int>* bodies_per_scene_body = nullptr, const softbody::AfterPhase& after_phase = {},
+                       int threads_when_auto = 0);
 
 }  // namespace setup
