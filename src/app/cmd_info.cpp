@@ -62,7 +62,8 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
   if (dt == 0.0) {
     std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
   } else if (dt == sim::StabilityEstimate::kUnlimited) {
-    const bool every_force_implicit = integrator == sim::IntegratorKind::Newton;
+    const bool every_force_implicit =
+        integrator == sim::IntegratorKind::Newton || integrator == sim::IntegratorKind::Vbd;
     std::printf("  %-10s  no limit (%s)\n", name,
                 every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
   } else {
@@ -81,7 +82,7 @@ constexpr double kXpbdSubstepNsPerVertex = 105.0;
 void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
                 std::size_t vertices) {
   const double dt = estimate.stable_dt(sim::IntegratorKind::Xpbd);
-  const int substeps = sim::auto_substeps(model, estimate, frame_interval_s);
+  const int substeps = sim::auto_substeps(sim::IntegratorKind::Xpbd, model, estimate, frame_interval_s);
   const double substeps_per_s = substeps / frame_interval_s;
   const double cost = substeps_per_s * static_cast<double>(vertices) * kXpbdSubstepNsPerVertex * 1e-9;
   char per_frame[32];

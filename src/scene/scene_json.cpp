@@ -240,6 +240,7 @@ sim::Solver read_solver(const ObjectReader& top) {
   } else {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
+  solver.iterations = r.integer("iterations");
   solver.retry = r.boolean("retry");
   solver.tolerance = r.number("tolerance");
   solver.threads = r.integer("threads");

@@ -182,9 +182,10 @@ struct Table {
             "\"auto\": from the stable-step estimate.",
             1e-4),
         key_without_default("substeps", {substeps, choice({"auto"})}, "",
-                            "xpbd: substeps per frame interval, so dt = (1/fps) / substeps. \"auto\": the fewest "
-                            "that keep xpbd's stated accuracy.",
+                            "xpbd and vbd: steps per frame interval, so dt = (1/fps) / substeps. \"auto\": xpbd, the "
+                            "fewest that keep its stated accuracy; vbd, the floor's contact travel limit.",
                             "none: dt decides"),
+        key("iterations", {integer(1, 10000)}, "", "vbd: Gauss-Seidel sweeps over the vertices per step.", 4),
         key("retry", {of_kind(FormKind::Boolean)}, "",
             "A step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024).", false),
         key("tolerance", {positive()}, "m",

@@ -57,7 +57,7 @@ double deviation_now(const sim::World& world, const std::vector<Vec3>& rest) {
 double auto_dt(const sim::World& world, double cap) {
   const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
   if (world.model.solver.integrator == sim::IntegratorKind::Xpbd)
-    return cap / sim::auto_substeps(world.model, estimate, cap);
+    return cap / sim::auto_substeps(world.model.solver.integrator, world.model, estimate, cap);
   return std::min(cap, sim::kAutoDtSafety * estimate.stable_dt(world.model.solver.integrator));
 }
 

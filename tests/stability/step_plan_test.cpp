@@ -45,7 +45,7 @@ TEST(StepPlan, XpbdAutoSubstepsComeFromTheEstimate) {
   const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json",
                                                [&](const std::string& phase) { phases += phase; });
   EXPECT_TRUE(plan.substeps_chosen);
-  EXPECT_EQ(plan.substeps, sim::auto_substeps(world.model, estimate, kFrame_s));
+  EXPECT_EQ(plan.substeps, sim::auto_substeps(world.model.solver.integrator, world.model, estimate, kFrame_s));
   EXPECT_EQ(world.model.solver.substeps, plan.substeps);
   EXPECT_EQ(world.model.solver.dt_s, kFrame_s / plan.substeps);
   EXPECT_EQ(plan.travel_dt_s, estimate.travel_dt_s);

@@ -8,20 +8,22 @@
 #include "sim/integrators/runge_kutta4.hpp"
 #include "sim/integrators/symplectic_euler.hpp"
 #include "sim/integrators/velocity_verlet.hpp"
+#include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/integrators/xpbd.hpp"
 
 namespace sim {
 
-std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double tolerance) {
-  switch (kind) {
+std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
+  switch (solver.integrator) {
     case IntegratorKind::Euler: return std::make_unique<ForwardEuler>();
     case IntegratorKind::Symplectic: return std::make_unique<SymplecticEuler>();
     case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
     case IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
-    case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(tolerance);
+    case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(solver.tolerance);
     case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
     case IntegratorKind::Newton: return std::make_unique<NewtonEuler>();
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
+    case IntegratorKind::Vbd: return std::make_unique<VertexBlockDescent>(solver.iterations);
   }
   return nullptr;
 }

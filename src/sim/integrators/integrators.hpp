@@ -42,7 +42,7 @@ class AdaptiveIntegrator : public Integrator {
   AdaptiveIntegrator* adaptive() override { return this; }
 };
 
-// The integrator `kind` (`tolerance`: rk45's only).
-std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, double tolerance);
+// The integrator `solver` names, with its options (rk45's tolerance, vbd's sweeps).
+std::unique_ptr<Integrator> make_integrator(const Solver& solver);
 
 }  // namespace sim

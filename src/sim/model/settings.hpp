@@ -22,6 +22,8 @@ enum class IntegratorKind {
                // force implicit (gas included): first order, L-stable, for 1/60 s steps
   Xpbd,        // substepped extended position-based dynamics (Macklin et al. 2016, 2019): first order, one
                // constraint pass per substep, springs as compliant constraints: stable at large steps
+  Vbd,         // vertex block descent (Chen et al. 2024) on BDF2's implicit step, every force implicit: second order
+               // when its sweeps converge, stable at large steps
 };
 
 // What the program needs to know of an integrator besides its code.
@@ -33,19 +35,21 @@ struct IntegratorInfo {
   bool explicit_springs;  // the springs limit its stable step (every method but implicit, newton and xpbd)
   bool position_based;    // velocities follow from positions, v = (x − x_prev)/h, and the friction floor is a
                           // positional constraint with static friction (xpbd only; sim/contact/contact.hpp)
+  bool frame_substeps;    // its step is solver.substeps per frame interval (or "auto"), not solver.dt (xpbd, vbd)
 };
 
 // Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
 // benchmarks all iterate this list.
-inline constexpr std::array<IntegratorInfo, 8> kIntegrators = {{
-    {IntegratorKind::Euler, "euler", 1, false, true, false},
-    {IntegratorKind::Symplectic, "symplectic", 1, false, true, false},
-    {IntegratorKind::Verlet, "verlet", 2, false, true, false},
-    {IntegratorKind::Rk4, "rk4", 4, false, true, false},
-    {IntegratorKind::Rk45, "rk45", 5, true, true, false},
-    {IntegratorKind::Implicit, "implicit", 1, false, false, false},
-    {IntegratorKind::Newton, "newton", 1, false, false, false},
-    {IntegratorKind::Xpbd, "xpbd", 1, false, false, true},
+inline constexpr std::array<IntegratorInfo, 9> kIntegrators = {{
+    {IntegratorKind::Euler, "euler", 1, false, true, false, false},
+    {IntegratorKind::Symplectic, "symplectic", 1, false, true, false, false},
+    {IntegratorKind::Verlet, "verlet", 2, false, true, false, false},
+    {IntegratorKind::Rk4, "rk4", 4, false, true, false, false},
+    {IntegratorKind::Rk45, "rk45", 5, true, true, false, false},
+    {IntegratorKind::Implicit, "implicit", 1, false, false, false, false},
+    {IntegratorKind::Newton, "newton", 1, false, false, false, false},
+    {IntegratorKind::Xpbd, "xpbd", 1, false, false, true, true},
+    {IntegratorKind::Vbd, "vbd", 2, false, false, false, true},
 }};
 static_assert(
     [] {
@@ -132,11 +136,12 @@ struct Solver {
   double dt_s = 1e-4;    // requested time step; the run uses the largest dt <= this that divides 1/fps
                          // (rk45: only the first trial step; it then chooses its own)
   bool dt_auto = false;  // "dt": "auto": sim::resolve_step sets dt_s from the stable-dt estimate (stability.hpp)
-  // xpbd: substeps per frame interval (one constraint pass each), so dt = (1/fps) / substeps, set by
+  // xpbd and vbd: substeps per frame interval (xpbd: one constraint pass each), so dt = (1/fps) / substeps, set by
   // sim::resolve_step; 0: dt_s decides. substeps_auto ("substeps": "auto"): the fewest that keep the accuracy
   // sim::auto_substeps states. Not the guard's retry substeps (State::retry_substeps).
   int substeps = 0;
   bool substeps_auto = false;
+  int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
   bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024;
                             // State::retry_substeps)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]

@@ -26,6 +26,12 @@ struct IntegratorCarry {
   // [N], body by body (its edges, then its links); empty at the start (none carried: zero; the next substep is then
   // a run's first, which kicks by h/2: sim/integrators/xpbd.hpp).
   std::vector<double> edge_tension_N;
+  // vbd's BDF2 history: the state one step back, x_{n−1} [m] and v_{n−1} [m/s], and the size of the step from it [s];
+  // empty at the start and after a contact moved the state (the next step is then backward Euler:
+  // sim/integrators/vertex_block_descent.hpp).
+  std::vector<Vec3> previous_x;
+  std::vector<Vec3> previous_v;
+  double previous_dt_s = 0.0;
   // rk45's step-size controller.
   double previous_error = 1e-4;  // err of the last accepted step (PI control)
   bool rejected_last = false;    // the last attempt was rejected: do not grow the step now
@@ -62,6 +68,8 @@ struct State {
   void forget_carry() {
     carry.acceleration.clear();
     carry.edge_tension_N.clear();
+    carry.previous_x.clear();
+    carry.previous_v.clear();
     coasting.clear();
     guard.budget_J.clear();
   }

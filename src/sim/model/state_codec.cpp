@@ -92,6 +92,9 @@ std::string encode_state(const State& state) {
   w.vectors(state.carry.acceleration);
   w.array(state.carry.velocity_change.data(), static_cast<std::size_t>(state.carry.velocity_change.size()));
   w.array(state.carry.edge_tension_N.data(), state.carry.edge_tension_N.size());
+  w.vectors(state.carry.previous_x);
+  w.vectors(state.carry.previous_v);
+  w.scalar(state.carry.previous_dt_s);
   w.scalar(state.carry.previous_error);
   w.scalar<std::uint8_t>(state.carry.rejected_last ? 1 : 0);
   w.array(state.coasting.data(), state.coasting.size());
@@ -124,6 +127,9 @@ State decode_state(std::string_view bytes, const Model& model) {
   std::size_t constraints = 0;
   for (const Body& body : model.bodies) constraints += body.constraints.size();
   state.carry.edge_tension_N = r.array<double>("carried edge tensions", constraints);
+  state.carry.previous_x = r.vectors("BDF2 history positions", n);
+  state.carry.previous_v = r.vectors("BDF2 history velocities", n);
+  state.carry.previous_dt_s = r.scalar<double>("BDF2 history step");
   state.carry.previous_error = r.scalar<double>("step-size controller error");
   state.carry.rejected_last = r.scalar<std::uint8_t>("step-size controller flag") != 0;
   const auto coasting_count = r.scalar<std::uint64_t>("coasting vertices");

@@ -12,7 +12,7 @@
 namespace sim {
 
 // The layout version of encode_state(); bump it whenever State gains or changes a field.
-inline constexpr std::uint32_t kStateCodecVersion = 2;  // 2: xpbd's carried edge tensions
+inline constexpr std::uint32_t kStateCodecVersion = 3;  // 2: xpbd's carried edge tensions; 3: vbd's BDF2 history
 
 // Every field of `state`, little-endian, doubles as their IEEE bits (exact).
 std::string encode_state(const State& state);

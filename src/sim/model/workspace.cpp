@@ -15,8 +15,7 @@ int force_threads(const Solver& solver) {
 }  // namespace
 
 Workspace::Workspace(const Model& model)
-    : forces(force_threads(model.solver)),
-      integrator(make_integrator(model.solver.integrator, model.solver.tolerance)) {
+    : forces(force_threads(model.solver)), integrator(make_integrator(model.solver)) {
   forces.area_sums.resize(model.bodies.size());
 }
 

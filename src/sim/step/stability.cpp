@@ -257,9 +257,10 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
     const double explicit_omega2 = bounds.omega2_gas + bounds.omega2_contact;
     return explicit_omega2 > 0.0 ? 2.0 / std::sqrt(explicit_omega2) : StabilityEstimate::kUnlimited;
   }
-  if (integrator == IntegratorKind::Newton) {
+  if (integrator == IntegratorKind::Newton || integrator == IntegratorKind::Vbd) {
     // Every force implicit: backward Euler's amplification 1 / (1 − hλ) has |·| < 1 for every mode with
-    // Re λ ≤ 0 at every h (A- and L-stable), and each Newton iterate lowers the incremental potential. No
+    // Re λ ≤ 0 at every h (A- and L-stable; BDF2, vbd's, is A-stable too), and each Newton iterate (vbd: each vertex
+    // move) lowers the incremental potential. No
     // mode limits h; what does is accuracy (numerical damping ∝ h ω² of each mode) and, with a floor, the
     // post-step contact's travel per step (travel_dt_s, applied to every integrator).
     return StabilityEstimate::kUnlimited;
@@ -400,9 +401,11 @@ double xpbd_carried_dt(double omega_max) {
   return kXpbdCarriedPhaseLimit / omega_max;
 }
 
-int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s) {
+int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                  double frame_interval_s) {
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
-  for (std::size_t b = 0; b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
+  const bool xpbd = integrator == IntegratorKind::Xpbd;
+  for (std::size_t b = 0; xpbd && b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
     h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));
   }
   const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));

@@ -119,8 +119,8 @@ StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<con
 double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file);
 
-// xpbd's `solver.substeps: "auto"` (and `dt: "auto"`): the fewest substeps per frame interval whose substep h
-// keeps (1) every body in the carried form, h ≤ xpbd_carried_dt (ω_max: the fastest mode of springs, gas and
+// `solver.substeps: "auto"` (and `dt: "auto"`) of `integrator`, xpbd: the fewest substeps per frame interval whose
+// substep h keeps (1) every body in the carried form, h ≤ xpbd_carried_dt (ω_max: the fastest mode of springs, gas and
 // contact, ModeBounds::omega_max), and (2) the contact travel of every integrator, a tenth of the shortest edge
 // per step (travel_dt_s).
 //
@@ -144,7 +144,9 @@ constexpr double kXpbdCarriedPhaseLimit = 1.9;
 double xpbd_carried_dt(double omega_max);
 // The substep bound of (1) for one body of `vertices` vertices with fastest mode ω_max [s] (kUnlimited: no modes).
 double xpbd_bias_dt(double omega_max, int vertices);
-int auto_substeps(const Model& model, const StabilityEstimate& estimate, double frame_interval_s);
+// vbd's `solver.substeps: "auto"` takes (2) alone: every force is implicit, nothing limits its step but accuracy.
+int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                  double frame_interval_s);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
 // kPaperEuler*; the smooth contact adds its spring and dashpot to every body's fastest mode, a bound: the

@@ -82,7 +82,11 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
 void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h);
-  if (touched > 0) state.carry.acceleration.clear();
+  if (touched > 0) {
+    state.carry.acceleration.clear();
+    state.carry.previous_x.clear();  // vbd: a BDF2 step across the jump would extrapolate it
+    state.carry.previous_v.clear();
+  }
 }
 
 // The fixed-step phases of one step of h: integrate → body contacts → floor → guard.

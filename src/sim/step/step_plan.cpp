@@ -10,11 +10,11 @@ StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const
   Solver& solver = model.solver;
   StepPlan plan;
   plan.dt_s = solver.dt_s;
-  const bool xpbd = solver.integrator == IntegratorKind::Xpbd;
-  plan.substeps = xpbd ? solver.substeps : 0;
-  if (xpbd && (solver.substeps_auto || solver.dt_auto)) {
+  const bool substepped = integrator_info(solver.integrator).frame_substeps;
+  plan.substeps = substepped ? solver.substeps : 0;
+  if (substepped && (solver.substeps_auto || solver.dt_auto)) {
     const StabilityEstimate estimate = estimate_stability(model, state);
-    plan.substeps = auto_substeps(model, estimate, frame_interval_s);
+    plan.substeps = auto_substeps(solver.integrator, model, estimate, frame_interval_s);
     plan.substeps_chosen = true;
     plan.travel_dt_s = estimate.travel_dt_s;
     if (after_phase) after_phase("estimating the stable substep");

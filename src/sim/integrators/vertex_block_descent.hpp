@@ -1,0 +1,69 @@
+// Vertex block descent on the implicit BDF2 step: every force implicit, solved vertex by vertex.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "sim/contact/smooth_contact.hpp"
+#include "sim/integrators/integrators.hpp"
+#include "sim/integrators/vertex_blocks.hpp"
+
+namespace sim {
+
+// One call of step(h) is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
+// SIGGRAPH 2024, for the solve; Ascher & Petzold, "Computer Methods for ODEs and DAEs", Sect. 5.1, for BDF2):
+//   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
+//   backward Euler (a run's first step, after a contact moved the state, after a change of h): ĥ = h, x̃ = x_n, ṽ = v_n
+// Eliminating v' leaves m (x' − y)/ĥ² = f(x', (x' − x̃)/ĥ), y = x̃ + ĥ ṽ + ĥ² g, the stationary point of
+//   E(x) = Σ_i m_i |x_i − y_i|² / (2ĥ²) + Σ_e ½ k (|d_e| − L0)² − nRT ln V + D(x) + floor terms        [J]
+// with the dampers' and the smooth floor's dissipation D taken with their directions and weights lagged at the
+// current iterate (so that the fixed point is the scheme's, exactly; Li et al. 2020 lag friction the same way).
+// Gauss–Seidel over the vertices (solver.iterations sweeps, colour by colour; sim/integrators/vertex_blocks.hpp):
+// vertex i moves by one Newton step on E as a function of x_i alone, H_i Δ = −∇_i E, with the 3×3 block
+//   H_i = m/ĥ² I + Σ_e [k (n̂n̂ᵀ + max(0, 1 − L0/l)(I − n̂n̂ᵀ)) + (c/ĥ) n̂n̂ᵀ] + nRT g_i g_iᵀ / V² + floor terms,
+// g_i = ∂V/∂x_i = Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) / 6. V is affine in x_i, so the gas term is its exact local
+// Hessian and V is updated exactly after each move (V += g_i·Δ); a compressed spring's negative transverse
+// curvature is clamped at zero, so H_i is positive definite and Δ a descent direction. A backtracking line search
+// on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers E: no setting can make a sweep add
+// energy, whatever h. Then v' = (x' − x̃)/ĥ.
+// The smooth floor enters E as newton's floor terms do (sim/contact/floor_potential.hpp); the paper's and the
+// friction floor and the impulse contact between bodies stay projections after the step (sim::step).
+// What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
+// of the State is a checkpoint. No allocation per step once sizes settle.
+class VertexBlockDescent final : public Integrator {
+ public:
+  // Counts over every step this object took, for benchmarks and tests.
+  struct Statistics {
+    long long steps = 0;
+    long long bdf2_steps = 0;     // the others were backward Euler
+    long long vertex_solves = 0;  // local Newton steps tried
+    long long halvings = 0;       // line-search step halvings
+    long long refused_moves = 0;  // local steps no halving made lower E: the vertex stayed
+  };
+
+  explicit VertexBlockDescent(int sweeps, bool coarse = true) : sweeps_(sweeps), coarse_(coarse) {}
+  void step(Dynamics& dynamics, State& state, double dt) override;
+  const Statistics& statistics() const { return statistics_; }
+
+ private:
+  // The bodies' layouts, on the first step (again for a model with other bodies).
+  void prepare_once(const Model& model);
+  // y, x̃ and ĥ of this step into target_, base_ (backward Euler without a usable history); returns ĥ [s].
+  double set_targets(const Model& model, const State& state, double h, bool bdf2);
+  // solver.iterations sweeps over body b's vertices, from x = y.
+  void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
+
+  int sweeps_ = 1;
+  bool coarse_ = true;  // the affine coarse correction before each sweep
+  std::vector<Vec3> coarse_motion_, coarse_scratch_;
+  std::vector<VertexBlocks> blocks_;                 // per body
+  std::optional<SmoothFloor> smooth_floor_;          // the floor's constants when its contact is smooth
+  std::vector<Vec3> target_;                         // y per vertex [m]
+  std::vector<Vec3> base_;                           // x̃ per vertex [m]
+  std::vector<Vec3> start_x_, start_v_;              // x_n, v_n (then the next step's history)
+  std::vector<Vec3> lagged_axis_;                    // scratch: the directions n̂ of one vertex's constraints
+  std::vector<double> lagged_length_, lagged_rate_;  // scratch: their lengths l [m] and approach (Δx_i − Δx_j)·n̂ [m]
+  Statistics statistics_;
+};
+
+}  // namespace sim

@@ -1,0 +1,31 @@
+// A body laid out for vertex block descent: its vertices in colour order, and per vertex the constraints and faces
+// that touch it, in compressed rows, so that one vertex's local solve reads one contiguous run of each.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "sim/model/body.hpp"
+#include "sim/solvers/vertex_colouring.hpp"
+
+namespace sim {
+
+struct VertexBlocks {
+  VertexColouring colouring;  // the visiting order: no two vertices of a colour share a constraint or a face
+  // Vertex i's constraints (edges and bending links) are entries [constraint_start[i], constraint_start[i + 1]):
+  std::vector<int> constraint_start;      // vertex count + 1
+  std::vector<int> other_end;             // the constraint's other vertex (local index)
+  std::vector<double> rest_length_m;      // L0 [m]
+  std::vector<double> stiffness_N_per_m;  // k [N/m]
+  std::vector<double> damping_N_s_per_m;  // c [N·s/m]
+  // Vertex i's faces are entries [face_start[i], face_start[i + 1]) of face_others: the face's two other corners in
+  // its counter-clockwise order after i, so that (x_b − x_i) × (x_c − x_i) is twice its outward area vector.
+  std::vector<int> face_start;  // vertex count + 1
+  std::vector<std::array<int, 2>> face_others;
+  int most_constraints = 0;  // the largest number of constraints at one vertex
+};
+
+// The layout of `body` (its constraint set and faces, built by add_body()).
+VertexBlocks vertex_blocks(const Body& body);
+
+}  // namespace sim
