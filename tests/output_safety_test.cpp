@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -16,8 +17,11 @@
 #include <gtest/gtest.h>
 
 #include "background_run.hpp"
+#include "core/errors.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_sink.hpp"
+#include "output/folder_lock.hpp"
+#include "output/frame_pattern.hpp"
 #include "test_helpers.hpp"
 
 namespace {
@@ -89,24 +93,84 @@ TEST(OutputSafety, StaleTemporariesOfKilledRunsAreRemovedByTheNextRun) {
 // are its own frames only, not its first frames followed by the earlier run's later ones.
 TEST(OutputSafety, ARunThatFailsLeavesNoMixOfTwoRuns) {
   const fs::path dir = scratch_dir("no_mix");
-  ASSERT_EQ(run_softbody("export scenes/bounce.json --set duration=0.3 -o " + dir.string()).exit_status, 0);
+  ASSERT_EQ(run_softbody("export scenes/bounce.json --set duration=0.5 -o " + dir.string()).exit_status, 0);
   int earlier = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
     std::ofstream(entry.path()) << "# the earlier run\n";
     ++earlier;
   }
-  ASSERT_EQ(earlier, 10);  // frames 0..9 of 0.3 s at 30 frames per second
+  ASSERT_EQ(earlier, 16);  // frames 0..15 of 0.5 s at 30 frames per second; the failing run's are 0..9 at most
   const auto failed = run_softbody(
       "export scenes/bounce.json --set duration=0.3 --set bodies.0.stiffness=1e6 "
       "--set solver.dt=1e-3 -o " +
       dir.string());
   ASSERT_EQ(failed.exit_status, 3) << failed.output;
+  EXPECT_NE(failed.output.find(dir.string() + ": removed an earlier run's outputs before writing: 16 frame files"),
+            std::string::npos)
+      << failed.output;
   int left = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
     EXPECT_EQ(read_text(entry.path()).find("# the earlier run"), std::string::npos) << entry.path();
     ++left;
   }
   EXPECT_LT(left, earlier);
+}
+
+// The frame number in a file name, for any output.pattern, and no other file taken for a frame.
+TEST(OutputSafety, FrameFilesAreFoundByTheirPattern) {
+  EXPECT_EQ(output::frame_index_of("frame_%04d.png", "frame_0012.png"), std::optional<int>(12));
+  EXPECT_EQ(output::frame_index_of("frame_%04d.png", "frame_12345.png"), std::optional<int>(12345));
+  EXPECT_EQ(output::frame_index_of("take2_%d.png", "take2_7.png"), std::optional<int>(7));
+  EXPECT_EQ(output::frame_index_of("100%%_%03d.png", "100%_042.png"), std::optional<int>(42));
+  for (const std::string other : {"frame_12.png", "frame_0012.png.tmp1", ".frame_0012.png.tmp1", "figure.png",
+                                  "frame_.png", "frame_0012.obj", "frame_x012.png"}) {
+    EXPECT_FALSE(output::frame_index_of("frame_%04d.png", other)) << other;
+  }
+  const fs::path dir = scratch_dir("frame_files");
+  for (const std::string name : {"frame_0000.png", "frame_0007.png", "frame_2000.png", "figure.png", "notes.txt"})
+    std::ofstream(dir / name) << "x";
+  EXPECT_EQ(output::remove_frame_files(dir, "frame_%04d.png"), 3);
+  EXPECT_TRUE(fs::exists(dir / "figure.png"));
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+}
+
+// One run at a time holds a folder: another is refused, naming the folder and who holds it; runs of the same
+// identity (the chunks of one render) share it, others do not; once every holder let go, the lock file is gone
+// and the folder is free. The lock is per open file, so two locks of one process conflict as two processes' do.
+TEST(OutputSafety, AFolderLockKeepsOtherRunsOut) {
+  using output::FolderLock;
+  const fs::path dir = scratch_dir("folder_lock");
+  const auto refused = [&](const std::string& identity, FolderLock::Sharing sharing) {
+    try {
+      FolderLock lock(dir, identity, sharing, "a test");
+    } catch (const softbody::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(dir.string() + ": another softbody run is writing into this folder"),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("pid " + std::to_string(::getpid()) + ": the first"), std::string::npos)
+          << e.what();
+      return true;
+    }
+    return false;
+  };
+  {
+    const FolderLock whole(dir, "run A", FolderLock::Sharing::Exclusive, "the first");
+    EXPECT_TRUE(refused("run A", FolderLock::Sharing::Exclusive));
+    EXPECT_TRUE(refused("run A", FolderLock::Sharing::SameRunOnly));
+  }
+  EXPECT_FALSE(fs::exists(dir / output::kFolderLockName));
+  {
+    const FolderLock chunk(dir, "run A", FolderLock::Sharing::SameRunOnly, "the first");
+    {
+      const FolderLock same_run(dir, "run A", FolderLock::Sharing::SameRunOnly, "the second");
+      EXPECT_TRUE(refused("run B", FolderLock::Sharing::SameRunOnly));
+      EXPECT_TRUE(refused("run A", FolderLock::Sharing::Exclusive));
+    }
+    EXPECT_TRUE(fs::exists(dir / output::kFolderLockName)) << "the first chunk still holds it";
+    EXPECT_TRUE(refused("run B", FolderLock::Sharing::SameRunOnly));
+  }
+  EXPECT_FALSE(fs::exists(dir / output::kFolderLockName));
+  EXPECT_FALSE(refused("run B", FolderLock::Sharing::Exclusive));
 }
 
 struct Interrupted {
@@ -154,6 +218,39 @@ TEST(OutputSafety, SigintDuringSimulateKeepsTheRowsOfCompleteFrames) {
     ++rows;
   }
   EXPECT_EQ(rows, frames);
+}
+
+// simulate --resume journals its rows, each with a checksum: a row damaged on disk after an interrupted run (6
+// bytes overwritten) is not copied into the CSV; the resumed run makes that frame again, and the CSV is byte for
+// byte an uninterrupted run's.
+TEST(OutputSafety, ResumedSimulateDropsADamagedJournalRow) {
+  const fs::path dir = scratch_dir("resume_damaged_row");
+  const std::string scene = "scenes/bounce.json --set duration=1 --set bodies.0.mesh=icosphere:3 --set solver.dt=1e-5";
+  ASSERT_EQ(run_softbody("simulate " + scene + " --csv " + (dir / "reference.csv").string()).exit_status, 0);
+  const fs::path csv = dir / "rows.csv", journal = dir / "rows.csv.resume" / "rows.csv";
+  {
+    testing_support::BackgroundRun run(
+        {"simulate", "scenes/bounce.json", "--set", "duration=1", "--set", "bodies.0.mesh=icosphere:3", "--set",
+         "solver.dt=1e-5", "--csv", csv.string(), "--resume"},
+        dir);
+    const auto journalled_rows = [&] {
+      const std::string text = read_text(journal);
+      return std::count(text.begin(), text.end(), '\n');
+    };
+    ASSERT_TRUE(run.wait_until([&] { return journalled_rows() >= 5; }, std::chrono::seconds(60))) << run.errors();
+    run.signal(SIGINT);
+    ASSERT_EQ(run.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << run.errors();
+  }
+  std::string text = read_text(journal);
+  std::size_t row = 0;
+  for (int line = 0; line < 2; ++line) row = text.find('\n', row) + 1;  // the row of frame 2
+  ASSERT_EQ(text.compare(row, 2, "2,"), 0) << text.substr(row, 40);
+  text.replace(row + 30, 6, text.compare(row + 30, 6, "777777") == 0 ? "555555" : "777777");
+  std::ofstream(journal, std::ios::binary) << text;
+  const auto resumed = run_softbody("simulate " + scene + " --csv " + csv.string() + " --resume");
+  ASSERT_EQ(resumed.exit_status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("frames 0..1 are complete"), std::string::npos) << resumed.output;
+  EXPECT_EQ(read_text(csv), read_text(dir / "reference.csv"));
 }
 
 TEST(OutputSafety, SigtermDuringExportLeavesOnlyCompleteFrames) {

@@ -1,11 +1,13 @@
 // `softbody export SCENE [-o DIR] [--format obj|ply|pc2|mdd] [--set ...]`: the simulated mesh of every frame,
 // or per body one mesh and a point cache of its positions.
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/output_settings.hpp"
 #include "app/prepared_run.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
@@ -13,6 +15,8 @@
 #include "core/profile.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
+#include "output/folder_lock.hpp"
+#include "output/frame_pattern.hpp"
 #include "output/mesh_exporter.hpp"
 #include "output/point_cache.hpp"
 
@@ -64,6 +68,15 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   return 0;
 }
 
+// A whole new run: an earlier run's meshes (whatever their numbers) go first, so that a run that fails or is
+// interrupted leaves only its own frames, never a mix of two runs. Says how many went.
+void remove_earlier_meshes(const std::filesystem::path& dir, const std::string& pattern) {
+  const int removed = output::remove_frame_files(dir, pattern);
+  if (removed > 0)
+    std::fprintf(stderr, "note: %s: removed an earlier run's outputs before writing: %d frame files\n", dir.c_str(),
+                 removed);
+}
+
 int run_export(const ExportOptions& options) {
   if (options.format == ExportFormat::Pc2) return run_point_cache_export(options, output::PointCacheFormat::Pc2);
   if (options.format == ExportFormat::Mdd) return run_point_cache_export(options, output::PointCacheFormat::Mdd);
@@ -81,11 +94,15 @@ int run_export(const ExportOptions& options) {
   output::refuse_numbered_outputs_onto_inputs(
       dir, run.clock.frame_count, [&](int i) { return exporter.frame_path(i).filename(); }, scene_inputs(run.scene),
       "-o");
+  // One run at a time writes into the folder; the chunks of one export (--frames, same scene and format)
+  // share it.
+  const std::string format = mesh_format == output::MeshFormat::Obj ? "obj" : "ply";
+  const output::FolderLock lock(dir, run_identity("export", run.scene, export_output_settings(format)),
+                                planned.plan().frames.everything() ? output::FolderLock::Sharing::Exclusive
+                                                                   : output::FolderLock::Sharing::SameRunOnly,
+                                "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);
-  if (!options.resume && planned.plan().frames.everything()) {
-    // A whole new run: an earlier run's meshes go first, so that a run that fails leaves no mix of the two.
-    output::remove_numbered_files(dir, run.clock.frame_count, [&](int i) { return exporter.frame_path(i).filename(); });
-  }
+  if (!options.resume && planned.plan().frames.everything()) remove_earlier_meshes(dir, exporter.frame_pattern());
   std::unique_ptr<ResumableRun> resumable;
   std::vector<frames::FrameSink*> sinks = {&exporter};
   if (options.resume) {
@@ -94,6 +111,7 @@ int run_export(const ExportOptions& options) {
       return std::filesystem::is_regular_file(exporter.frame_path(frame), ec);
     };
     resumable = std::make_unique<ResumableRun>(run, dir / ".softbody-resume", frame_done, dir);
+    if (resumable->resumed_after() < 0) remove_earlier_meshes(dir, exporter.frame_pattern());  // a new run
     sinks.push_back(&resumable->store_sink());
   }
   const frames::RunStats stats =

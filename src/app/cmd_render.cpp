@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/output_settings.hpp"
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
 #include "app/resume.hpp"
@@ -19,6 +20,7 @@
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
 #include "output/figure_frames.hpp"
+#include "output/folder_lock.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/motion_track.hpp"
 #include "render/camera_framing.hpp"
@@ -121,6 +123,25 @@ void print_written(const render::RenderOutputs& outputs, const render::RenderSin
   if (outputs.video) std::printf("video:  %s\n", outputs.video->string().c_str());
 }
 
+// A whole new run: the earlier run's frames (whatever their numbers), figure and video go first, so that a run
+// that fails (diverges, is interrupted) leaves only its own frames, never a mix of two runs. A resumed run
+// keeps its frames (`keep_frames`): its figure and video are made at the end. Says what went.
+void remove_earlier_outputs(const render::RenderOutputs& outputs, bool keep_frames = false) {
+  std::vector<std::string> removed;
+  const int frames =
+      outputs.write_frames && !keep_frames ? output::remove_frame_files(outputs.dir, outputs.pattern) : 0;
+  if (frames > 0) removed.push_back(std::to_string(frames) + " frame files");
+  std::error_code ec;
+  if (std::filesystem::remove(outputs.dir / "figure.png", ec)) removed.emplace_back("figure.png");
+  if (outputs.video && !output::is_written_through(*outputs.video) && std::filesystem::remove(*outputs.video, ec))
+    removed.push_back(outputs.video->string());
+  std::string words;
+  for (const std::string& item : removed) words += (words.empty() ? "" : ", ") + item;
+  if (!words.empty())
+    std::fprintf(stderr, "note: %s: removed an earlier run's outputs before writing: %s\n", outputs.dir.c_str(),
+                 words.c_str());
+}
+
 int run_render(const RenderOptions& options) {
   // SIGINT / SIGTERM end setup after its phase in progress (nothing written) and the run within one step of
   // the simulation (the frame in progress dropped); the outputs hold every complete frame.
@@ -144,6 +165,12 @@ int run_render(const RenderOptions& options) {
       [&](int i) { return std::filesystem::path(output::frame_file_name(scene.output.pattern, i)); }, inputs, "-o");
 
   const render::GlBackendRequest backend = render::choose_gl_backend(scene.render.backend, std::getenv("SOFTBODY_GL"));
+  // One run at a time writes into the folder; the chunks of one render (--frames, same scene and settings)
+  // share it. Taken before the long work (the silent pass, the frames), so that a second run is refused at once.
+  const output::FolderLock lock(
+      scene.output.dir, run_identity("render", scene, render_output_settings(scene)),
+      chosen.everything() ? output::FolderLock::Sharing::Exclusive : output::FolderLock::Sharing::SameRunOnly,
+      "render " + scene.source.string());
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
   render::RenderSettings settings = render::settings_from_scene(scene);
   const int last_frame = run.clock.frame_count;
@@ -175,15 +202,7 @@ int run_render(const RenderOptions& options) {
   outputs.remove_stale_frames = chosen.everything();
   std::filesystem::create_directories(outputs.dir);
   output::remove_stale_temporaries(outputs.dir);
-  if (!options.resume && chosen.everything() && outputs.write_frames) {
-    // A whole new run: an earlier run's frames and figure go first, so that a run that fails (diverges, is
-    // interrupted) leaves only its own frames, never a mix of two runs.
-    output::remove_numbered_files(outputs.dir, run.clock.frame_count, [&](int i) {
-      return std::filesystem::path(output::frame_file_name(outputs.pattern, i));
-    });
-    std::error_code ec;
-    std::filesystem::remove(outputs.dir / "figure.png", ec);
-  }
+  if (!options.resume && chosen.everything()) remove_earlier_outputs(outputs);
   std::unique_ptr<ResumableRun> resumable;
   if (options.resume) {
     const auto frame_done = [&outputs](int frame) {
@@ -193,6 +212,7 @@ int run_render(const RenderOptions& options) {
     resumable = std::make_unique<ResumableRun>(run, outputs.dir / ".softbody-resume", frame_done, outputs.dir);
     if (outputs.video) output::remove_stale_temporaries(outputs.video->parent_path());
     outputs.resumed_after = resumable->resumed_after();
+    remove_earlier_outputs(outputs, /*keep_frames=*/outputs.resumed_after >= 0);  // < 0: nothing to continue
     outputs.video_from_files = true;
   }
   render::RenderSink sink(renderer, outputs);
@@ -239,7 +259,9 @@ Action register_render(CLI::App& parent) {
   command->footer(
       "Writes DIR/frame_%04d.png (output.pattern), frame 0 being the initial state, so that\n"
       "  ffmpeg -framerate FPS -i DIR/frame_%04d.png reads them; each file appears whole (temporary name, then\n"
-      "  rename), and frames numbered after the last one, left by an earlier longer run, are removed.\n"
+      "  rename). A whole new run first removes the earlier run's frames (any number), figure.png and video, and\n"
+      "  says so: a run that fails or is interrupted leaves only its own frames. One run at a time writes into DIR\n"
+      "  (a second one: exit status 2); the --frames chunks of one render (same scene and settings) share it.\n"
       "  DIR/figure.png shows render.figure_frames frames chosen from the motion (frame 0, the first contact, the\n"
       "  deepest compression, rest, the highest rebound, the turn back, then frames spread between), each labelled\n"
       "  with its time; render.figure_frames as a list ([0, 19, 24]) shows exactly those frames; 0: no figure.\n"

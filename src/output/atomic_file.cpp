@@ -20,9 +20,6 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   return path.parent_path() / name;
 }
 
-namespace {
-
-// True while process `pid` runs on this machine (a zombie, killed but not yet reaped, does not run).
 bool process_runs(pid_t pid) {
   if (::kill(pid, 0) != 0 && errno != EPERM) return false;
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
@@ -31,8 +28,6 @@ bool process_runs(pid_t pid) {
   const std::size_t paren = text.rfind(')');  // "pid (comm) S ...": the state follows the command's name
   return paren == std::string::npos || paren + 2 >= text.size() || (text[paren + 2] != 'Z' && text[paren + 2] != 'X');
 }
-
-}  // namespace
 
 int remove_stale_temporaries(const std::filesystem::path& dir) {
   std::error_code ec;
@@ -49,19 +44,6 @@ int remove_stale_temporaries(const std::filesystem::path& dir) {
     const auto pid = static_cast<pid_t>(std::stol(digits));
     if (pid == ::getpid() || process_runs(pid)) continue;  // its writer still runs
     if (std::filesystem::remove(entry.path(), ec)) ++removed;
-  }
-  return removed;
-}
-
-int remove_numbered_files(const std::filesystem::path& dir, int last,
-                          const std::function<std::filesystem::path(int)>& name_of) {
-  constexpr int kGap = 1000;  // an earlier run's frames stop at its end: past 1000 missing in a row, none are left
-  int removed = 0;
-  for (int index = 0, missing = 0; index <= last && missing < kGap; ++index) {
-    std::error_code ec;
-    const bool was_there = std::filesystem::remove(dir / name_of(index), ec);
-    removed += was_there ? 1 : 0;
-    missing = was_there ? 0 : missing + 1;
   }
   return removed;
 }

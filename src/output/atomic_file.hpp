@@ -1,8 +1,9 @@
 // Files that appear whole or not at all: written under a temporary name, then renamed into place.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
-#include <functional>
 #include <string_view>
 
 namespace output {
@@ -21,11 +22,8 @@ bool is_written_through(const std::filesystem::path& path);
 // then removed).
 void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path);
 
-// Removes the files `name_of(0)` .. `name_of(last)` in `dir` that exist (the frames of an earlier run, before
-// a new run writes its own: a run that then fails leaves no mix of two runs), stopping early after 1000
-// indices in a row with no file. Returns how many it removed.
-int remove_numbered_files(const std::filesystem::path& dir, int last,
-                          const std::function<std::filesystem::path(int)>& name_of);
+// True while process `pid` runs on this machine (a zombie, killed but not yet reaped, does not run).
+bool process_runs(pid_t pid);
 
 // The temporary name used for `path` (same folder, so that the rename is atomic): ".NAME.tmpPID".
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);

@@ -3,9 +3,12 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
+
+#include <xxhash.h>
 
 #include "core/profile.hpp"
 #include "output/atomic_file.hpp"
@@ -20,7 +23,37 @@ std::string read_text(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// The frame number that starts a journal line, or -1 for a line that is not a whole row.
+// A journal line is a row, a space and the XXH3-64 of the row in 16 hexadecimal digits: a row damaged on disk
+// (bytes overwritten, a line cut by a kill) fails its checksum and is dropped, never copied into the CSV.
+constexpr std::size_t kChecksumDigits = 16;
+
+std::string checksum_text(std::string_view row) {
+  char text[kChecksumDigits + 1];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(XXH3_64bits(row.data(), row.size())));
+  return text;
+}
+
+// The journal lines of `rows` (whole CSV lines, each ending in '\n').
+std::string journal_lines(std::string_view rows) {
+  std::string lines;
+  for (std::size_t start = 0; start < rows.size();) {
+    const std::size_t end = rows.find('\n', start);
+    const std::string_view row = rows.substr(start, end - start);
+    lines.append(row).append(" ").append(checksum_text(row)).append("\n");
+    start = end + 1;
+  }
+  return lines;
+}
+
+// The row of a journal line (without its '\n'), or nothing when its checksum does not hold.
+std::optional<std::string_view> checked_row(std::string_view line) {
+  if (line.size() < kChecksumDigits + 2 || line[line.size() - kChecksumDigits - 1] != ' ') return std::nullopt;
+  const std::string_view row = line.substr(0, line.size() - kChecksumDigits - 1);
+  if (line.substr(line.size() - kChecksumDigits) != checksum_text(row)) return std::nullopt;
+  return row;
+}
+
+// The frame number that starts a row, or -1 for a line that is not a whole row.
 int row_frame(std::string_view line) {
   const std::size_t comma = line.find(',');
   if (comma == std::string_view::npos || comma == 0 || comma > 9) return -1;
@@ -46,12 +79,13 @@ CsvSink::CsvSink(std::filesystem::path path, std::filesystem::path journal, int 
     for (std::size_t start = 0; start < old.size();) {
       const std::size_t end = old.find('\n', start);
       if (end == std::string::npos) break;  // a line cut by the kill: not a row
-      const int frame = row_frame(std::string_view(old).substr(start, end - start));
-      if (frame >= 0 && frame <= resume_after) kept.append(old, start, end - start + 1);
+      const std::optional<std::string_view> row = checked_row(std::string_view(old).substr(start, end - start));
+      const int frame = row ? row_frame(*row) : -1;
+      if (frame >= 0 && frame <= resume_after) kept.append(*row).append("\n");
       start = end + 1;
     }
   }
-  write_file_atomically(journal_path_, kept);
+  write_file_atomically(journal_path_, journal_lines(kept));
   text_ += kept;
   journal_ = std::fopen(journal_path_.c_str(), "ab");
   if (!journal_) throw std::runtime_error(journal_path_.string() + ": cannot open the CSV journal for appending");
@@ -67,7 +101,8 @@ int CsvSink::journalled_through(const std::filesystem::path& journal, std::size_
   for (std::size_t start = 0; start < text.size();) {
     const std::size_t end = text.find('\n', start);
     if (end == std::string::npos) break;
-    const int frame = row_frame(std::string_view(text).substr(start, end - start));
+    const std::optional<std::string_view> row = checked_row(std::string_view(text).substr(start, end - start));
+    const int frame = row ? row_frame(*row) : -1;
     if (frame >= 0) {
       if (rows.size() <= static_cast<std::size_t>(frame)) rows.resize(static_cast<std::size_t>(frame) + 1, 0);
       ++rows[static_cast<std::size_t>(frame)];
@@ -94,8 +129,8 @@ void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
     text_ += row;
   }
   if (journal_) {
-    const std::string_view rows = std::string_view(text_).substr(frame_start);
-    if (std::fwrite(rows.data(), 1, rows.size(), journal_) != rows.size() || std::fflush(journal_) != 0) {
+    const std::string lines = journal_lines(std::string_view(text_).substr(frame_start));
+    if (std::fwrite(lines.data(), 1, lines.size(), journal_) != lines.size() || std::fflush(journal_) != 0) {
       throw std::runtime_error(journal_path_.string() + ": cannot append to the CSV journal");
     }
   }

@@ -17,10 +17,10 @@ inline constexpr const char* kCsvHeader =
 class CsvSink final : public frames::FrameSink {
  public:
   explicit CsvSink(std::filesystem::path path);
-  // With a journal (--resume): every frame's rows are also appended to `journal` as they are made, so that
-  // a killed run loses none; `resume_after` >= 0 continues a journal, keeping its rows of frames 0 ..
-  // resume_after (complete lines: a frame's rows are journalled before its state is cached) and dropping
-  // the rest. The journal is removed once the CSV is complete.
+  // With a journal (--resume): every frame's rows are also appended to `journal` as they are made, each with
+  // its checksum, so that a killed run loses none; `resume_after` >= 0 continues a journal, keeping its rows
+  // of frames 0 .. resume_after (complete lines whose checksum holds: a frame's rows are journalled before its
+  // state is cached) and dropping the rest. The journal is removed once the CSV is complete.
   CsvSink(std::filesystem::path path, std::filesystem::path journal, int resume_after);
   ~CsvSink() override;
   void on_frame(int index, double time_s, const sim::World& world) override;
@@ -28,7 +28,7 @@ class CsvSink final : public frames::FrameSink {
   const std::string& text() const { return text_; }
 
   // The highest frame whose rows a journal holds for every one of `bodies` bodies, frames 0 .. that one all
-  // complete (-1: none).
+  // complete and undamaged (-1: none).
   static int journalled_through(const std::filesystem::path& journal, std::size_t bodies);
 
  private:

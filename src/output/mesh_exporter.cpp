@@ -8,6 +8,7 @@
 
 #include "core/profile.hpp"
 #include "output/atomic_file.hpp"
+#include "output/frame_pattern.hpp"
 #include "output/obj_uvs.hpp"
 #include "output/shown_surface.hpp"
 
@@ -29,10 +30,12 @@ MeshExporter::MeshExporter(std::filesystem::path dir, MeshFormat format) : dir_(
   std::filesystem::create_directories(dir_);
 }
 
+std::string MeshExporter::frame_pattern() const {
+  return format_ == MeshFormat::Obj ? "frame_%04d.obj" : "frame_%04d.ply";
+}
+
 std::filesystem::path MeshExporter::frame_path(int index) const {
-  char name[64];
-  std::snprintf(name, sizeof name, "frame_%04d.%s", index, format_ == MeshFormat::Obj ? "obj" : "ply");
-  return dir_ / name;
+  return dir_ / frame_file_name(frame_pattern(), index);
 }
 
 void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {

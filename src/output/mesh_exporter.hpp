@@ -19,6 +19,8 @@ class MeshExporter final : public frames::FrameSink {
   void finish(bool complete) override;
 
   std::filesystem::path frame_path(int index) const;
+  // The frames' file names: "frame_%04d.obj" or "frame_%04d.ply".
+  std::string frame_pattern() const;
 
  private:
   std::filesystem::path dir_;

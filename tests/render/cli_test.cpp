@@ -316,4 +316,90 @@ TEST(RenderCommand, FramesFromTheStateCacheAreTheFullRendersBytes) {
   EXPECT_NE(other.output.find("a cache of another scene"), std::string::npos) << other.output;
 }
 
+// What a folder holds besides frame files: their names, sorted.
+std::vector<std::string> other_files(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("frame_", 0) != 0) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A rerun into the folder of a longer earlier run (11 frames, a figure, a video) that fails: what is left is
+// its own frames only, each decoding, none numbered past its own end, and no earlier figure or video.
+TEST(RenderCommand, AFailedRerunAfterALongerRunLeavesOnlyItsOwnFrames) {
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_rerun_fails");
+  const std::string video = "--video " + quoted(out / "v.mp4");
+  ASSERT_EQ(run_shell(render_command(out, video)).exit_status, 0);
+  ASSERT_EQ(count_frame_files(out), 11);
+  ASSERT_EQ(other_files(out), (std::vector<std::string>{"figure.png", "v.mp4"}));
+  const CommandResult failed =
+      run_shell(render_command(out, "--set duration=0.5 --set solver.dt=0.01 --set bodies.0.stiffness=1e6 " + video));
+  ASSERT_EQ(failed.exit_status, 3) << failed.output;
+  EXPECT_NE(failed.output.find("removed an earlier run's outputs before writing: 11 frame files, figure.png, "),
+            std::string::npos)
+      << failed.output;
+  const int frames = count_frame_files(out);
+  EXPECT_GE(frames, 1);
+  EXPECT_LE(frames, 6);  // 0.5 s at 10 frames per second: frames 0..5 at most
+  for (int i = 0; i < frames; ++i)
+    EXPECT_NO_THROW(output::read_png(out / output::frame_file_name("frame_%04d.png", i)));
+  EXPECT_EQ(other_files(out), std::vector<std::string>{});
+}
+
+// SIGINT during a rerun into the folder of an earlier run with a video: the earlier video and later frames are
+// gone, the run's own complete frames are there.
+TEST(RenderCommand, AnInterruptedRerunLeavesNoEarlierVideoOrFrames) {
+  if (run_shell("ffmpeg -version").exit_status != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_rerun_interrupted");
+  const std::string video = "--video " + quoted(out / "v.mp4");
+  ASSERT_EQ(run_shell(render_command(out, "--set duration=3 " + video)).exit_status, 0);
+  ASSERT_EQ(count_frame_files(out), 31);
+  const CommandResult interrupted = run_shell("timeout --preserve-status -s INT 3 " +
+                                              render_command(out,
+                                                             "--set render.figure_frames=0 "
+                                                             "--set bodies.0.mesh=icosphere:4 --set duration=10000 " +
+                                                                 video));
+  ASSERT_EQ(interrupted.exit_status, 130) << interrupted.output;
+  const std::size_t at = interrupted.output.find("stopped after ");
+  ASSERT_NE(at, std::string::npos) << interrupted.output;
+  const int frames = std::stoi(interrupted.output.substr(at + 14));
+  EXPECT_EQ(count_frame_files(out), frames);
+  EXPECT_LT(frames, 31) << "the machine drew the finer ball faster than expected: the check proves nothing";
+  EXPECT_EQ(other_files(out), std::vector<std::string>{});
+}
+
+// Two different runs never write one folder at once: while a run holds it, a whole run, or a chunk of another
+// render (a different width), is refused with exit status 2 naming the folder; a chunk of the same render
+// (--frames, same scene and settings) shares it, as a farm's chunks do. Once the run ended, the folder is free
+// and no lock file is left.
+TEST(RenderCommand, TwoRunsCannotWriteOneFolderButTheChunksOfOneRenderCan) {
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_lock");
+  const std::string scene = std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json";
+  testing_support::BackgroundRun chunk(
+      {"render", scene, "-o", out.string(), "--set", "duration=1000", "--frames", "3-9999"},
+      testing_support::scratch_dir("cli_lock_log"));
+  ASSERT_TRUE(
+      chunk.wait_until([&] { return std::filesystem::exists(out / "frame_0004.png"); }, std::chrono::seconds(60)))
+      << chunk.errors();
+  const CommandResult same = run_shell(render_command(out, "--set duration=1000 --frames 0-1"));
+  EXPECT_EQ(same.exit_status, 0) << same.output;
+  EXPECT_TRUE(std::filesystem::exists(out / "frame_0000.png"));
+  const std::string held = out.string() + ": another softbody run is writing into this folder";
+  for (const std::string other :
+       {"--set duration=1000 --frames 0-1 --set render.width=320", "--set duration=1000", ""}) {
+    const CommandResult refused = run_shell(render_command(out, other));
+    EXPECT_EQ(refused.exit_status, 2) << other << ": " << refused.output;
+    EXPECT_NE(refused.output.find(held), std::string::npos) << refused.output;
+  }
+  chunk.signal(SIGINT);
+  ASSERT_EQ(chunk.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << chunk.errors();
+  EXPECT_FALSE(std::filesystem::exists(out / ".softbody-lock"));
+  const CommandResult after = run_shell(render_command(out));
+  EXPECT_EQ(after.exit_status, 0) << after.output;
+  EXPECT_EQ(count_frame_files(out), 11);
+}
+
 }  // namespace
