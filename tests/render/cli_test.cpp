@@ -349,25 +349,31 @@ TEST(RenderCommand, AFailedRerunAfterALongerRunLeavesOnlyItsOwnFrames) {
   EXPECT_EQ(other_files(out), std::vector<std::string>{});
 }
 
-// SIGINT during a rerun into the folder of an earlier run with a video: the earlier video and later frames are
-// gone, the run's own complete frames are there.
+// SIGINT during a rerun into the folder of an earlier run with a video (61 frames): the earlier video and later
+// frames are gone, the run's own complete frames are there. The signal comes once the rerun has removed the
+// earlier frames and written its third.
 TEST(RenderCommand, AnInterruptedRerunLeavesNoEarlierVideoOrFrames) {
   if (run_shell("ffmpeg -version").exit_status != 0) GTEST_SKIP() << "ffmpeg is not installed";
   const std::filesystem::path out = render_test::fresh_output_dir("cli_rerun_interrupted");
-  const std::string video = "--video " + quoted(out / "v.mp4");
-  ASSERT_EQ(run_shell(render_command(out, "--set duration=3 " + video)).exit_status, 0);
-  ASSERT_EQ(count_frame_files(out), 31);
-  const CommandResult interrupted = run_shell("timeout --preserve-status -s INT 3 " +
-                                              render_command(out,
-                                                             "--set render.figure_frames=0 "
-                                                             "--set bodies.0.mesh=icosphere:4 --set duration=10000 " +
-                                                                 video));
-  ASSERT_EQ(interrupted.exit_status, 130) << interrupted.output;
-  const std::size_t at = interrupted.output.find("stopped after ");
-  ASSERT_NE(at, std::string::npos) << interrupted.output;
-  const int frames = std::stoi(interrupted.output.substr(at + 14));
+  ASSERT_EQ(run_shell(render_command(out, "--set duration=6 --video " + quoted(out / "v.mp4"))).exit_status, 0);
+  ASSERT_EQ(count_frame_files(out), 61);
+  testing_support::BackgroundRun run(
+      {"render", std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json", "-o", out.string(), "--set",
+       "duration=10000", "--set", "render.figure_frames=0", "--video", (out / "v.mp4").string()},
+      testing_support::scratch_dir("cli_rerun_interrupted_log"));
+  const auto drawing = [&] {
+    return !std::filesystem::exists(out / "frame_0060.png") && std::filesystem::exists(out / "frame_0002.png");
+  };
+  ASSERT_TRUE(run.wait_until(drawing, std::chrono::seconds(60))) << run.errors();
+  run.signal(SIGINT);
+  ASSERT_EQ(run.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << run.errors();
+  const std::size_t at = run.errors().find("stopped after ");
+  ASSERT_NE(at, std::string::npos) << run.errors();
+  const int frames = std::stoi(run.errors().substr(at + 14));
   EXPECT_EQ(count_frame_files(out), frames);
-  EXPECT_LT(frames, 31) << "the machine drew the finer ball faster than expected: the check proves nothing";
+  EXPECT_LT(frames, 61);
+  for (int i = 0; i < frames; ++i)
+    EXPECT_TRUE(std::filesystem::exists(out / output::frame_file_name("frame_%04d.png", i)));
   EXPECT_EQ(other_files(out), std::vector<std::string>{});
 }
 
