@@ -253,6 +253,43 @@ TEST(OutputSafety, ResumedSimulateDropsADamagedJournalRow) {
   EXPECT_EQ(read_text(csv), read_text(dir / "reference.csv"));
 }
 
+// export --resume keeps a mesh only if the run's manifest vouches for its bytes: a mesh with 6 bytes overwritten
+// after SIGINT is made again, and the meshes end as an uninterrupted run's; a resume in another format is refused
+// with exit status 2 naming export.format.
+TEST(OutputSafety, ResumedExportRemakesADamagedMesh) {
+  const fs::path dir = scratch_dir("resume_damaged_mesh");
+  const std::string scene = "scenes/bounce.json --set duration=1 --set bodies.0.mesh=icosphere:3 --set solver.dt=1e-5";
+  ASSERT_EQ(run_softbody("export " + scene + " -o " + (dir / "reference").string()).exit_status, 0);
+  const fs::path out = dir / "meshes";
+  {
+    testing_support::BackgroundRun run(
+        {"export", "scenes/bounce.json", "--set", "duration=1", "--set", "bodies.0.mesh=icosphere:3", "--set",
+         "solver.dt=1e-5", "-o", out.string(), "--resume"},
+        dir);
+    ASSERT_TRUE(run.wait_until([&] { return fs::exists(out / "frame_0004.obj"); }, std::chrono::seconds(60)))
+        << run.errors();
+    run.signal(SIGINT);
+    ASSERT_EQ(run.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << run.errors();
+  }
+  std::string mesh = read_text(out / "frame_0002.obj");
+  mesh.replace(mesh.size() / 2, 6, "777777");
+  std::ofstream(out / "frame_0002.obj", std::ios::binary) << mesh;
+  const auto other = run_softbody("export " + scene + " -o " + out.string() + " --format ply --resume");
+  EXPECT_EQ(other.exit_status, 2) << other.output;
+  EXPECT_NE(other.output.find("--resume: export.format is ply now but obj in the run it continues"), std::string::npos)
+      << other.output;
+  const auto resumed = run_softbody("export " + scene + " -o " + out.string() + " --resume");
+  ASSERT_EQ(resumed.exit_status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("frames 0..1 are complete"), std::string::npos) << resumed.output;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "reference")) {
+    EXPECT_EQ(read_text(out / entry.path().filename()), read_text(entry.path())) << entry.path().filename();
+    ++files;
+  }
+  EXPECT_EQ(files, 31);
+  EXPECT_FALSE(fs::exists(out / ".softbody-resume"));
+}
+
 TEST(OutputSafety, SigtermDuringExportLeavesOnlyCompleteFrames) {
   const fs::path dir = scratch_dir("sigterm_export");
   std::vector<std::string> arguments{"export"};

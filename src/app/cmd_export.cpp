@@ -19,6 +19,8 @@
 #include "output/frame_pattern.hpp"
 #include "output/mesh_exporter.hpp"
 #include "output/point_cache.hpp"
+#include "output/run_manifest.hpp"
+#include "setup/scene_hash.hpp"
 
 namespace app {
 namespace {
@@ -58,6 +60,13 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
     output::refuse_output_onto_inputs(exporter.mesh_path(body), inputs, "-o");
     output::refuse_output_onto_inputs(exporter.cache_path(body), inputs, "-o");
   }
+  // One run at a time writes into the folder; the files are written whole at the end, so chunks would replace
+  // each other's: none share it.
+  const output::FolderLock lock(
+      dir,
+      run_identity("export", run.scene,
+                   export_output_settings(format == output::PointCacheFormat::Pc2 ? "pc2" : "mdd")),
+      output::FolderLock::Sharing::Exclusive, "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);  // a killed run's half-written cache
   std::vector<frames::FrameSink*> sinks = {&exporter};
   const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
@@ -104,14 +113,29 @@ int run_export(const ExportOptions& options) {
   output::remove_stale_temporaries(dir);
   if (!options.resume && planned.plan().frames.everything()) remove_earlier_meshes(dir, exporter.frame_pattern());
   std::unique_ptr<ResumableRun> resumable;
+  output::RunManifest manifest;
   std::vector<frames::FrameSink*> sinks = {&exporter};
   if (options.resume) {
-    const auto frame_done = [&exporter](int frame) {
-      std::error_code ec;
-      return std::filesystem::is_regular_file(exporter.frame_path(frame), ec);
+    // The manifest of the run to continue vouches for the meshes it wrote (size and checksum); a mesh it does
+    // not vouch for is made again with all after it.
+    const std::filesystem::path store = dir / ".softbody-resume", manifest_path = store / "frames.manifest";
+    const std::string scene_hash = setup::hash_text(setup::simulation_hash(run.scene));
+    manifest = output::RunManifest::read(manifest_path, scene_hash);
+    std::error_code ec;
+    if (manifest.intact() && std::filesystem::exists(store / "cache.json", ec))
+      manifest.check_settings(export_output_settings(format));  // a run to continue: its format must be this
+    const auto frame_done = [&](int frame) {
+      return manifest.vouches_for(dir, exporter.frame_path(frame).filename().string());
     };
-    resumable = std::make_unique<ResumableRun>(run, dir / ".softbody-resume", frame_done, dir);
+    resumable = std::make_unique<ResumableRun>(run, store, frame_done, dir);
     if (resumable->resumed_after() < 0) remove_earlier_meshes(dir, exporter.frame_pattern());  // a new run
+    std::vector<std::string> kept;
+    for (int frame = 0; frame <= resumable->resumed_after(); ++frame)
+      kept.push_back(exporter.frame_path(frame).filename().string());
+    manifest.start(manifest_path, scene_hash, export_output_settings(format), kept);
+    exporter.after_each_file([&manifest](const std::filesystem::path& path, std::string_view bytes) {
+      manifest.add(path.filename().string(), bytes);
+    });
     sinks.push_back(&resumable->store_sink());
   }
   const frames::RunStats stats =

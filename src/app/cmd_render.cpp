@@ -23,12 +23,15 @@
 #include "output/folder_lock.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/motion_track.hpp"
+#include "output/png_codec.hpp"
+#include "output/run_manifest.hpp"
 #include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/render_sink.hpp"
 #include "render/renderer.hpp"
 #include "render/settings.hpp"
 #include "scene/frame_pattern_check.hpp"
+#include "setup/scene_hash.hpp"
 
 namespace app {
 namespace {
@@ -123,6 +126,16 @@ void print_written(const render::RenderOutputs& outputs, const render::RenderSin
   if (outputs.video) std::printf("video:  %s\n", outputs.video->string().c_str());
 }
 
+// Whether `path` is a PNG file that decodes to width x height pixels.
+bool decodes_at_size(const std::filesystem::path& path, int width, int height) {
+  try {
+    const softbody::Image image = output::read_png(path);
+    return image.width == width && image.height == height;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 // A whole new run: the earlier run's frames (whatever their numbers), figure and video go first, so that a run
 // that fails (diverges, is interrupted) leaves only its own frames, never a mix of two runs. A resumed run
 // keeps its frames (`keep_frames`): its figure and video are made at the end. Says what went.
@@ -204,12 +217,30 @@ int run_render(const RenderOptions& options) {
   output::remove_stale_temporaries(outputs.dir);
   if (!options.resume && chosen.everything()) remove_earlier_outputs(outputs);
   std::unique_ptr<ResumableRun> resumable;
+  output::RunManifest manifest;
   if (options.resume) {
-    const auto frame_done = [&outputs](int frame) {
-      std::error_code ec;
-      return std::filesystem::is_regular_file(outputs.dir / output::frame_file_name(outputs.pattern, frame), ec);
+    // The manifest of the run to continue vouches for the frames it wrote (size and checksum); a frame it does
+    // not vouch for, or that does not decode at the run's size, is made again with all after it.
+    const std::filesystem::path store = outputs.dir / ".softbody-resume", manifest_path = store / "frames.manifest";
+    const std::string scene_hash = setup::hash_text(setup::simulation_hash(scene));
+    const OutputSettings output_settings = render_output_settings(scene);
+    manifest = output::RunManifest::read(manifest_path, scene_hash);
+    std::error_code ec;
+    if (manifest.intact() && std::filesystem::exists(store / "cache.json", ec))
+      manifest.check_settings(output_settings);  // a run to continue: its settings must be these
+    const auto frame_done = [&](int frame) {
+      const std::string name = output::frame_file_name(outputs.pattern, frame);
+      return manifest.vouches_for(outputs.dir, name) &&
+             decodes_at_size(outputs.dir / name, settings.width_px, settings.height_px);
     };
-    resumable = std::make_unique<ResumableRun>(run, outputs.dir / ".softbody-resume", frame_done, outputs.dir);
+    resumable = std::make_unique<ResumableRun>(run, store, frame_done, outputs.dir);
+    std::vector<std::string> kept;
+    for (int frame = 0; frame <= resumable->resumed_after(); ++frame)
+      kept.push_back(output::frame_file_name(outputs.pattern, frame));
+    manifest.start(manifest_path, scene_hash, output_settings, kept);
+    outputs.frame_stored = [&manifest](const std::filesystem::path& path, std::string_view bytes) {
+      manifest.add(path.filename().string(), bytes);
+    };
     if (outputs.video) output::remove_stale_temporaries(outputs.video->parent_path());
     outputs.resumed_after = resumable->resumed_after();
     remove_earlier_outputs(outputs, /*keep_frames=*/outputs.resumed_after >= 0);  // < 0: nothing to continue

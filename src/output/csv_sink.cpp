@@ -8,10 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include <xxhash.h>
-
 #include "core/profile.hpp"
 #include "output/atomic_file.hpp"
+#include "output/checked_line.hpp"
 #include "sim/step/diagnostics.hpp"
 
 namespace output {
@@ -23,34 +22,16 @@ std::string read_text(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// A journal line is a row, a space and the XXH3-64 of the row in 16 hexadecimal digits: a row damaged on disk
-// (bytes overwritten, a line cut by a kill) fails its checksum and is dropped, never copied into the CSV.
-constexpr std::size_t kChecksumDigits = 16;
-
-std::string checksum_text(std::string_view row) {
-  char text[kChecksumDigits + 1];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(XXH3_64bits(row.data(), row.size())));
-  return text;
-}
-
-// The journal lines of `rows` (whole CSV lines, each ending in '\n').
+// The journal lines of `rows` (whole CSV lines, each ending in '\n'): each row with its checksum, so that a
+// row damaged on disk (bytes overwritten, a line cut by a kill) is dropped on resume, never copied into the CSV.
 std::string journal_lines(std::string_view rows) {
   std::string lines;
   for (std::size_t start = 0; start < rows.size();) {
     const std::size_t end = rows.find('\n', start);
-    const std::string_view row = rows.substr(start, end - start);
-    lines.append(row).append(" ").append(checksum_text(row)).append("\n");
+    lines += checked_line(rows.substr(start, end - start));
     start = end + 1;
   }
   return lines;
-}
-
-// The row of a journal line (without its '\n'), or nothing when its checksum does not hold.
-std::optional<std::string_view> checked_row(std::string_view line) {
-  if (line.size() < kChecksumDigits + 2 || line[line.size() - kChecksumDigits - 1] != ' ') return std::nullopt;
-  const std::string_view row = line.substr(0, line.size() - kChecksumDigits - 1);
-  if (line.substr(line.size() - kChecksumDigits) != checksum_text(row)) return std::nullopt;
-  return row;
 }
 
 // The frame number that starts a row, or -1 for a line that is not a whole row.
@@ -79,7 +60,7 @@ CsvSink::CsvSink(std::filesystem::path path, std::filesystem::path journal, int 
     for (std::size_t start = 0; start < old.size();) {
       const std::size_t end = old.find('\n', start);
       if (end == std::string::npos) break;  // a line cut by the kill: not a row
-      const std::optional<std::string_view> row = checked_row(std::string_view(old).substr(start, end - start));
+      const std::optional<std::string_view> row = checked_text(std::string_view(old).substr(start, end - start));
       const int frame = row ? row_frame(*row) : -1;
       if (frame >= 0 && frame <= resume_after) kept.append(*row).append("\n");
       start = end + 1;
@@ -101,7 +82,7 @@ int CsvSink::journalled_through(const std::filesystem::path& journal, std::size_
   for (std::size_t start = 0; start < text.size();) {
     const std::size_t end = text.find('\n', start);
     if (end == std::string::npos) break;
-    const std::optional<std::string_view> row = checked_row(std::string_view(text).substr(start, end - start));
+    const std::optional<std::string_view> row = checked_text(std::string_view(text).substr(start, end - start));
     const int frame = row ? row_frame(*row) : -1;
     if (frame >= 0) {
       if (rows.size() <= static_cast<std::size_t>(frame)) rows.resize(static_cast<std::size_t>(frame) + 1, 0);

@@ -96,7 +96,7 @@ FolderLock::FolderLock(const std::filesystem::path& dir, const std::string& run_
   } catch (const std::system_error& e) {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
-    std::fprintf(stderr, "note: %s: the file system refuses locks (%s): no other run may write into this folder\n",
+    std::fprintf(stderr, "note: %s: cannot lock the folder (%s): no other run may write into it meanwhile\n",
                  path_.c_str(), e.what());
   }
 }

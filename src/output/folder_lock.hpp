@@ -21,8 +21,8 @@ class FolderLock {
   // still empty (a run that failed before writing leaves nothing). `run_identity` says which run this is
   // (the command, the scene's hash, the output settings): chunks share the folder only when theirs are equal.
   // `holder` says who holds it in another run's message ("render scenes/bounce.json"). Throws
-  // softbody::InputError naming the folder when another run holds it; where the file system refuses locks,
-  // prints a note and goes on unlocked.
+  // softbody::InputError naming the folder when another run holds it; where the file system refuses locks (or
+  // the lock file cannot be written), prints a note and goes on unlocked.
   FolderLock(const std::filesystem::path& dir, const std::string& run_identity, Sharing sharing,
              const std::string& holder);
   ~FolderLock();

@@ -40,8 +40,13 @@ std::filesystem::path MeshExporter::frame_path(int index) const {
 
 void MeshExporter::on_frame(int index, double time_s, const sim::World& world) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::mesh_write);
-  write_file_atomically(frame_path(index),
-                        format_ == MeshFormat::Obj ? world_to_obj(world, time_s) : world_to_ply(world, time_s));
+  const std::string bytes = format_ == MeshFormat::Obj ? world_to_obj(world, time_s) : world_to_ply(world, time_s);
+  write_file_atomically(frame_path(index), bytes);
+  if (stored_) stored_(frame_path(index), bytes);
+}
+
+void MeshExporter::after_each_file(std::function<void(const std::filesystem::path&, std::string_view)> stored) {
+  stored_ = std::move(stored);
 }
 
 void MeshExporter::finish(bool /*complete*/) {}

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "frames/frame_sink.hpp"
 
@@ -21,10 +23,13 @@ class MeshExporter final : public frames::FrameSink {
   std::filesystem::path frame_path(int index) const;
   // The frames' file names: "frame_%04d.obj" or "frame_%04d.ply".
   std::string frame_pattern() const;
+  // Calls `stored(path, bytes)` after each frame's file is in place.
+  void after_each_file(std::function<void(const std::filesystem::path&, std::string_view)> stored);
 
  private:
   std::filesystem::path dir_;
   MeshFormat format_;
+  std::function<void(const std::filesystem::path&, std::string_view)> stored_;
 };
 
 // Appends body `body` of `world` as one OBJ object ("o body<N>", its vertices, its texture coordinates where

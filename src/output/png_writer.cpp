@@ -33,6 +33,10 @@ void PngWriter::write(std::filesystem::path path, softbody::Image image) {
   queue_.push({std::move(path), std::move(image)});
 }
 
+void PngWriter::after_each_file(std::function<void(const std::filesystem::path&, std::string_view)> stored) {
+  stored_ = std::move(stored);
+}
+
 void PngWriter::finish() { queue_.finish(); }
 
 softbody::Image PngWriter::recycled_image() {
@@ -50,7 +54,10 @@ void PngWriter::store(Job& job) {
   const std::string bytes =
       softbody::profiled(softbody::ProfilePhase::png_encode, [&] { return encode_png(job.image); });
   const auto encoded = Clock::now();
-  softbody::profiled(softbody::ProfilePhase::png_store, [&] { write_file_atomically(job.path, bytes); });
+  softbody::profiled(softbody::ProfilePhase::png_store, [&] {
+    write_file_atomically(job.path, bytes);
+    if (stored_) stored_(job.path, bytes);
+  });
   const auto stored = Clock::now();
   std::unique_lock lock(timings_mutex_);
   timings_.frames += 1;

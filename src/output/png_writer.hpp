@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <mutex>
+#include <string_view>
 
 #include "core/image.hpp"
 #include "output/worker_queue.hpp"
@@ -27,6 +29,8 @@ class PngWriter {
   PngWriter(const PngWriter&) = delete;
   PngWriter& operator=(const PngWriter&) = delete;
 
+  // Calls `stored(path, bytes)` on the writer thread after each file is in place (set before the first write).
+  void after_each_file(std::function<void(const std::filesystem::path&, std::string_view)> stored);
   // Queues `image` for `path`. Rethrows the error of an earlier frame that failed to write.
   void write(std::filesystem::path path, softbody::Image image);
   // Waits until every queued frame is on disk; rethrows the first error. Later writes are not allowed.
@@ -46,6 +50,7 @@ class PngWriter {
   // The writer thread's work for one frame: encode, write under a temporary name, rename.
   void store(Job& job);
 
+  std::function<void(const std::filesystem::path&, std::string_view)> stored_;
   mutable std::mutex timings_mutex_;
   PngWriterTimings timings_;
   WorkerQueue<Job> queue_;  // last: its thread starts after everything it uses exists

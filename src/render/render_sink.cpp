@@ -28,7 +28,10 @@ constexpr std::size_t kPngQueueFrames = 2;  // frames waiting for the writer: en
 
 RenderSink::RenderSink(Renderer& renderer, RenderOutputs outputs) : renderer_(renderer), outputs_(std::move(outputs)) {
   const RenderSettings& settings = renderer_.settings();
-  if (outputs_.write_frames) png_writer_.emplace(kPngQueueFrames);
+  if (outputs_.write_frames) {
+    png_writer_.emplace(kPngQueueFrames);
+    if (outputs_.frame_stored) png_writer_->after_each_file(outputs_.frame_stored);
+  }
   if (outputs_.video && !outputs_.video_from_files) {
     video_ =
         std::make_unique<output::VideoWriter>(*outputs_.video, settings.width_px, settings.height_px, outputs_.fps);

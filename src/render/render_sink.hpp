@@ -7,9 +7,11 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "frames/capturing_sink.hpp"
@@ -37,6 +39,8 @@ struct RenderOutputs {
   // than piped while rendering (a killed ffmpeg cannot be continued): the same frames into the same pipe.
   int resumed_after = -1;
   bool video_from_files = false;
+  // When set: called on the PNG writer's thread after each frame file is in place, with its bytes.
+  std::function<void(const std::filesystem::path&, std::string_view)> frame_stored;
 };
 
 // Wall-clock time of each stage, summed over the frames [s]. Read by the summary line and benchmarks.

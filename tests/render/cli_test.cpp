@@ -349,25 +349,31 @@ TEST(RenderCommand, AFailedRerunAfterALongerRunLeavesOnlyItsOwnFrames) {
   EXPECT_EQ(other_files(out), std::vector<std::string>{});
 }
 
-// SIGINT during a rerun into the folder of an earlier run with a video: the earlier video and later frames are
-// gone, the run's own complete frames are there.
+// SIGINT during a rerun into the folder of an earlier run with a video (61 frames): the earlier video and later
+// frames are gone, the run's own complete frames are there. The signal comes once the rerun has removed the
+// earlier frames and written its third.
 TEST(RenderCommand, AnInterruptedRerunLeavesNoEarlierVideoOrFrames) {
   if (run_shell("ffmpeg -version").exit_status != 0) GTEST_SKIP() << "ffmpeg is not installed";
   const std::filesystem::path out = render_test::fresh_output_dir("cli_rerun_interrupted");
-  const std::string video = "--video " + quoted(out / "v.mp4");
-  ASSERT_EQ(run_shell(render_command(out, "--set duration=3 " + video)).exit_status, 0);
-  ASSERT_EQ(count_frame_files(out), 31);
-  const CommandResult interrupted = run_shell("timeout --preserve-status -s INT 3 " +
-                                              render_command(out,
-                                                             "--set render.figure_frames=0 "
-                                                             "--set bodies.0.mesh=icosphere:4 --set duration=10000 " +
-                                                                 video));
-  ASSERT_EQ(interrupted.exit_status, 130) << interrupted.output;
-  const std::size_t at = interrupted.output.find("stopped after ");
-  ASSERT_NE(at, std::string::npos) << interrupted.output;
-  const int frames = std::stoi(interrupted.output.substr(at + 14));
+  ASSERT_EQ(run_shell(render_command(out, "--set duration=6 --video " + quoted(out / "v.mp4"))).exit_status, 0);
+  ASSERT_EQ(count_frame_files(out), 61);
+  testing_support::BackgroundRun run(
+      {"render", std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json", "-o", out.string(), "--set",
+       "duration=10000", "--set", "render.figure_frames=0", "--video", (out / "v.mp4").string()},
+      testing_support::scratch_dir("cli_rerun_interrupted_log"));
+  const auto drawing = [&] {
+    return !std::filesystem::exists(out / "frame_0060.png") && std::filesystem::exists(out / "frame_0002.png");
+  };
+  ASSERT_TRUE(run.wait_until(drawing, std::chrono::seconds(60))) << run.errors();
+  run.signal(SIGINT);
+  ASSERT_EQ(run.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << run.errors();
+  const std::size_t at = run.errors().find("stopped after ");
+  ASSERT_NE(at, std::string::npos) << run.errors();
+  const int frames = std::stoi(run.errors().substr(at + 14));
   EXPECT_EQ(count_frame_files(out), frames);
-  EXPECT_LT(frames, 31) << "the machine drew the finer ball faster than expected: the check proves nothing";
+  EXPECT_LT(frames, 61);
+  for (int i = 0; i < frames; ++i)
+    EXPECT_TRUE(std::filesystem::exists(out / output::frame_file_name("frame_%04d.png", i)));
   EXPECT_EQ(other_files(out), std::vector<std::string>{});
 }
 
@@ -400,6 +406,51 @@ TEST(RenderCommand, TwoRunsCannotWriteOneFolderButTheChunksOfOneRenderCan) {
   const CommandResult after = run_shell(render_command(out));
   EXPECT_EQ(after.exit_status, 0) << after.output;
   EXPECT_EQ(count_frame_files(out), 11);
+}
+
+}  // namespace
+
+namespace {
+
+// render --resume checks every frame it keeps against the run's manifest (size, checksum) and decodes it: after
+// SIGINT, a frame cut to 500 bytes is made again, not kept. A resume with another render.width is refused with
+// exit status 2 naming the key, touching nothing. The resumed frames are an uninterrupted run's, byte for byte.
+TEST(RenderCommand, ResumeRemakesADamagedFrameAndRefusesOtherSettings) {
+  const std::filesystem::path reference = render_test::fresh_output_dir("cli_resume_reference");
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_resume_damaged");
+  const std::string slow = "--set duration=3 --set bodies.0.mesh=icosphere:4 --set render.figure_frames=0";
+  ASSERT_EQ(run_shell(render_command(reference, slow)).exit_status, 0);
+  ASSERT_EQ(count_frame_files(reference), 31);
+  {
+    testing_support::BackgroundRun run(
+        {"render", std::filesystem::path(SOFTBODY_TEST_SCENES_DIR) / "render_track.json", "-o", out.string(), "--set",
+         "duration=3", "--set", "bodies.0.mesh=icosphere:4", "--set", "render.figure_frames=0", "--resume"},
+        testing_support::scratch_dir("cli_resume_damaged_log"));
+    ASSERT_TRUE(
+        run.wait_until([&] { return std::filesystem::exists(out / "frame_0004.png"); }, std::chrono::seconds(60)))
+        << run.errors();
+    run.signal(SIGINT);
+    ASSERT_EQ(run.wait_for_exit(std::chrono::seconds(60)), std::optional<int>(130)) << run.errors();
+  }
+  ASSERT_LT(count_frame_files(out), 31);
+  std::filesystem::resize_file(out / "frame_0002.png", 500);
+  const std::string frame_3 = file_bytes(out / "frame_0003.png");
+
+  const CommandResult other = run_shell(render_command(out, slow + " --set render.width=320 --resume"));
+  EXPECT_EQ(other.exit_status, 2) << other.output;
+  EXPECT_NE(other.output.find("--resume: render.width is 320 now but 160 in the run it continues"), std::string::npos)
+      << other.output;
+  EXPECT_EQ(file_bytes(out / "frame_0003.png"), frame_3);
+
+  const CommandResult resumed = run_shell(render_command(out, slow + " --resume"));
+  ASSERT_EQ(resumed.exit_status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("frames 0..1 are complete"), std::string::npos) << resumed.output;
+  ASSERT_EQ(count_frame_files(out), 31);
+  for (int frame = 0; frame <= 30; ++frame) {
+    const std::string name = output::frame_file_name("frame_%04d.png", frame);
+    EXPECT_EQ(file_bytes(out / name), file_bytes(reference / name)) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out / ".softbody-resume"));
 }
 
 }  // namespace
