@@ -1,6 +1,7 @@
 // Vertex block descent: the step's targets, the sweeps, and one vertex's local Newton step with its line search.
 #include "sim/integrators/vertex_block_descent.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -16,6 +17,28 @@ constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this
 // A Newton step shorter than this fraction of the body's mean edge is taken without a line search: E's change is then
 // below its own round-off (about k ε l |l − L0| for a spring), so the test could only refuse a harmless move.
 constexpr double kNegligibleStep = 1e-8;
+// Around an impact on the smooth floor the steps shrink to ω h ≤ kImpactPhase (ω = 1/τ, the contact's spring per unit
+// mass; the impact lasts about π/ω). A step counts as an impact where the vertices in or reaching contact within it
+// carry more normal momentum Σ m |v_y| than the body would at kImpactSpeed: a roll or a rest, whose vertices touch
+// down slowly, keeps full steps. Measured on scenes/bounce_smooth.json (docs/notes/2026-12-05-vbd.md).
+constexpr double kImpactPhase = 0.5;
+constexpr double kImpactSpeed = 0.01;  // m/s
+// The steps within a driver's step dt are dt / 2^level, level 0 to kDeepestLevel, so that they always tile it.
+constexpr int kDeepestLevel = 12;
+// A run starts at this level (backward Euler's first step leaves a free fall ½ h² g off for good, and the gas's first
+// push is the fastest motion of a run that starts at the rest shape) and doubles from there.
+constexpr int kStartLevel = 4;
+// The steps double only where BDF2's local error at twice the step, (2/9)(2h)³|x‴| ≈ (16/9) h |Δ²v|, is below this
+// fraction of the body's mean edge at every vertex (a motion that is still settling, e.g. a buckling start, gained
+// energy where the steps doubled regardless).
+constexpr double kGrowthTolerance = 1e-2;
+
+// Whether a and b are the same step size (both made by std::ldexp of one dt).
+bool same_step(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(a, b); }
+
+bool has_history(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt, std::size_t n) {
+  return x.size() == n && v.size() == n && dt > 0.0;
+}
 
 // The gas of one body as a function of its volume: E = −nRT ln V, held to the force model's guard below
 // V_g (sim::guarded_volume): there the pressure stays nRT/V_g and E continues linearly, so E stays convex in V.
@@ -150,18 +173,22 @@ void VertexBlockDescent::prepare_once(const Model& model) {
   if (model.floor && model.floor->contact == FloorContact::Smooth) smooth_floor_ = resolve_smooth_floor(*model.floor);
 }
 
-double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, bool bdf2) {
+double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, double ratio,
+                                       const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous) {
   const std::size_t n = state.x.size();
   target_.resize(n);
   base_.resize(n);
-  const double h_hat = bdf2 ? 2.0 * h / 3.0 : h;
+  // Variable-step BDF2 with ω = h_n/h_{n−1} (Hairer, Nørsett & Wanner, "Solving ODEs I", Sect. III.5):
+  //   x' − x̃ = ĥ v', x̃ = ((1+ω)² x_n − ω² x_{n−1})/(1+2ω), ĥ = h (1+ω)/(1+2ω); ω = 1: (4x_n − x_{n−1})/3, 2h/3.
+  const bool bdf2 = ratio > 0.0;
+  const double a = bdf2 ? (1.0 + ratio) * (1.0 + ratio) / (1.0 + 2.0 * ratio) : 1.0;  // weight of step n
+  const double b = a - 1.0;                                                           // of step n − 1
+  const double h_hat = bdf2 ? h * (1.0 + ratio) / (1.0 + 2.0 * ratio) : h;
   const Vec3 fall = (h_hat * h_hat) * model.gravity_m_per_s2;  // ĥ² g [m]
-  const std::vector<Vec3>& x_previous = state.carry.previous_x;
-  const std::vector<Vec3>& v_previous = state.carry.previous_v;
   for (std::size_t i = 0; i < n; ++i) {
     if (bdf2) {
-      base_[i] = (4.0 * state.x[i] - x_previous[i]) / 3.0;                                // x̃
-      target_[i] = base_[i] + (h_hat / 3.0) * (4.0 * state.v[i] - v_previous[i]) + fall;  // x̃ + ĥ ṽ + ĥ² g
+      base_[i] = a * state.x[i] - b * x_previous[i];                                // x̃
+      target_[i] = base_[i] + h_hat * (a * state.v[i] - b * v_previous[i]) + fall;  // x̃ + ĥ ṽ + ĥ² g
     } else {
       base_[i] = state.x[i];
       target_[i] = state.x[i] + h * state.v[i] + fall;
@@ -193,17 +220,56 @@ Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3
 using Matrix12 = Eigen::Matrix<double, 12, 12>;
 using Vector12 = Eigen::Matrix<double, 12, 1>;
 
-// Adds B_iᵀ (w I) B_i and B_iᵀ g to the coarse system for a vertex at r = x_i − c: the inertia's part.
-void add_isotropic(double w, const Vec3& r, Matrix12& K) {
-  for (int row = 0; row < 3; ++row) {
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) K(3 * row + a, 3 * row + b) += w * r[a] * r[b];
-      K(3 * row + a, 9 + row) += w * r[a];
-      K(9 + row, 3 * row + a) += w * r[a];
-    }
-    K(9 + row, 9 + row) += w;
+// The coarse system's parts that sum over vertices and edges, gathered as moments and spread into K once:
+//   inertia  Σ_i w_i B_iᵀ B_i:       Σ w, Σ w r, Σ w r rᵀ (r = x_i − c)
+//   edges    Σ_e (B_i − B_j)ᵀ H_e (B_i − B_j) with H_e = T I + α n̂n̂ᵀ and (B_i − B_j) q = A d:
+//            T I ⊗ d dᵀ gives Σ T d dᵀ on K_AA's diagonal blocks; α n̂n̂ᵀ ⊗ d dᵀ = (α/|d|²) vec(d dᵀ) vec(d dᵀ)ᵀ,
+//            gathered over the six distinct entries p of d dᵀ as Σ (α/|d|²) p pᵀ.
+struct CoarseMoments {
+  double mass = 0.0;
+  Vec3 first = Vec3::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();                         // Σ w r rᵀ + Σ_e T d dᵀ
+  Eigen::Matrix<double, 6, 6> along = Eigen::Matrix<double, 6, 6>::Zero();  // Σ (α/|d|²) p pᵀ (upper triangle)
+
+  void add_inertia(double w, const Vec3& r) {
+    mass += w;
+    first += w * r;
+    add_outer(w, r);
   }
-}
+  void add_outer(double w, const Vec3& d) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = a; b < 3; ++b) second(a, b) += w * d[a] * d[b];
+    }
+  }
+  void add_edge(double transverse, double along_weight, const Vec3& d) {
+    add_outer(transverse, d);
+    const double p[6] = {d.x() * d.x(), d.x() * d.y(), d.x() * d.z(), d.y() * d.y(), d.y() * d.z(), d.z() * d.z()};
+    for (int u = 0; u < 6; ++u) {
+      const double wp = along_weight * p[u];
+      for (int v = u; v < 6; ++v) along(u, v) += wp * p[v];
+    }
+  }
+  // K += the moments, spread over the 12 unknowns (A row-major, then t).
+  void spread_into(Matrix12& K) const {
+    static constexpr int kPair[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};  // the index of (a, b) in p
+    const Eigen::Matrix3d second_full = second.selfadjointView<Eigen::Upper>();
+    const Eigen::Matrix<double, 6, 6> along_full = along.selfadjointView<Eigen::Upper>();
+    for (int row = 0; row < 3; ++row) {
+      for (int a = 0; a < 3; ++a) {
+        for (int col = 0; col < 3; ++col) {
+          for (int b = 0; b < 3; ++b) {
+            double value = along_full(kPair[row][a], kPair[col][b]);
+            if (row == col) value += second_full(a, b);
+            K(3 * row + a, 3 * col + b) += value;
+          }
+        }
+        K(3 * row + a, 9 + row) += first[a];
+        K(9 + row, 3 * row + a) += first[a];
+      }
+      K(9 + row, 9 + row) += mass;
+    }
+  }
+};
 
 // += B_iᵀ H B_i for a general symmetric 3×3 H at r.
 void add_block(const Block3& block, const Vec3& r, Matrix12& K) {
@@ -249,11 +315,12 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   centre /= mass;
   Matrix12 K = Matrix12::Zero();
   Vector12 G = Vector12::Zero();
+  CoarseMoments moments;
   // Vertices: inertia and floor.
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
-    add_isotropic(m * s.inverse_h2, r, K);
+    moments.add_inertia(m * s.inverse_h2, r);
     Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
@@ -279,15 +346,10 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     const double along = k + c_over_h - transverse;
     for (int row = 0; row < 3; ++row) {
       for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
-      for (int col = 0; col < 3; ++col) {
-        const double h_rc = (row == col ? transverse : 0.0) + along * axis[row] * axis[col];
-        if (h_rc == 0.0) continue;
-        for (int a = 0; a < 3; ++a) {
-          for (int b = 0; b < 3; ++b) K(3 * row + a, 3 * col + b) += h_rc * d[a] * d[b];
-        }
-      }
     }
+    moments.add_edge(transverse, along / (length * length), d);
   }
+  moments.spread_into(K);
   // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ.
   double volume = 0.0;
   if (s.gas) {
@@ -443,24 +505,117 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   }
 }
 
+bool VertexBlockDescent::impact_within(const Model& model, const State& state, double h) const {
+  const double g_y = model.gravity_m_per_s2.y();
+  const double floor_y = smooth_floor_->height_m;
+  for (const Body& body : model.bodies) {
+    const auto x = Model::of(body, state.x);
+    const auto v = Model::of(body, state.v);
+    const auto m = Model::of(body, model.mass_kg);
+    double approach = 0.0, body_mass = 0.0;  // Σ m |v_y| of the vertices in or reaching contact [kg m/s]
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      body_mass += m[i];
+      // The lowest point of the free path y + v t + ½ g t² over [0, h]: an end, or its vertex where g_y > 0.
+      double lowest = std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g_y * h * h);
+      if (g_y > 0.0 && v[i].y() < 0.0 && -v[i].y() / g_y < h) lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g_y;
+      if (lowest < floor_y) approach += m[i] * std::abs(v[i].y());
+    }
+    // An impact: the vertices reaching the floor carry more normal momentum than the body at kImpactSpeed.
+    if (approach > kImpactSpeed * body_mass) return true;
+  }
+  return false;
+}
+
+bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State& state, double h) const {
+  const IntegratorCarry& carry = state.carry;
+  const double tolerance = kGrowthTolerance;
+  for (const Body& body : model.bodies) {
+    const double allowed = tolerance * body.rest.mean_edge_m;
+    const auto v = Model::of(body, state.v), v1 = Model::of(body, carry.previous_v),
+               v2 = Model::of(body, carry.older_v);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const double second_difference = (v[i] - 2.0 * v1[i] + v2[i]).norm();  // h² x‴ [m/s]
+      if (16.0 / 9.0 * h * second_difference > allowed) return false;
+    }
+  }
+  return true;
+}
+
+int VertexBlockDescent::next_level(const Model& model, const State& state, double dt, int level, long long done) const {
+  const IntegratorCarry& carry = state.carry;
+  const double h = std::ldexp(dt, -level);
+  if (smooth_floor_ && impact_within(model, state, h)) {  // the shallowest level with ω h ≤ kImpactPhase
+    const double pieces = dt * std::sqrt(smooth_floor_->omega2) / kImpactPhase;
+    const int impact_level = static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0))));
+    return std::clamp(impact_level, level, kDeepestLevel);
+  }
+  // Double where the two steps before were both h (a BDF2 step of 2h from two steps back) and 2h ends on its grid.
+  const long long double_ticks = 2LL << (kDeepestLevel - level);
+  const bool can_double = level > 0 && done % double_ticks == 0 && same_step(carry.previous_dt_s, h) &&
+                          same_step(carry.older_dt_s, h) &&
+                          has_history(carry.older_x, carry.older_v, carry.older_dt_s, state.x.size());
+  if (can_double && smooth_enough_to_double(model, state, h) &&
+      !(smooth_floor_ && impact_within(model, state, 2.0 * h))) {
+    return level - 1;
+  }
+  return level;
+}
+
+namespace {
+
+// The level of the step before, where it was one of dt's (dt / 2^level), else 0.
+int previous_level(const State& state, double dt) {
+  for (int level = 0; level <= kDeepestLevel; ++level) {
+    if (same_step(std::ldexp(dt, -level), state.carry.previous_dt_s)) return level;
+  }
+  return 0;
+}
+
+}  // namespace
+
 void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   const Model& model = dynamics.model();
   prepare_once(model);
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
-  const IntegratorCarry& carry = state.carry;
-  const bool bdf2 = carry.previous_x.size() == state.x.size() && carry.previous_v.size() == state.x.size() &&
-                    std::abs(carry.previous_dt_s - dt) <= 1e-12 * dt;
-  const double h_hat = set_targets(model, state, dt, bdf2);
+  int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);
+  const long long whole = 1LL << kDeepestLevel;  // dt in ticks of dt / 2^kDeepestLevel
+  for (long long done = 0; done < whole;) {
+    level = next_level(model, state, dt, level, done);
+    take_step(model, state, std::ldexp(dt, -level));
+    done += 1LL << (kDeepestLevel - level);
+  }
+}
+
+void VertexBlockDescent::take_step(const Model& model, State& state, double h) {
+  IntegratorCarry& carry = state.carry;
+  const std::size_t n = state.x.size();
+  // BDF2 from the step before (at the same or a larger h: ratio ω ≤ 1), or, doubling, from the step before that.
+  double ratio = 0.0;
+  bool from_older = false;
+  if (has_history(carry.previous_x, carry.previous_v, carry.previous_dt_s, n) &&
+      h <= carry.previous_dt_s * (1.0 + 1e-12)) {
+    ratio = same_step(h, carry.previous_dt_s) ? 1.0 : h / carry.previous_dt_s;
+  } else if (same_step(h, 2.0 * carry.previous_dt_s) && same_step(carry.older_dt_s, carry.previous_dt_s) &&
+             has_history(carry.older_x, carry.older_v, carry.older_dt_s, n)) {
+    ratio = 1.0;
+    from_older = true;
+  }
+  const double h_hat = set_targets(model, state, h, ratio, from_older ? carry.older_x : carry.previous_x,
+                                   from_older ? carry.older_v : carry.previous_v);
   start_x_ = state.x;
   start_v_ = state.v;
   state.x = target_;  // the initial guess: y
   for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, state.x);
-  for (std::size_t i = 0; i < state.x.size(); ++i) state.v[i] = (state.x[i] - base_[i]) / h_hat;  // v' = (x' − x̃)/ĥ
-  state.carry.previous_x.swap(start_x_);
-  state.carry.previous_v.swap(start_v_);
-  state.carry.previous_dt_s = dt;
+  for (std::size_t i = 0; i < n; ++i) state.v[i] = (state.x[i] - base_[i]) / h_hat;  // v' = (x' − x̃)/ĥ
+  // The history moves one step on: older ← previous ← the step's start (start_x_ keeps the oldest as scratch).
+  carry.older_x.swap(carry.previous_x);
+  carry.older_v.swap(carry.previous_v);
+  carry.older_dt_s = carry.previous_dt_s;
+  carry.previous_x.swap(start_x_);
+  carry.previous_v.swap(start_v_);
+  carry.previous_dt_s = h;
   ++statistics_.steps;
-  if (bdf2) ++statistics_.bdf2_steps;
+  if (ratio > 0.0) ++statistics_.bdf2_steps;
 }
 
 }  // namespace sim
