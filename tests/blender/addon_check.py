@@ -1,7 +1,7 @@
 # Runs inside Blender (blender -b --factory-startup --python-exit-code 1 --python addon_check.py -- ZIP SOFTBODY DIR):
 # installs the add-on from its zip, bakes an icosphere dropped on the floor (moved, turned and scaled, so that the
 # object's transform and the axes matter), and checks the evaluated vertices against the program's own export of
-# the same scene file; then Clear, and a bad setting's error report. Then a mesh that softbody changes (an icosphere
+# the same scene file; then Clear, Cancel (the runner's), and a bad setting's error report. Then a mesh that softbody changes (an icosphere
 # with a hole, repaired): the object must play the mesh softbody wrote, and Clear give its own mesh back.
 import math
 import os
@@ -137,6 +137,23 @@ def check_repaired_mesh(program, bake_dir, scratch):
         fail("Clear did not give the repaired object its own mesh back")
 
 
+def check_cancel(program, bake_dir):
+    """Cancel as Esc does it (the modal bake needs a window): the add-on's runner stops a long run within seconds."""
+    import time
+    from softbody_blender.runner import ProgramRun
+    run = ProgramRun(program, ["export", os.path.join(bake_dir, "scene.json"), "--set", "duration=600", "--format",
+                               "pc2", "-o", os.path.join(bake_dir, "cancelled"), "--progress-lines"], bake_dir)
+    deadline = time.time() + 60
+    while run.done < 3 and run.running() and time.time() < deadline:
+        time.sleep(0.05)
+    started = time.time()
+    run.cancel()
+    print("blender addon: cancel at frame %d/%d: the program ended in %.3f s (status %s)"
+          % (run.done, run.total, time.time() - started, run.returncode))
+    if run.done < 3 or run.returncode == 0 or time.time() - started > 5.0:
+        fail("cancel did not stop the program: %s" % run.error_message())
+
+
 def check_clear(ball, before, matrix_before):
     if bpy.ops.softbody.clear() != {"FINISHED"}:
         fail("softbody.clear did not finish")
@@ -179,6 +196,7 @@ def main():
     check_start_frame(ball, before)
     check_against_cli(ball, program, bake_dir, scratch, before)
     check_clear(ball, before, matrix_before)
+    check_cancel(program, bake_dir)
     check_error_report(ball)
     ball.softbody_pressure.enabled = False
     check_repaired_mesh(program, bake_dir, scratch)
