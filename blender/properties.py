@@ -1,7 +1,8 @@
 # The settings the panels show: per mesh object (its body's keys) and per scene (the run's keys). Each maps to one
 # key of softbody's scene file (docs/guide/scene-keys.md); scene_writer.py does the mapping.
 import bpy
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
+from bpy.props import (BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty,
+                       StringProperty)
 
 
 class SoftbodyObjectSettings(bpy.types.PropertyGroup):

@@ -1,12 +1,14 @@
 # Runs inside Blender (blender -b --factory-startup --python-exit-code 1 --python addon_check.py -- ZIP SOFTBODY DIR):
 # installs the add-on from its zip, bakes an icosphere dropped on the floor (moved, turned and scaled, so that the
 # object's transform and the axes matter), and checks the evaluated vertices against the program's own export of
-# the same scene file; then Clear, Cancel (the runner's), and a bad setting's error report. Then a mesh that softbody changes (an icosphere
-# with a hole, repaired): the object must play the mesh softbody wrote, and Clear give its own mesh back.
-import math
+# the same scene file; then Clear, Cancel (the runner's), and a bad setting's error report. Then a mesh that
+# softbody changes (an icosphere with a hole, repaired): the object must play the mesh softbody wrote, and Clear give
+# its own mesh back. The panels are drawn into a stand-in layout (no window in background mode).
+import itertools
 import os
 import subprocess
 import sys
+import time
 
 import bpy
 
@@ -139,7 +141,6 @@ def check_repaired_mesh(program, bake_dir, scratch):
 
 def check_cancel(program, bake_dir):
     """Cancel as Esc does it (the modal bake needs a window): the add-on's runner stops a long run within seconds."""
-    import time
     from softbody_blender.runner import ProgramRun
     run = ProgramRun(program, ["export", os.path.join(bake_dir, "scene.json"), "--set", "duration=600", "--format",
                                "pc2", "-o", os.path.join(bake_dir, "cancelled"), "--progress-lines"], bake_dir)
@@ -152,6 +153,58 @@ def check_cancel(program, bake_dir):
           % (run.done, run.total, time.time() - started, run.returncode))
     if run.done < 3 or run.returncode == 0 or time.time() - started > 5.0:
         fail("cancel did not stop the program: %s" % run.error_message())
+
+
+class CheckingLayout:
+    """Stands in for a panel's layout in background mode (no window draws the panels): every property a panel
+    shows must exist, every operator it offers must be registered."""
+
+    def __init__(self):
+        self.shown = []
+
+    def prop(self, data, name, **_):
+        if name not in data.bl_rna.properties:
+            fail("a panel shows %s.%s, which does not exist" % (data.bl_rna.identifier, name))
+        self.shown.append(name)
+
+    def operator(self, name, **_):
+        group, operator = name.split(".")
+        if not hasattr(getattr(bpy.ops, group), operator):
+            fail("a panel offers the operator %s, which is not registered" % name)
+
+    def row(self, **_):
+        return self
+
+    def label(self, **_):
+        pass
+
+
+def check_panels(ball):
+    """Draws both panels in every mode of their choices."""
+    settings, scene_settings, shown = ball.softbody_pressure, bpy.context.scene.softbody_pressure, set()
+    modes = [[(group, name, item.identifier) for item in group.bl_rna.properties[name].enum_items]
+             for group, name in ((settings, "stiffness_mode"), (settings, "damping_mode"), (settings, "pressure_mode"),
+                                 (settings, "bending_mode"), (settings, "resolution_mode"),
+                                 (scene_settings, "floor_contact"))]
+    for choice in itertools.product(*modes):
+        for group, name, value in choice:
+            setattr(group, name, value)
+        for panel in (bpy.types.SOFTBODY_PT_object, bpy.types.SOFTBODY_PT_scene):
+            layout = CheckingLayout()
+            drawn = type("Panel", (), {"layout": layout})()
+            panel.draw(drawn, bpy.context)
+            if hasattr(panel, "draw_header"):
+                panel.draw_header(drawn, bpy.context)
+            shown.update(layout.shown)
+    unshown = {"rna_type", "name", "last_message"}  # name: every property group's; last_message: a label
+    missing = [name for group in (settings, scene_settings)
+               for name in group.bl_rna.properties.keys() if name not in shown and name not in unshown]
+    print("blender addon: panels: %d settings shown in %d combinations of modes" % (len(shown), len(list(
+        itertools.product(*modes)))))
+    if missing:
+        fail("the panels never show %s" % ", ".join(missing))
+    for group, name, value in (m[0] for m in modes):
+        setattr(group, name, value)
 
 
 def check_clear(ball, before, matrix_before):
@@ -189,6 +242,8 @@ def main():
     install(zip_path, program)
     bake_dir = os.path.join(scratch, "bake")
     ball = make_scene(bake_dir)
+    check_panels(ball)
+    ball.softbody_pressure.damping_mode = "RATIO"
     bpy.context.view_layer.update()
     before = evaluated_world(ball)
     matrix_before = [list(row) for row in ball.matrix_world]
