@@ -7,6 +7,7 @@
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
+#include "sim/integrators/vertex_energy.hpp"
 
 namespace sim {
 
@@ -66,17 +67,18 @@ class VertexBlockDescent final : public Integrator {
                      const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous);
   // solver.iterations sweeps over body b's vertices, from x = y.
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
+  // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
+  void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
   std::vector<Vec3> coarse_motion_, coarse_scratch_;
-  std::vector<VertexBlocks> blocks_;                 // per body
-  std::optional<SmoothFloor> smooth_floor_;          // the floor's constants when its contact is smooth
-  std::vector<Vec3> target_;                         // y per vertex [m]
-  std::vector<Vec3> base_;                           // x̃ per vertex [m]
-  std::vector<Vec3> start_x_, start_v_;              // x_n, v_n (then the next step's history)
-  std::vector<Vec3> lagged_axis_;                    // scratch: the directions n̂ of one vertex's constraints
-  std::vector<double> lagged_length_, lagged_rate_;  // scratch: their lengths l [m] and approach (Δx_i − Δx_j)·n̂ [m]
+  std::vector<VertexBlocks> blocks_;         // per body
+  std::optional<SmoothFloor> smooth_floor_;  // the floor's constants when its contact is smooth
+  std::vector<Vec3> target_;                 // y per vertex [m]
+  std::vector<Vec3> base_;                   // x̃ per vertex [m]
+  std::vector<Vec3> start_x_, start_v_;      // x_n, v_n (then the next step's history)
+  ConstraintLags lags_;                      // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
 };
 
