@@ -15,7 +15,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::
   RunStats stats;
   const auto start = WallClock::now();
   auto capture = [&](int index) {
-    for (CapturingFrameSink* sink : sinks) sink->capture(index, index * clock.frame_interval_s, world);
+    for (CapturingFrameSink* sink : sinks) sink->capture(index, frame_time_s(clock, index), world);
   };
   auto deliver = [&]() {
     for (CapturingFrameSink* sink : sinks) sink->deliver();
