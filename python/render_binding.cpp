@@ -1,0 +1,47 @@
+// softbody.render(sim, width=, height=): the simulation's current frame as the render command draws it, as a numpy
+// image.
+#include <cstring>
+#include <optional>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "numpy_image.hpp"
+#include "simulation.hpp"
+
+namespace py = pybind11;
+
+namespace softbody_python {
+namespace {
+
+constexpr int kMaxSidePx = 16384;
+
+int checked_side(const char* name, int value) {
+  if (value < 1 || value > kMaxSidePx) {
+    throw py::value_error(std::string(name) + " = " + std::to_string(value) + ": expected 1 .. " +
+                          std::to_string(kMaxSidePx) + " pixels");
+  }
+  return value;
+}
+
+}  // namespace
+
+void register_render(py::module_& module) {
+  module.def(
+      "render",
+      [](Simulation& simulation, std::optional<int> width, std::optional<int> height) {
+        const scene::RenderSettings& scene_size = simulation.scene().render;
+        const softbody::Image image = simulation.render(checked_side("width", width.value_or(scene_size.width_px)),
+                                                        checked_side("height", height.value_or(scene_size.height_px)));
+        return to_numpy(image);
+      },
+      py::arg("sim"), py::kw_only(), py::arg("width") = py::none(), py::arg("height") = py::none(),
+      "The simulation's current frame drawn off-screen as `softbody render` draws it (the same pixels on the same "
+      "GL backend): a numpy array (height, width, 3) uint8, sRGB, top row first. The size defaults to the scene's "
+      "render.width and render.height. A scene without camera gets the render command's camera, which frames the "
+      "whole run: the first render() makes a silent pass over it, as the command does.");
+}
+
+}  // namespace softbody_python
