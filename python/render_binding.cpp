@@ -1,7 +1,7 @@
 // softbody.render(sim, width=, height=): the simulation's current frame as the render command draws it, as a numpy
 // image.
-#include <cstring>
 #include <optional>
+#include <string>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

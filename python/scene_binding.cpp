@@ -1,10 +1,12 @@
 // softbody.load_scene(path, set={...}) and the Scene it returns: the command line's scene loading and --set, with
 // its checks and messages (scene::load_scene).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
@@ -49,10 +51,8 @@ void register_scene(py::module_& module) {
 
   module.def(
       "load_scene",
-      [](const std::filesystem::path& path, const py::object& overrides) {
-        const std::vector<std::string> arguments =
-            overrides.is_none() ? std::vector<std::string>{} : set_arguments(overrides.cast<py::dict>());
-        return scene::load_scene(path, arguments);
+      [](const std::filesystem::path& path, const std::optional<py::dict>& overrides) {
+        return scene::load_scene(path, overrides ? set_arguments(*overrides) : std::vector<std::string>{});
       },
       py::arg("path"), py::arg("set") = py::none(),
       "Reads a scene file (JSON, // comments allowed) with the same keys and checks as the softbody program.\n\n"

@@ -1,6 +1,5 @@
 // softbody.Simulation, its frames() iterator and the Frame it yields; positions() and row() read the current frame.
 // Ctrl-C (SIGINT) reaches Python between two steps: the frame in progress is dropped and KeyboardInterrupt raised.
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
