@@ -32,6 +32,7 @@ void register_render(py::module_& module) {
   module.def(
       "render",
       [](Simulation& simulation, std::optional<int> width, std::optional<int> height) {
+        simulation.check_idle();
         const scene::RenderSettings& scene_size = simulation.scene().render;
         const softbody::Image image = simulation.render(checked_side("width", width.value_or(scene_size.width_px)),
                                                         checked_side("height", height.value_or(scene_size.height_px)));

@@ -41,6 +41,14 @@ std::optional<Frame> Simulation::next_frame(sim::StopQuery stop) {
 
 Frame Simulation::frame() const { return {frame_, frames::frame_time_s(run_.clock, frame_)}; }
 
+void Simulation::check_idle() const {
+  if (stepping_) {
+    throw std::runtime_error(
+        "the simulation is stepping to its next frame in another thread: use it there, or once frames() has "
+        "handed the frame out");
+  }
+}
+
 void Simulation::check_body(std::size_t body) const {
   if (body >= body_count()) {
     throw std::out_of_range("body " + std::to_string(body) + ": the simulation has " + std::to_string(body_count()) +

@@ -45,6 +45,11 @@ class Simulation {
   // The CSV row of `body` at this frame; throws std::out_of_range.
   output::CsvRow row(std::size_t body) const;
 
+  // While next_frame runs with Python's lock released (python/simulation_binding.cpp), every other use from another
+  // thread is refused: check_idle() throws std::runtime_error saying so.
+  void set_stepping(bool stepping) { stepping_ = stepping; }
+  void check_idle() const;
+
   // This frame drawn at width x height pixels, with the scene's camera or, when it has none, the camera the render
   // command frames the whole run with (a silent pass over the run from frame 0, made once).
   softbody::Image render(int width_px, int height_px);
@@ -60,6 +65,7 @@ class Simulation {
   std::optional<std::string> diverged_;
   std::optional<output::MotionTrack> motion_;
   std::unique_ptr<FrameRenderer> renderer_;
+  bool stepping_ = false;
 };
 
 }  // namespace softbody_python

@@ -1,5 +1,8 @@
 // softbody.Simulation, its frames() iterator and the Frame it yields; positions() and row() read the current frame.
 // Ctrl-C (SIGINT) reaches Python between two steps: the frame in progress is dropped and KeyboardInterrupt raised.
+// The steps run without Python's lock (the GIL); the simulation is then refused to other threads until they end.
+#include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -15,21 +18,51 @@ namespace py = pybind11;
 namespace softbody_python {
 namespace {
 
-// Asked before every step (the GIL is held): runs Python's signal handlers; true when one raised (SIGINT's
-// KeyboardInterrupt), which then stays set for the caller to raise.
-bool python_signal_raised() { return PyErr_CheckSignals() != 0; }
+// How often the steps take Python's lock back to run its signal handlers: Ctrl-C acts within this (and one step),
+// and a busy Python thread costs the stepping at most its switch interval (5 ms) per check.
+constexpr std::chrono::milliseconds kSignalCheckInterval{20};
 
-// The frames of one simulation, continuing from the frame it is at.
+// Asked before every step, with Python's lock released: every kSignalCheckInterval it takes the lock and runs
+// Python's signal handlers (in the main thread; elsewhere Python runs none); true when one raised (SIGINT's
+// KeyboardInterrupt), which then stays set for the caller to raise.
+bool python_signal_raised() {
+  using Clock = std::chrono::steady_clock;
+  thread_local Clock::time_point last_check = Clock::now();
+  const Clock::time_point now = Clock::now();
+  if (now - last_check < kSignalCheckInterval) return false;
+  last_check = now;
+  const py::gil_scoped_acquire locked;
+  return PyErr_CheckSignals() != 0;
+}
+
+// Marks a simulation as stepping while it lives (set and cleared with Python's lock held).
+class SteppingMark {
+ public:
+  explicit SteppingMark(Simulation& simulation) : simulation_(simulation) { simulation_.set_stepping(true); }
+  ~SteppingMark() { simulation_.set_stepping(false); }
+  SteppingMark(const SteppingMark&) = delete;
+  SteppingMark& operator=(const SteppingMark&) = delete;
+
+ private:
+  Simulation& simulation_;
+};
+
+// The frames of one simulation, continuing from the frame it is at. The steps run with Python's lock released, so
+// that other Python threads run meanwhile (and simulations in several threads step side by side).
 struct FrameIterator {
   Simulation* simulation;
   Frame next() {
+    simulation->check_idle();
+    std::optional<Frame> frame;
     try {
-      const std::optional<Frame> frame = simulation->next_frame(python_signal_raised);
-      if (!frame) throw py::stop_iteration();
-      return *frame;
+      const SteppingMark stepping(*simulation);  // cleared after the lock is taken back
+      const py::gil_scoped_release unlocked;
+      frame = simulation->next_frame(python_signal_raised);
     } catch (const StepsStopped&) {
       throw py::error_already_set();  // the KeyboardInterrupt the handler raised
     }
+    if (!frame) throw py::stop_iteration();
+    return *frame;
   }
 };
 
@@ -42,6 +75,7 @@ std::size_t body_index(const Simulation& simulation, py::ssize_t body) {
 }
 
 py::array_t<double> positions(const Simulation& simulation, py::ssize_t body) {
+  simulation.check_idle();
   const std::span<const softbody::Vec3> x = simulation.positions(body_index(simulation, body));
   py::array_t<double> array({static_cast<py::ssize_t>(x.size()), py::ssize_t{3}});
   auto out = array.mutable_unchecked<2>();
@@ -52,6 +86,7 @@ py::array_t<double> positions(const Simulation& simulation, py::ssize_t body) {
 }
 
 py::dict row(const Simulation& simulation, py::ssize_t body) {
+  simulation.check_idle();
   const output::CsvRow row = simulation.row(body_index(simulation, body));
   py::dict columns;
   columns["frame"] = row.frame;
@@ -87,7 +122,13 @@ void register_simulation(py::module_& module) {
           "Iterates over the frames from the one the simulation is at: frame 0 (the initial state) first, then one "
           "frame interval of steps each, to the scene's duration. Raises DivergedError, and KeyboardInterrupt on "
           "Ctrl-C between two steps (the simulation stays at the last frame handed out).")
-      .def_property_readonly("frame", &Simulation::frame, "The frame the simulation is at.")
+      .def_property_readonly(
+          "frame",
+          [](const Simulation& self) {
+            self.check_idle();
+            return self.frame();
+          },
+          "The frame the simulation is at.")
       .def_property_readonly("last_frame", &Simulation::last_frame, "The run's last frame: ceil(duration * fps).")
       .def_property_readonly("body_count", &Simulation::body_count,
                              "The bodies simulated (a body split into parts counts each part, as the CSV does).")
