@@ -10,6 +10,7 @@
 #include "bindings.hpp"
 #include "numpy_image.hpp"
 #include "simulation.hpp"
+#include "stepping_mark.hpp"
 
 namespace py = pybind11;
 
@@ -34,8 +35,14 @@ void register_render(py::module_& module) {
       [](Simulation& simulation, std::optional<int> width, std::optional<int> height) {
         simulation.check_idle();
         const scene::RenderSettings& scene_size = simulation.scene().render;
-        const softbody::Image image = simulation.render(checked_side("width", width.value_or(scene_size.width_px)),
-                                                        checked_side("height", height.value_or(scene_size.height_px)));
+        const int width_px = checked_side("width", width.value_or(scene_size.width_px));
+        const int height_px = checked_side("height", height.value_or(scene_size.height_px));
+        softbody::Image image;
+        {
+          const SteppingMark busy(simulation);  // cleared after the lock is taken back
+          const py::gil_scoped_release unlocked;
+          image = simulation.render(width_px, height_px);
+        }
         return to_numpy(image);
       },
       py::arg("sim"), py::kw_only(), py::arg("width") = py::none(), py::arg("height") = py::none(),

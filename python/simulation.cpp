@@ -44,8 +44,8 @@ Frame Simulation::frame() const { return {frame_, frames::frame_time_s(run_.cloc
 void Simulation::check_idle() const {
   if (stepping_) {
     throw std::runtime_error(
-        "the simulation is stepping to its next frame in another thread: use it there, or once frames() has "
-        "handed the frame out");
+        "the simulation is busy in another thread (stepping to its next frame, or rendering): use it there, or once "
+        "that is done");
   }
 }
 

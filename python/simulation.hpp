@@ -45,8 +45,8 @@ class Simulation {
   // The CSV row of `body` at this frame; throws std::out_of_range.
   output::CsvRow row(std::size_t body) const;
 
-  // While next_frame runs with Python's lock released (python/simulation_binding.cpp), every other use from another
-  // thread is refused: check_idle() throws std::runtime_error saying so.
+  // While next_frame or render runs with Python's lock released (python/stepping_mark.hpp), every other use from
+  // another thread is refused: check_idle() throws std::runtime_error saying so.
   void set_stepping(bool stepping) { stepping_ = stepping; }
   void check_idle() const;
 

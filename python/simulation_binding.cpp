@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "output/csv_row.hpp"
 #include "simulation.hpp"
+#include "stepping_mark.hpp"
 
 namespace py = pybind11;
 
@@ -34,18 +35,6 @@ bool python_signal_raised() {
   const py::gil_scoped_acquire locked;
   return PyErr_CheckSignals() != 0;
 }
-
-// Marks a simulation as stepping while it lives (set and cleared with Python's lock held).
-class SteppingMark {
- public:
-  explicit SteppingMark(Simulation& simulation) : simulation_(simulation) { simulation_.set_stepping(true); }
-  ~SteppingMark() { simulation_.set_stepping(false); }
-  SteppingMark(const SteppingMark&) = delete;
-  SteppingMark& operator=(const SteppingMark&) = delete;
-
- private:
-  Simulation& simulation_;
-};
 
 // The frames of one simulation, continuing from the frame it is at. The steps run with Python's lock released, so
 // that other Python threads run meanwhile (and simulations in several threads step side by side).
