@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "numpy_image.hpp"
+#include "python_signals.hpp"
 #include "simulation.hpp"
 #include "stepping_mark.hpp"
 
@@ -38,10 +39,12 @@ void register_render(py::module_& module) {
         const int width_px = checked_side("width", width.value_or(scene_size.width_px));
         const int height_px = checked_side("height", height.value_or(scene_size.height_px));
         softbody::Image image;
-        {
+        try {
           const SteppingMark busy(simulation);  // cleared after the lock is taken back
           const py::gil_scoped_release unlocked;
-          image = simulation.render(width_px, height_px);
+          image = simulation.render(width_px, height_px, python_signal_raised);
+        } catch (const StepsStopped&) {
+          throw py::error_already_set();  // the KeyboardInterrupt the handler raised during the framing pass
         }
         return to_numpy(image);
       },

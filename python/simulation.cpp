@@ -8,6 +8,7 @@
 #include "app/run_camera.hpp"
 #include "core/errors.hpp"
 #include "frames/frame_loop.hpp"
+#include "frames/stop_request.hpp"
 #include "render/gl_backend_choice.hpp"
 #include "render/settings.hpp"
 #include "sim/model/model.hpp"
@@ -66,12 +67,15 @@ output::CsvRow Simulation::row(std::size_t body) const {
   return output::csv_row(frame_, frames::frame_time_s(run_.clock, frame_), run_.world, body);
 }
 
-const output::MotionTrack& Simulation::motion_of_the_run() {
+const output::MotionTrack& Simulation::motion_of_the_run(sim::StopQuery stop) {
   if (!motion_) {
     sim::State now = run_.world.state;
     run_.world.state = initial_;
     try {
-      motion_ = app::motion_of_the_run(run_, nullptr);  // returns to frame 0's state
+      motion_ = app::motion_of_the_run(run_, nullptr, stop);  // returns to frame 0's state
+    } catch (const frames::Interrupted&) {
+      run_.world.state = std::move(now);
+      throw StepsStopped{};
     } catch (...) {
       run_.world.state = std::move(now);
       throw;
@@ -81,13 +85,13 @@ const output::MotionTrack& Simulation::motion_of_the_run() {
   return *motion_;
 }
 
-softbody::Image Simulation::render(int width_px, int height_px) {
+softbody::Image Simulation::render(int width_px, int height_px, sim::StopQuery stop) {
   if (!renderer_ || renderer_->width() != width_px || renderer_->height() != height_px) {
     renderer_.reset();
     render::RenderSettings settings = render::settings_from_scene(run_.scene);
     settings.width_px = width_px;
     settings.height_px = height_px;
-    if (!run_.scene.camera.given) app::frame_the_motion(settings, motion_of_the_run());
+    if (!run_.scene.camera.given) app::frame_the_motion(settings, motion_of_the_run(stop));
     const render::GlBackendRequest backend =
         render::choose_gl_backend(run_.scene.render.backend, std::getenv("SOFTBODY_GL"));
     renderer_ = std::make_unique<FrameRenderer>(backend.backend, settings);

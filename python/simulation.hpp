@@ -51,12 +51,13 @@ class Simulation {
   void check_idle() const;
 
   // This frame drawn at width x height pixels, with the scene's camera or, when it has none, the camera the render
-  // command frames the whole run with (a silent pass over the run from frame 0, made once).
-  softbody::Image render(int width_px, int height_px);
+  // command frames the whole run with (a silent pass over the run from frame 0, made once, which asks `stop` before
+  // every step and throws StepsStopped when it says stop; the simulation stays where it was).
+  softbody::Image render(int width_px, int height_px, sim::StopQuery stop);
 
  private:
   void check_body(std::size_t body) const;
-  const output::MotionTrack& motion_of_the_run();
+  const output::MotionTrack& motion_of_the_run(sim::StopQuery stop);
 
   app::PreparedRun run_;
   sim::State initial_;  // frame 0's state: where the framing pass starts

@@ -1,7 +1,6 @@
 // softbody.Simulation, its frames() iterator and the Frame it yields; positions() and row() read the current frame.
 // Ctrl-C (SIGINT) reaches Python between two steps: the frame in progress is dropped and KeyboardInterrupt raised.
 // The steps run without Python's lock (the GIL); the simulation is then refused to other threads until they end.
-#include <chrono>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,6 +10,7 @@
 
 #include "bindings.hpp"
 #include "output/csv_row.hpp"
+#include "python_signals.hpp"
 #include "simulation.hpp"
 #include "stepping_mark.hpp"
 
@@ -18,23 +18,6 @@ namespace py = pybind11;
 
 namespace softbody_python {
 namespace {
-
-// How often the steps take Python's lock back to run its signal handlers: Ctrl-C acts within this (and one step),
-// and a busy Python thread costs the stepping at most its switch interval (5 ms) per check.
-constexpr std::chrono::milliseconds kSignalCheckInterval{20};
-
-// Asked before every step, with Python's lock released: every kSignalCheckInterval it takes the lock and runs
-// Python's signal handlers (in the main thread; elsewhere Python runs none); true when one raised (SIGINT's
-// KeyboardInterrupt), which then stays set for the caller to raise.
-bool python_signal_raised() {
-  using Clock = std::chrono::steady_clock;
-  thread_local Clock::time_point last_check = Clock::now();
-  const Clock::time_point now = Clock::now();
-  if (now - last_check < kSignalCheckInterval) return false;
-  last_check = now;
-  const py::gil_scoped_acquire locked;
-  return PyErr_CheckSignals() != 0;
-}
 
 // The frames of one simulation, continuing from the frame it is at. The steps run with Python's lock released, so
 // that other Python threads run meanwhile (and simulations in several threads step side by side).

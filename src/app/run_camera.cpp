@@ -18,19 +18,19 @@ glm::vec3 to_glm(const softbody::Vec3& v) {
 
 }  // namespace
 
-output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoints* checkpoints) {
+output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoints* checkpoints, sim::StopQuery stop) {
   const sim::State start = run.world.state;
   output::MotionTrack motion;
   std::vector<frames::FrameSink*> sinks = {&motion};
   const auto started = std::chrono::steady_clock::now();
   try {
     frames::run_frames(run.world, run.clock, sinks, {},
-                       {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
+                       {frames::FrameSelection::all(run.clock.frame_count), checkpoints, stop});
   } catch (const softbody::DivergedError&) {
     // The run proper diverges at the same step and reports it, after writing the frames before it: the
     // camera frames those.
-  } catch (const frames::Interrupted& stop) {
-    throw frames::Interrupted(stop.signal(), 0);  // SIGINT / SIGTERM before frame 0 was drawn: none complete
+  } catch (const frames::Interrupted& interrupted) {
+    throw frames::Interrupted(interrupted.signal(), 0);  // SIGINT / SIGTERM before frame 0 was drawn: none complete
   }
   run.world.state = start;
   std::fprintf(

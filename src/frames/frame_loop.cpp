@@ -61,7 +61,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
     for (int frame = 1; frame <= selection.last(); ++frame) {
       if (!selection.contains(frame)) continue;
       const auto step_start = WallClock::now();
-      const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+      const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints, plan.stop);
       if (advance.stopped) throw Interrupted(stop_signal(), stats.frames);  // the frame in progress is dropped
       current = frame;
       stats.step_wall_s += seconds_since(step_start);

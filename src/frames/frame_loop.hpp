@@ -33,6 +33,7 @@ struct Checkpoints {
 struct RunPlan {
   FrameSelection frames;                     // default: every frame
   const Checkpoints* checkpoints = nullptr;  // none: every state is stepped from frame 0
+  sim::StopQuery stop = stop_requested;      // asked before every step (advance_to_frame): SIGINT / SIGTERM's flag
 };
 
 // Called after each delivered frame with (frames done, frames chosen in all); may be empty.

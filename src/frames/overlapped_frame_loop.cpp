@@ -35,7 +35,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::
       std::future<std::pair<Advance, double>> stepping =
           std::async(std::launch::async, [&world, &clock, &plan, current, frame] {
             const auto step_start = WallClock::now();
-            const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+            const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints, plan.stop);
             return std::make_pair(advance, seconds_since(step_start));
           });
       try {

@@ -80,3 +80,21 @@ def test_other_threads_may_not_use_a_simulation_while_it_steps():
     reader.join()
     assert len(errors) == 3 and all("busy in another thread" in error for error in errors), errors
     assert sim.row(0)["frame"] == 0  # once the frame is dropped, it may
+
+
+def test_sigint_stops_the_framing_pass_of_render():
+    # scenes/roll.json has no camera: the first render() steps through the whole run (here 1000 s) to frame it.
+    scene = softbody.load_scene("scenes/roll.json", set={"duration": 1000.0})
+    sim = softbody.Simulation(scene)
+    next(iter(sim.frames()))
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    started = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            softbody.render(sim, width=32, height=24)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - started < 2.0
+    # The simulation is where it was.
+    assert sim.frame.index == 0 and sim.row(0) == softbody.Simulation(scene).row(0)
