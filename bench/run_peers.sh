@@ -5,6 +5,7 @@
 #   breathing (bench/peers/breathing.json): no gravity, no floor, no dampers; the whole 1 s;
 #   bounce    (bench/peers/bounce.json):    the first impact on the floor, 0-1.2 s (the contact models differ).
 # Usage: JOLT_PREFIX=/path/to/installed/jolt bench/run_peers.sh [LEVELS]      (default "3 5"; after scripts/build)
+#        JOLT_ITERATIONS="1 5 20" bench/run_peers.sh 6   (fewer Jolt settings: its error depends on dt/iterations only)
 # Writes out/peers/LEVEL/*.csv (every run's frames), out/peers/peers_LEVEL.csv (one row per run) and plots them with
 # bench/peers/peers.gp. Without JOLT_PREFIX only softbody's curves are measured.
 # Times: Jolt's are the thread CPU time of its PhysicsSystem::Update calls (the harness's own timing, single-threaded
@@ -58,7 +59,7 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
         --set solver.iterations=$it
     done; done
     [ -n "$jolt" ] || continue
-    for it in 1 2 5 10 20 40; do for rate in 60 120 240 480 960 1920; do
+    for it in ${JOLT_ITERATIONS:-1 2 5 10 20 40}; do for rate in 60 120 240 480 960 1920; do
       csv=$out/${scene}_jolt_${rate}_$it.csv
       cpu=$($jolt --level $level --dt 1/$rate --iterations $it --seconds $dur --linear-damping 0 ${jolt_scene[$scene]} \
         --frames-csv $csv | sed -nE 's/^RESULT .* cpu_per_sim_s=([^ ]+) .*/\1/p' || true)
