@@ -6,6 +6,10 @@
 #   bounce    (bench/peers/bounce.json):    the first impact on the floor, 0-1.2 s (the contact models differ).
 # Usage: JOLT_PREFIX=/path/to/installed/jolt bench/run_peers.sh [LEVELS]      (default "3 5"; after scripts/build)
 #        JOLT_ITERATIONS="1 5 20" bench/run_peers.sh 6   (fewer Jolt settings: its error depends on dt/iterations only)
+#        PROGRAMS="bullet" BULLET_ITERATIONS="1 4" bench/run_peers.sh 5   (only Bullet's runs, added to the table)
+# Bullet (build/bench_peers_bullet: btSoftBody, its own links, kPR = nRT) runs over its dt and position iterations;
+# on the breathing its error is the distance from our model, not a convergence error (bench/peers/peers.gp also
+# plots its volume history).
 # Writes out/peers/LEVEL/*.csv (every run's frames), out/peers/peers_LEVEL.csv (one row per run) and plots them with
 # bench/peers/peers.gp. Without JOLT_PREFIX only softbody's curves are measured.
 # Times: Jolt's are the thread CPU time of its PhysicsSystem::Update calls (the harness's own timing, single-threaded
@@ -14,11 +18,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 levels="${1:-3 5}"
+programs="${PROGRAMS:-softbody jolt bullet}"
+want() { case " $programs " in *" $1 "*) return 0;; esac; return 1; }
 SB=build/softbody
 [ -x $SB ] || cmake --build build --target softbody
 jolt=""
-if [ -n "${JOLT_PREFIX:-}" ]; then jolt=$(bench/peers/build_jolt.sh); fi
-[ -n "$jolt" ] || echo "bench/run_peers.sh: JOLT_PREFIX not set: Jolt's curves are skipped" >&2
+if [ -n "${JOLT_PREFIX:-}" ] && want jolt; then jolt=$(bench/peers/build_jolt.sh); fi
+! want jolt || [ -n "$jolt" ] || echo "bench/run_peers.sh: JOLT_PREFIX not set: Jolt's curves are skipped" >&2
 declare -A scene_file=([breathing]=bench/peers/breathing.json [bounce]=bench/peers/bounce.json)
 declare -A seconds=([breathing]=1 [bounce]=1.2)
 declare -A jolt_scene=([breathing]="--gravity 0 --no-floor --height 0 --velocity 0" [bounce]="")
@@ -28,7 +34,11 @@ for level in $levels; do
   out=out/peers/$level
   mkdir -p $out
   table=out/peers/peers_$level.csv
-  echo "scene,level,program,family,dt_s,substeps,iterations,cpu_per_sim_s,volume_error_pct,com_error_cm,volume_max" > $table
+  # Rows of the programs not run now are kept (PROGRAMS="bullet" adds Bullet's to an earlier run's table).
+  header="scene,level,program,family,dt_s,substeps,iterations,cpu_per_sim_s,volume_error_pct,com_error_cm,volume_max"
+  kept=$( [ -f $table ] && tail -n +2 $table | awk -F, -v run=" $programs " \
+    '{ p = ($3 == "xpbd" || $3 == "vbd") ? "softbody" : $3; if (index(run, " " p " ") == 0) print }' || true)
+  { echo "$header"; [ -z "$kept" ] || echo "$kept"; } > $table
   for scene in breathing bounce; do
     file=${scene_file[$scene]}
     dur=${seconds[$scene]}
@@ -50,6 +60,16 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
       t=$( { /usr/bin/time -f "%U" $SB simulate $file "${mesh[@]}" --csv $csv "$@" > /dev/null || true; } 2>&1 | tail -1)
       row $p $fam $dt $sub $it "$(python3 -c "print(round($t/$dur,5))")" $csv
     }
+    if want bullet; then
+      [ -x build/bench_peers_bullet ] || cmake --build build --target bench_peers_bullet
+      for it in ${BULLET_ITERATIONS:-1 4 16}; do for rate in 60 120 240 480 960 1920; do
+        csv=$out/${scene}_bullet_${rate}_$it.csv
+        cpu=$(build/bench_peers_bullet $file $level $rate $it $csv | sed -nE 's/^cpu_per_sim_s=//p' || true)
+        row bullet bullet_it$it "1/$rate" - $it "$cpu" $csv
+      done; done
+    fi
+    want softbody || { [ -n "$jolt" ] && want jolt; } || continue
+    if want softbody; then
     softbody xpbd xpbd_auto auto auto - xpbd_auto --set solver.integrator=xpbd --set 'solver.substeps="auto"'
     for s in 2 4 8 16 32 64; do
       softbody xpbd xpbd_fixed "1/$((30 * s))" $s - xpbd_$s --set solver.integrator=xpbd --set solver.substeps=$s
@@ -58,7 +78,8 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
       softbody vbd vbd_it$it "1/$((30 * s))" $s $it vbd_${s}_$it --set solver.integrator=vbd --set solver.substeps=$s \
         --set solver.iterations=$it
     done; done
-    [ -n "$jolt" ] || continue
+    fi
+    [ -n "$jolt" ] && want jolt || continue
     for it in ${JOLT_ITERATIONS:-1 2 5 10 20 40}; do for rate in 60 120 240 480 960 1920; do
       csv=$out/${scene}_jolt_${rate}_$it.csv
       cpu=$($jolt --level $level --dt 1/$rate --iterations $it --seconds $dur --linear-damping 0 ${jolt_scene[$scene]} \
