@@ -45,6 +45,6 @@ plot run("ref") using 2:($10/v0) with lines lw 3 lc rgb "black" title "softbody 
      run("jolt_240_5") using 2:($7/v0) with lines lw 2 lc rgb "#6baed6" title "Jolt 1/240 s, 5 iterations", \
      run("jolt_1920_10") using 2:($7/v0) with lines lw 2 lc rgb "#08306b" title "Jolt 1/1920 s, 10 iterations", \
      run("bullet_240_1") using 2:($7/v0) with lines lw 2 lc rgb "#fdae6b" title "Bullet 1/240 s, 1 position iteration", \
-     run("bullet_1920_16") using 2:($7/v0) with lines lw 2 lc rgb "#a63603" title "Bullet 1/1920 s, 16 position iterations", \
+     run("bullet_1920_4") using 2:($7/v0) with lines lw 2 lc rgb "#a63603" title "Bullet 1/1920 s, 4 position iterations", \
      run("xpbd_auto") using 2:($10/v0) with lines lw 2 lc rgb "#e31a1c" title "softbody xpbd auto", \
      run("vbd_1_4") using 2:($10/v0) with lines lw 2 lc rgb "#238b45" title "softbody vbd, 4 sweeps"
