@@ -18,6 +18,7 @@ struct BulletPressureBody::Parts {
   std::unique_ptr<btDefaultMotionState> floor_motion;
   std::unique_ptr<btRigidBody> floor;
   btSoftBody* body = nullptr;  // owned here, removed from the world before deletion
+  bool floor_added = true;
 };
 
 BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std::make_unique<Parts>()) {
@@ -34,7 +35,8 @@ BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std:
   p.floor_motion = std::make_unique<btDefaultMotionState>(floor_pose);
   p.floor =
       std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, p.floor_motion.get(), &p.floor_shape));
-  p.world.addRigidBody(p.floor.get());
+  if (spec.floor) p.world.addRigidBody(p.floor.get());
+  p.floor_added = spec.floor;
 
   std::vector<btScalar> xyz;
   for (const softbody::Vec3& x : spec.vertices_m) {
@@ -47,6 +49,7 @@ BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std:
   p.body->m_cfg.kPR = static_cast<btScalar>(spec.pressure);
   p.body->m_cfg.kDP = static_cast<btScalar>(0.001);
   p.body->m_cfg.collisions = btSoftBody::fCollision::SDF_RS;
+  if (spec.position_iterations > 0) p.body->m_cfg.piterations = spec.position_iterations;
   p.body->setTotalMass(static_cast<btScalar>(spec.mass_kg), true);
   p.body->setVelocity(btVector3(static_cast<btScalar>(spec.velocity_m_per_s.x()),
                                 static_cast<btScalar>(spec.velocity_m_per_s.y()),
@@ -57,7 +60,7 @@ BulletPressureBody::BulletPressureBody(const BulletBodySpec& spec) : parts_(std:
 BulletPressureBody::~BulletPressureBody() {
   parts_->world.removeSoftBody(parts_->body);
   delete parts_->body;
-  parts_->world.removeRigidBody(parts_->floor.get());
+  if (parts_->floor_added) parts_->world.removeRigidBody(parts_->floor.get());
 }
 
 void BulletPressureBody::step(double dt) {

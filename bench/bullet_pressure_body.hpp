@@ -18,6 +18,8 @@ struct BulletBodySpec {
   double gravity_m_per_s2 = -9.81;
   double floor_height_m = 0.0;
   softbody::Vec3 velocity_m_per_s = softbody::Vec3::Zero();
+  bool floor = true;            // false: no floor box in the world
+  int position_iterations = 0;  // btSoftBody's piterations; 0 keeps Bullet's default (1)
 };
 
 // A btSoftRigidDynamicsWorld holding one soft body made with btSoftBodyHelpers::CreateFromTriMesh
