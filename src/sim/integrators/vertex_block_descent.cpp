@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "core/profile.hpp"
+#include "sim/contact/smooth_collider.hpp"
 #include "sim/forces/forces.hpp"
 
 namespace sim {
@@ -73,6 +74,7 @@ struct BodySolve {
   double inverse_h2 = 0.0;         // 1/ĥ² [1/s²]
   std::optional<GasLaw> gas;
   const SmoothFloor* floor = nullptr;
+  std::span<const SmoothCollider> colliders;  // the smooth ones
 };
 
 // The smooth floor's terms of one vertex, with the dashpot's weight w and friction's normal force N lagged at the
@@ -133,6 +135,34 @@ double floor_energy_change(const SmoothFloor& floor, const FloorLag& lag, double
   return spring + dashpot + friction;
 }
 
+// The smooth colliders' terms of one vertex at x (sim/contact/smooth_collider.hpp, newton's too), each collider's
+// normal, dashpot weight and friction force lagged at x into `lags`: gradient and Hessian added.
+void add_collider_terms(std::span<const SmoothCollider> colliders, double m, const Vec3& x, const Vec3& base,
+                        double h_hat, Vec3& gradient, Block3& hessian, std::span<ColliderLag> lags) {
+  for (std::size_t c = 0; c < colliders.size(); ++c) {
+    lags[c] = lag_smooth_collider(colliders[c], m, x);
+    Mat3 block = Mat3::Zero();
+    add_smooth_collider_derivatives(colliders[c], lags[c], m, x, base, h_hat, gradient, block);
+    hessian.xx += block(0, 0);
+    hessian.xy += block(0, 1);
+    hessian.xz += block(0, 2);
+    hessian.yy += block(1, 1);
+    hessian.yz += block(1, 2);
+    hessian.zz += block(2, 2);
+  }
+}
+
+// The colliders' terms' change of E when the vertex moves from x by step, with the lags taken at x [J].
+double collider_energy_change(std::span<const SmoothCollider> colliders, std::span<const ColliderLag> lags, double m,
+                              const Vec3& x, const Vec3& step, const Vec3& base, double h_hat) {
+  double change = 0.0;
+  for (std::size_t c = 0; c < colliders.size(); ++c) {
+    change += smooth_collider_terms(colliders[c], lags[c], m, x + step, base, h_hat) -
+              smooth_collider_terms(colliders[c], lags[c], m, x, base, h_hat);
+  }
+  return change;
+}
+
 }  // namespace
 
 void VertexBlockDescent::prepare_once(const Model& model) {
@@ -148,6 +178,11 @@ void VertexBlockDescent::prepare_once(const Model& model) {
   lagged_rate_.resize(static_cast<std::size_t>(most_constraints));
   smooth_floor_.reset();
   if (model.floor && model.floor->contact == FloorContact::Smooth) smooth_floor_ = resolve_smooth_floor(*model.floor);
+  smooth_colliders_.clear();
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact == FloorContact::Smooth) smooth_colliders_.push_back(resolve_smooth_collider(collider));
+  }
+  collider_lags_.resize(smooth_colliders_.size());
 }
 
 double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, bool bdf2) {
@@ -238,7 +273,7 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 // One coarse Newton step with its line search on body `body`'s positions x (see above). Returns whether it moved.
 bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, std::vector<Vec3>& motion,
-                       std::vector<Vec3>& area_sums) {
+                       std::vector<Vec3>& area_sums, std::span<ColliderLag> lags) {
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
@@ -258,6 +293,11 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      add_block(hessian, r, K);
+    }
+    if (!s.colliders.empty()) {
+      Block3 hessian;
+      add_collider_terms(s.colliders, m, x[i], s.base[i], s.h_hat, gradient, hessian, lags);
       add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);
@@ -316,6 +356,12 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
         const FloorLag lag = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
         change += floor_energy_change(*s.floor, lag, m, x[i], step, s.base[i], s.h_hat);
       }
+      if (!s.colliders.empty()) {
+        Vec3 unused_gradient = Vec3::Zero();
+        Block3 unused_hessian;
+        add_collider_terms(s.colliders, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian, lags);
+        change += collider_energy_change(s.colliders, lags, m, x[i], step, s.base[i], s.h_hat);
+      }
     }
     for (std::size_t e = 0; e < constraints.size(); ++e) {
       const auto [i, j] = constraints.ends[e];
@@ -357,11 +403,12 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
               kNegligibleStep * body.rest.mean_edge_m,
               1.0 / (h_hat * h_hat),
               std::nullopt,
-              smooth_floor_ ? &*smooth_floor_ : nullptr};
+              smooth_floor_ ? &*smooth_floor_ : nullptr,
+              smooth_colliders_};
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
-    if (coarse_) affine_correction(body, s, x, coarse_motion_, coarse_scratch_);
+    if (coarse_) affine_correction(body, s, x, coarse_motion_, coarse_scratch_, collider_lags_);
     double volume = s.gas ? enclosed_volume(body.topology.faces, x) : 0.0;  // afresh each sweep: no drift
     for (const int i : blocks.colouring.vertices) {
       const auto vi = static_cast<std::size_t>(i);
@@ -402,6 +449,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
       }
       FloorLag floor_lag;
       if (s.floor) floor_lag = add_floor_terms(*s.floor, m, xi, base_i, h_hat, gradient, hessian);
+      add_collider_terms(s.colliders, m, xi, base_i, h_hat, gradient, hessian, collider_lags_);
       // 2. The Newton step and its line search on E's change.
       ++statistics_.vertex_solves;
       const Vec3 direction = -hessian.solve(gradient);
@@ -430,6 +478,8 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
         }
         if (s.gas) change += s.gas->energy_change(volume, volume_gradient.dot(step));
         if (s.floor) change += floor_energy_change(*s.floor, floor_lag, m, xi, step, base_i, h_hat);
+        if (!s.colliders.empty())
+          change += collider_energy_change(s.colliders, collider_lags_, m, xi, step, base_i, h_hat);
         if (change <= kArmijo * alpha * slope) {
           x[vi] = moved_x;
           if (s.gas) volume += volume_gradient.dot(step);  // exact: V is affine in x_i
