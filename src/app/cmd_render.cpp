@@ -194,7 +194,7 @@ int run_render(const RenderOptions& options) {
   if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
   if (!scene.camera.given && !motion->samples().empty()) {
     settings.camera = render::frame_swept_box(
-        {to_glm(motion->swept_min()), to_glm(motion->swept_max())},
+        render::including_colliders({to_glm(motion->swept_min()), to_glm(motion->swept_max())}, settings.colliders),
         static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
   }
   const std::vector<int> figure =
