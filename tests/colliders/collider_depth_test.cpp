@@ -20,7 +20,6 @@ namespace {
 
 using softbody::Vec3;
 
-constexpr int kFps = 30;
 constexpr double kDrop_m = 0.6;            // from the ball's lowest point to the collider's top
 constexpr double kTimeConstant_s = 0.002;  // the smooth contact's τ (the default)
 constexpr double kSmoothing_m = 0.002;     // its δ (the default)
