@@ -318,8 +318,8 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
   switch (g.shape) {
     case sim::ColliderShape::Plane: {
       const Vec3 normal = r.vec3("normal");
-      if (normal.norm() == 0.0) r.fail(r.child("normal"), "expected a non-zero vector", &r.at("normal"));
-      g.plane_normal = normal.normalized();
+      if (normal.stableNorm() == 0.0) r.fail(r.child("normal"), "expected a non-zero vector", &r.at("normal"));
+      g.plane_normal = normal.stableNormalized();  // exact for tiny components, whose squares would underflow
       break;
     }
     case sim::ColliderShape::Box: {
@@ -334,6 +334,7 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
       g.half_length_m = 0.5 * r.number("length", 0.0);
       break;
   }
+  g.world_reach_m = sim::world_reach(g);
   return g;
 }
 

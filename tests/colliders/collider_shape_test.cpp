@@ -150,6 +150,30 @@ TEST(ColliderShape, NormalIsTheGradientOfTheDistance) {
   }
 }
 
+// The quick inside test the contact passes use agrees with the signed distance's sign (away from the surface
+// itself, where the two may round differently).
+TEST(ColliderShape, InsideTestAgreesWithTheSignedDistance) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
+  for (const ColliderShape kind :
+       {ColliderShape::Plane, ColliderShape::Box, ColliderShape::Sphere, ColliderShape::Capsule}) {
+    ColliderGeometry g = shape(kind, Vec3(0.1, 0.2, -0.3), Vec3(10, 20, 30));
+    g.half_size_m = Vec3(0.5, 0.7, 0.9);
+    g.radius_m = 0.6;
+    g.half_length_m = 0.4;
+    if (kind != ColliderShape::Plane) g.world_reach_m = sim::world_reach(g);  // the quick rejection on
+    int inside = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+      const Vec3 x(coordinate(random), coordinate(random), coordinate(random));
+      const double distance = nearest_surface(g, x).distance_m;
+      if (std::abs(distance) < 1e-12) continue;
+      EXPECT_EQ(sim::is_inside(g, x), distance < 0.0) << static_cast<int>(kind) << " at " << x.transpose();
+      inside += distance < 0.0;
+    }
+    EXPECT_GT(inside, 50);
+  }
+}
+
 TEST(ColliderShape, WorldBoundsHoldTheShape) {
   ColliderGeometry g = shape(ColliderShape::Capsule, Vec3(1, 2, 3), Vec3(0, 0, 90));  // local y along world −x
   g.radius_m = 0.5;

@@ -36,6 +36,7 @@ FloorContactFound resolve_collider_paper(const ColliderGeometry& collider, std::
                                          std::vector<int>& reversed) {
   FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
     const SurfacePoint s = nearest_surface(collider, x[i]);
     if (s.distance_m >= 0.0) continue;
     record(found, s.distance_m);
@@ -50,6 +51,7 @@ FloorContactFound resolve_collider_friction(const ColliderGeometry& collider, co
                                             std::span<Vec3> x, std::span<Vec3> v) {
   FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
     const SurfacePoint s = nearest_surface(collider, x[i]);
     if (s.distance_m >= 0.0) continue;
     record(found, s.distance_m);
@@ -63,6 +65,7 @@ FloorContactFound resolve_collider_positional(const ColliderGeometry& collider, 
                                               double h, std::span<Vec3> x, std::span<Vec3> v) {
   FloorContactFound found;
   for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
     const SurfacePoint s = nearest_surface(collider, x[i]);
     if (s.distance_m >= 0.0) continue;
     const double depth = -s.distance_m;
@@ -85,7 +88,9 @@ FloorContactFound resolve_collider_positional(const ColliderGeometry& collider, 
 
 double deepest_inside_collider(const ColliderGeometry& collider, std::span<const Vec3> x) {
   double deepest = 0.0;
-  for (const Vec3& p : x) deepest = std::max(deepest, -nearest_surface(collider, p).distance_m);
+  for (const Vec3& p : x) {
+    if (is_inside(collider, p)) deepest = std::max(deepest, -nearest_surface(collider, p).distance_m);
+  }
   return deepest;
 }
 

@@ -75,15 +75,35 @@ SurfacePoint nearest_surface(const ColliderGeometry& g, const Vec3& x) {
   return {local.distance_m, Vec3(g.rotation * local.normal), Vec3(g.position_m + g.rotation * local.closest_m)};
 }
 
-bool world_bounds(const ColliderGeometry& g, Vec3& lo, Vec3& hi) {
-  Vec3 reach = Vec3::Zero();  // half the world box's sides [m]
+bool is_inside(const ColliderGeometry& g, const Vec3& x) {
+  const Vec3 offset = x - g.position_m;
+  switch (g.shape) {
+    case ColliderShape::Plane: return g.plane_normal.dot(g.rotation.transpose() * offset) < 0.0;
+    case ColliderShape::Sphere: return offset.squaredNorm() < g.radius_m * g.radius_m;
+    case ColliderShape::Box:
+    case ColliderShape::Capsule: break;
+  }
+  if ((offset.cwiseAbs() - g.world_reach_m).maxCoeff() >= 0.0) return false;  // outside the world box
+  const Vec3 q = g.rotation.transpose() * offset;
+  if (g.shape == ColliderShape::Box) return (q.cwiseAbs() - g.half_size_m).maxCoeff() < 0.0;
+  const Vec3 out(q.x(), q.y() - std::clamp(q.y(), -g.half_length_m, g.half_length_m), q.z());  // capsule
+  return out.squaredNorm() < g.radius_m * g.radius_m;
+}
+
+Vec3 world_reach(const ColliderGeometry& g) {
   const Mat3 spread = g.rotation.cwiseAbs();
   switch (g.shape) {
-    case ColliderShape::Plane: return false;
-    case ColliderShape::Box: reach = spread * g.half_size_m; break;
-    case ColliderShape::Sphere: reach = Vec3::Constant(g.radius_m); break;
-    case ColliderShape::Capsule: reach = spread.col(1) * g.half_length_m + Vec3::Constant(g.radius_m); break;
+    case ColliderShape::Plane: return Vec3::Constant(std::numeric_limits<double>::infinity());
+    case ColliderShape::Box: return spread * g.half_size_m;
+    case ColliderShape::Sphere: return Vec3::Constant(g.radius_m);
+    case ColliderShape::Capsule: return spread.col(1) * g.half_length_m + Vec3::Constant(g.radius_m);
   }
+  return Vec3::Zero();
+}
+
+bool world_bounds(const ColliderGeometry& g, Vec3& lo, Vec3& hi) {
+  if (g.shape == ColliderShape::Plane) return false;
+  const Vec3 reach = world_reach(g);
   lo = g.position_m - reach;
   hi = g.position_m + reach;
   return true;

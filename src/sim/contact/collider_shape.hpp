@@ -3,6 +3,8 @@
 // surface point.
 #pragma once
 
+#include <limits>
+
 #include "core/vec.hpp"
 
 namespace sim {
@@ -26,7 +28,13 @@ struct ColliderGeometry {
   Vec3 half_size_m{0.5, 0.5, 0.5};   // box: half the edge lengths, local x, y, z [m]
   double radius_m = 0.5;             // sphere and capsule [m]
   double half_length_m = 0.5;        // capsule: half its cylinder's length along local y [m]
+  // Half the sides of a world box that holds the shape [m]: is_inside() rejects a point beyond it at once. Infinite
+  // (no quick rejection) until set from world_reach() once the shape's size and pose are final.
+  Vec3 world_reach_m = Vec3::Constant(std::numeric_limits<double>::infinity());
 };
+
+// Half the sides of the smallest world box that holds the shape at its pose [m] (a plane: infinite).
+Vec3 world_reach(const ColliderGeometry& geometry);
 
 // What a point knows of a collider's surface.
 struct SurfacePoint {
@@ -37,6 +45,11 @@ struct SurfacePoint {
 };
 
 SurfacePoint nearest_surface(const ColliderGeometry& geometry, const Vec3& x);
+
+// True when x is inside the shape (signed distance < 0), by the cheapest test: beyond world_reach_m of a box's or
+// capsule's centre at once, else the shape in its own frame without square roots. The contact passes ask it of every
+// vertex and nearest_surface() only of the few inside.
+bool is_inside(const ColliderGeometry& geometry, const Vec3& x);
 
 // The world box that holds a bounded shape, {lo, hi} [m]; a plane is unbounded and returns false.
 bool world_bounds(const ColliderGeometry& geometry, Vec3& lo, Vec3& hi);

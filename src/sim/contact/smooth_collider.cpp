@@ -22,6 +22,7 @@ void add_smooth_collider_forces(const SmoothCollider& c, std::span<const double>
                                 std::span<const Vec3> v, std::span<Vec3> force) {
   const double eps2 = c.slip_speed_m_per_s * c.slip_speed_m_per_s;
   for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(c.geometry, x[i])) continue;
     const SurfacePoint s = nearest_surface(c.geometry, x[i]);
     if (s.distance_m >= 0.0) continue;
     const double depth = -s.distance_m;
@@ -39,6 +40,7 @@ void add_smooth_collider_forces(const SmoothCollider& c, std::span<const double>
 double smooth_collider_energy(const SmoothCollider& c, std::span<const double> mass_kg, std::span<const Vec3> x) {
   double energy = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(c.geometry, x[i])) continue;
     const double distance = nearest_surface(c.geometry, x[i]).distance_m;
     if (distance < 0.0) energy += mass_kg[i] * smooth_energy_per_mass(c, -distance);
   }
@@ -46,6 +48,7 @@ double smooth_collider_energy(const SmoothCollider& c, std::span<const double> m
 }
 
 ColliderLag lag_smooth_collider(const SmoothCollider& c, double m, const Vec3& x) {
+  if (!is_inside(c.geometry, x)) return {};
   const SurfacePoint s = nearest_surface(c.geometry, x);
   if (s.distance_m >= 0.0) return {};
   const double depth = -s.distance_m;
@@ -55,7 +58,7 @@ ColliderLag lag_smooth_collider(const SmoothCollider& c, double m, const Vec3& x
 
 double smooth_collider_terms(const SmoothCollider& c, const ColliderLag& lag, double m, const Vec3& x,
                              const Vec3& start, double h) {
-  const double distance = nearest_surface(c.geometry, x).distance_m;
+  const double distance = is_inside(c.geometry, x) ? nearest_surface(c.geometry, x).distance_m : 0.0;
   double energy = distance < 0.0 ? m * smooth_energy_per_mass(c, -distance) : 0.0;  // U
   const Vec3 dx = x - start;
   const double along = dx.dot(lag.normal);
@@ -69,7 +72,7 @@ double smooth_collider_terms(const SmoothCollider& c, const ColliderLag& lag, do
 
 void add_smooth_collider_derivatives(const SmoothCollider& c, const ColliderLag& lag, double m, const Vec3& x,
                                      const Vec3& start, double h, Vec3& gradient, Mat3& hessian) {
-  const SurfacePoint s = nearest_surface(c.geometry, x);
+  const SurfacePoint s = is_inside(c.geometry, x) ? nearest_surface(c.geometry, x) : SurfacePoint{};
   if (s.distance_m < 0.0) {
     const double depth = -s.distance_m;
     gradient -= m * smooth_elastic_per_mass(c, depth) * s.normal;  // −m ω² δ P n
