@@ -108,7 +108,7 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
   return check_finite(model, state);
 }
 
-// Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
+// Phases 2, 3 and 3b after a successful integration. A contact moved the state under the integrator: what it
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
 void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
   const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h) +
