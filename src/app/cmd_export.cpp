@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/output_settings.hpp"
 #include "app/prepared_run.hpp"
+#include "app/progress.hpp"
 #include "app/resume.hpp"
 #include "app/run_plan.hpp"
 #include "core/errors.hpp"
@@ -34,7 +35,12 @@ struct ExportOptions {
   std::string dir;
   ExportFormat format = ExportFormat::Obj;
   bool profile = false;
+  bool progress_lines = false;
 };
+
+frames::Progress export_progress(const ExportOptions& options) {
+  return options.progress_lines ? progress_lines() : frames::Progress{};
+}
 
 // --format pc2 | mdd: DIR/body<N>.obj and DIR/body<N>.pc2 (.mdd), written when the run ends.
 int run_point_cache_export(const ExportOptions& options, output::PointCacheFormat format) {
@@ -69,7 +75,8 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
       output::FolderLock::Sharing::Exclusive, "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);  // a killed run's half-written cache
   std::vector<frames::FrameSink*> sinks = {&exporter};
-  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, {}, planned.plan());
+  const frames::RunStats stats =
+      frames::run_frames(run.world, run.clock, sinks, export_progress(options), planned.plan());
   print_run_summary(run, stats,
                     "wrote " + exporter.mesh_path(0).string() + ", " + exporter.cache_path(0).filename().string() +
                         (exporter.body_count() > 1 ? " .. body" + std::to_string(exporter.body_count() - 1) : "") +
@@ -138,8 +145,8 @@ int run_export(const ExportOptions& options) {
     });
     sinks.push_back(&resumable->store_sink());
   }
-  const frames::RunStats stats =
-      frames::run_frames(run.world, run.clock, sinks, {}, resumable ? resumable->plan() : planned.plan());
+  const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, export_progress(options),
+                                                    resumable ? resumable->plan() : planned.plan());
   if (resumable) resumable->remove_store();
   const frames::FrameSelection& chosen = planned.plan().frames;
   print_run_summary(run, stats,
@@ -169,6 +176,9 @@ Action register_export(CLI::App& parent) {
   add_frame_options(*command, options->frames);
   add_resume_option(*command, options->resume);
   add_profile_option(*command, options->profile);
+  command->add_flag("--progress-lines", options->progress_lines,
+                    "After each frame print \"progress DONE TOTAL\" on stdout, one line each (for programs that run "
+                    "softbody, such as the Blender add-on)");
   command->footer(
       "Point caches (--format pc2 | mdd), for Blender's Mesh Cache modifier, Maya and Houdini:\n"
       "  DIR/body<N>.obj is the body's mesh at the first frame exported (vertex order = the cache's), DIR/body<N>.pc2\n"

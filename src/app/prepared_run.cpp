@@ -27,7 +27,14 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   scene.bodies = std::move(bodies);
   const sim::StepPlan step =
       sim::resolve_step(world.model, world.state, 1.0 / scene.fps, scene.source.string(), after_phase);
-  if (step.substeps_chosen) {
+  if (step.substeps_chosen && world.model.solver.integrator == sim::IntegratorKind::Vbd) {
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "solver.substeps = auto: %d steps per frame (h = %.4g s; the contact travel limit %.4g s applies "
+                  "to the paper's and the friction floor; vbd shrinks its steps itself around smooth impacts)",
+                  step.substeps, step.dt_s, step.travel_dt_s);
+    notes.insert(notes.begin(), note);
+  } else if (step.substeps_chosen) {
     char note[200];
     std::snprintf(note, sizeof note,
                   "solver.substeps = auto: %d substeps per frame (h = %.4g s: within the carried form's limit and "

@@ -1,4 +1,4 @@
-// Progress line drawing: carriage return and clear-to-end-of-line, at most ten times a second.
+// Progress line drawing: carriage return and clear-to-end-of-line, at most ten times a second; progress lines.
 #include "app/progress.hpp"
 
 #include <unistd.h>
@@ -28,6 +28,13 @@ void ProgressLine::clear() {
   std::fprintf(stderr, "\r\x1b[K");
   std::fflush(stderr);
   drawn_ = false;
+}
+
+frames::Progress progress_lines() {
+  return [](int done, int total) {
+    std::fprintf(stdout, "progress %d %d\n", done, total);
+    std::fflush(stdout);
+  };
 }
 
 }  // namespace app

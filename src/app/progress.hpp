@@ -1,8 +1,11 @@
 // The progress line of long commands: "frame 42/90  24.1 fps  2.0 s left", redrawn in place on stderr
-// when stderr is a terminal, silent otherwise (logs and pipes get only the final summary).
+// when stderr is a terminal, silent otherwise (logs and pipes get only the final summary); and the
+// machine-readable progress lines that programs driving softbody ask for (--progress-lines).
 #pragma once
 
 #include <chrono>
+
+#include "frames/frame_loop.hpp"
 
 namespace app {
 
@@ -20,5 +23,9 @@ class ProgressLine {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
 };
+
+// "progress DONE TOTAL" on stdout after each frame (DONE frames of TOTAL delivered), one line each, flushed at
+// once: what a program that runs softbody in a pipe (the Blender add-on) reads to show its progress bar.
+frames::Progress progress_lines();
 
 }  // namespace app

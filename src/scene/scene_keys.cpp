@@ -185,10 +185,12 @@ struct Table {
             "Requested time step; the run takes the largest that divides 1/fps (rk45: its first trial step). "
             "\"auto\": from the stable-step estimate.",
             1e-4),
-        key_without_default("substeps", {substeps, choice({"auto"})}, "",
-                            "xpbd and vbd: steps per frame interval, so dt = (1/fps) / substeps. \"auto\": xpbd, the "
-                            "fewest that keep its stated accuracy; vbd, the floor's contact travel limit.",
-                            "none: dt decides"),
+        key_without_default(
+            "substeps", {substeps, choice({"auto"})}, "",
+            "xpbd and vbd: steps per frame interval, so dt = (1/fps) / substeps. \"auto\": xpbd, the "
+            "fewest that keep its stated accuracy; vbd, one per frame (at most 1/30 s; with the paper's or the "
+            "friction floor, that floor's contact travel limit).",
+            "none: dt decides"),
         key("iterations", {integer(1, 10000)}, "", "vbd: Gauss-Seidel sweeps over the vertices per step.", 4),
         key("retry", {of_kind(FormKind::Boolean)}, "",
             "A step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024).", false),

@@ -36,8 +36,7 @@ constexpr const char* kDust = R"({
                 "mass": 1.0, "stiffness": 0.0, "damping": 0.0, "pressure": 0.0 } ]
 })";
 
-// Every force at once: springs, dampers, bending links, gas, and the smooth floor with friction, which the ball hits
-// sideways at the second step.
+// Every force at once: springs, dampers, bending links, gas, and the smooth floor with friction, 2 cm below the ball.
 constexpr const char* kEveryForce = R"({
   "gravity": [0, -9.81, 0],
   "floor": { "height": 0.0, "contact": "smooth", "restitution": 0.5, "friction": 0.5 },
@@ -52,41 +51,80 @@ constexpr const char* kBreathing = R"({
                 "mass": 1.0, "stiffness": 100.0, "damping": 0.2, "pressure": 50.0 } ]
 })";
 
-// BDF2 is exact for a parabola; its backward Euler start puts x_1 ½h²g off, and that offset propagates as
-// e_{n+1} = 4/3 e_n − 1/3 e_{n−1}, e_0 = 0: e_n = ¾ h² g (1 − 3⁻ⁿ). Free particles have a quadratic E per vertex, so
-// one local Newton step solves it.
-TEST(Vbd, FreeFallIsBdf2sClosedForm) {
+// BDF2 is exact for a parabola at any sequence of step ratios (its variable-step form interpolates quadratics), so
+// from an exact history free fall stays exact while h shrinks and doubles. Free particles have a
+// quadratic E per vertex, so one local Newton step solves it.
+TEST(Vbd, FreeFallIsExactFromAnExactHistory) {
+  sim::World world = vbd_world(kDust, 1);
+  const std::vector<Vec3> x0 = world.state.x;
+  const Vec3 g(0, -9.81, 0), v0(1.5, 4, -0.5);
+  constexpr double kDt = 1.0 / 60.0;
+  world.state.carry.previous_dt_s = kDt;  // the state at t = −h, as if the run had been falling before
+  world.state.carry.previous_x.clear();
+  for (const Vec3& x : x0) world.state.carry.previous_x.push_back(x - v0 * kDt + 0.5 * g * kDt * kDt);
+  world.state.carry.previous_v.assign(x0.size(), v0 - g * kDt);
+  // Shrinking (ω = 1/4, 1/3), and doubling after two equal steps (from two steps back, ω = 1).
+  const std::vector<double> steps = {kDt, kDt / 4, kDt / 4, kDt / 2, kDt / 2, kDt, kDt / 3, kDt / 3, 2 * kDt / 3};
+  double t = 0.0;
+  for (const double h : steps) {
+    world.step(h);
+    t += h;
+  }
+  double worst = 0.0, worst_velocity = 0.0;
+  for (std::size_t i = 0; i < x0.size(); ++i) {
+    worst = std::max(worst, (world.state.x[i] - (x0[i] + v0 * t + 0.5 * g * t * t)).norm());
+    worst_velocity = std::max(worst_velocity, (world.state.v[i] - (v0 + g * t)).norm());
+  }
+  std::printf("free fall, steps of h/4 to h: |x - exact| = %.2e m, |v - exact| = %.2e m/s\n", worst, worst_velocity);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(worst_velocity, 1e-10);  // v = (x′ − x̃)/ĥ: round-off of x [m] over ĥ [s]
+}
+
+// A run's first step is backward Euler (it has no history), which ends ½h₀²g off; BDF2 carries the offset on as
+// e_{n+1} = e_n + (e_n − e_{n−1})/3 (e_{n−1} from two steps back where the steps double). A run starts at h₀ = h/16,
+// so the offset stays a few ½h₀²g, where a start at the full h would end ¾h²g off (e_n = ¾h²g(1 − 3⁻ⁿ)), 190× more.
+TEST(Vbd, FreeFallFromTheStartIsOffByTheFirstSmallStepOnly) {
   sim::World world = vbd_world(kDust, 1);
   const std::vector<Vec3> x0 = world.state.x;
   const Vec3 g(0, -9.81, 0), v0(1.5, 4, -0.5);
   constexpr double kDt = 1.0 / 60.0;
   constexpr int kSteps = 60;
   for (int n = 0; n < kSteps; ++n) world.step(kDt);
-  const double t = kSteps * kDt;
-  const Vec3 offset = 0.75 * kDt * kDt * (1.0 - std::pow(3.0, -kSteps)) * g;
-  double worst = 0.0, worst_velocity = 0.0;
+  const double t = kSteps * kDt, first_offset = 0.5 * (kDt / 16) * (kDt / 16) * 9.81;  // ½h₀²g [m]
+  double least = 1e300, worst = 0.0, worst_velocity = 0.0;
   for (std::size_t i = 0; i < x0.size(); ++i) {
-    worst = std::max(worst, (world.state.x[i] - (x0[i] + v0 * t + 0.5 * g * t * t + offset)).norm());
+    const Vec3 error = world.state.x[i] - (x0[i] + v0 * t + 0.5 * g * t * t);
+    EXPECT_LT(std::abs(error.x()) + std::abs(error.z()), 1e-12) << "the offset is along g";
+    least = std::min(least, error.norm());
+    worst = std::max(worst, error.norm());
     worst_velocity = std::max(worst_velocity, (world.state.v[i] - (v0 + g * t)).norm());
   }
-  std::printf("free fall, 60 steps of 1/60 s: |x - closed form| = %.2e m, |v - exact| = %.2e m/s\n", worst,
-              worst_velocity);
-  EXPECT_LT(worst, 1e-12);
-  EXPECT_LT(worst_velocity, 1e-12);
+  std::printf("free fall, 60 steps of 1/60 s: |x - exact| = %.3e m = %.2f × ½h₀²g (¾h²g = %.3e m)\n", worst,
+              worst / first_offset, 0.75 * kDt * kDt * 9.81);
+  EXPECT_GE(least, first_offset);
+  EXPECT_LE(worst, 4.0 * first_offset);
+  EXPECT_LT(worst_velocity, 1e-10);  // v = (x′ − x̃)/ĥ: round-off of x [m] over ĥ [s]
 }
 
 // After enough sweeps a step's end state x' satisfies BDF2's equation with the model's own force code (Dynamics,
 // which the explicit integrators use): m (x' − y)/ĥ² = f(x', (x' − x̃)/ĥ). This checks every term's gradient
 // (springs, dampers, bending links, gas, the floor's spring, dashpot and friction) and the BDF2 targets.
+// The ball slides on the floor, pressed 5 mm into it (no impact, so the step is one step of h), with a history of
+// steps of h: a constant-step BDF2 step.
 TEST(Vbd, ConvergedSweepsSolveBdf2WithTheModelsForces) {
   sim::World world = vbd_world(kEveryForce, 1000);
   constexpr double kDt = 1.0 / 240.0;
-  world.step(kDt);  // backward Euler: no history yet
-  world.step(kDt);
+  for (Vec3& x : world.state.x) x.y() -= 0.025;
+  for (Vec3& v : world.state.v) v.y() = 0.0;
+  world.state.carry.previous_dt_s = kDt;
+  world.state.carry.previous_v = world.state.v;
+  world.state.carry.previous_x.clear();
+  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
+    world.state.carry.previous_x.push_back(world.state.x[i] - kDt * world.state.v[i]);
+  }
   const sim::State before = world.state;
-  ASSERT_EQ(before.carry.previous_x.size(), before.x.size()) << "the next step is BDF2";
   world.step(kDt);
-  ASSERT_GT(sim::deepest_below_floor(0.0, world.state.x), 0.0) << "the ball touches the floor during the step";
+  ASSERT_GT(sim::deepest_below_floor(0.0, world.state.x), 0.0) << "the ball touches the floor";
   const double h_hat = 2.0 * kDt / 3.0;
   sim::Dynamics dynamics(world.model, world.workspace.forces);
   std::vector<Vec3> force;
@@ -160,6 +198,28 @@ TEST(Vbd, StiffSpringsAt60StepsPerSecondStayStable) {
   for (const double stiffness : {1.0, 1e2, 1e4, 1e6}) {
     const double growth = worst_energy_growth(stiffness, 1.02, 60, 4, 1.0);
     EXPECT_LT(growth, 1e-9) << "k " << stiffness << " N/m";
+  }
+}
+
+// A ball thrown at the smooth floor at 5 m/s, bouncing for a second: the total energy (with the floor's spring) never
+// grows, through the impact's small steps and the growth back to the frame's step after it. (One sweep per step of
+// 1/30 s does not hold it: the ball deflates by a fifth in flight after the bounce and gains energy.)
+TEST(Vbd, ImpactsOnTheSmoothFloorNeverAddEnergy) {
+  const std::string scene = R"({ "gravity": [0, -9.81, 0],
+      "floor": { "height": 0.0, "contact": "smooth", "restitution": 0.5, "friction": 0.5 },
+      "bodies": [ { "mesh": "icosphere:2", "position": [0, 1.3, 0], "velocity": [1, -5, 0],
+                    "mass": 1.0, "stiffness": 1000.0, "damping": 0.1, "pressure": 100.0 } ] })";
+  for (const int rate : {30, 60, 240}) {
+    for (const int sweeps : {2, 4, 16}) {
+      sim::World world = vbd_world(scene, sweeps);
+      const double start = integrator_tests::total_energy(world);
+      double worst = 0.0;
+      for (int n = 0; n < rate; ++n) {
+        world.step(1.0 / rate);
+        worst = std::max(worst, (integrator_tests::total_energy(world) - start) / std::abs(start));
+      }
+      EXPECT_LT(worst, 1e-9) << rate << " steps/s, " << sweeps << " sweeps";
+    }
   }
 }
 

@@ -5,15 +5,19 @@
 #include <vector>
 
 #include "sim/contact/smooth_collider.hpp"
+#include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
+#include "sim/integrators/vertex_energy.hpp"
 
 namespace sim {
 
-// One call of step(h) is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
+// Each step of h is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
 // SIGGRAPH 2024, for the solve; Ascher & Petzold, "Computer Methods for ODEs and DAEs", Sect. 5.1, for BDF2):
 //   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
-//   backward Euler (a run's first step, after a contact moved the state, after a change of h): ĥ = h, x̃ = x_n, ṽ = v_n
+//             (at a constant h; with a step ratio ω = h_n/h_{n−1} ≤ 2 its variable-step form, set_targets)
+//   backward Euler (a run's first step, after a contact moved the state, after h grew over 2×): ĥ = h, x̃ = x_n
+// One call of step(dt) takes one such step, or several around an impact on the smooth floor (next_step).
 // Eliminating v' leaves m (x' − y)/ĥ² = f(x', (x' − x̃)/ĥ), y = x̃ + ĥ ṽ + ĥ² g, the stationary point of
 //   E(x) = Σ_i m_i |x_i − y_i|² / (2ĥ²) + Σ_e ½ k (|d_e| − L0)² − nRT ln V + D(x) + floor terms        [J]
 // with the dampers' and the smooth floor's dissipation D taken with their directions and weights lagged at the
@@ -26,7 +30,7 @@ namespace sim {
 // curvature is clamped at zero, so H_i is positive definite and Δ a descent direction. A backtracking line search
 // on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers E: no setting can make a sweep add
 // energy, whatever h. Then v' = (x' − x̃)/ĥ.
-// The smooth floor and smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
+// The smooth floor and the smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
 // smooth_collider.hpp); the paper's and the
 // friction floor and the impulse contact between bodies stay projections after the step (sim::step).
 // What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
@@ -49,10 +53,24 @@ class VertexBlockDescent final : public Integrator {
  private:
   // The bodies' layouts, on the first step (again for a model with other bodies).
   void prepare_once(const Model& model);
-  // y, x̃ and ĥ of this step into target_, base_ (backward Euler without a usable history); returns ĥ [s].
-  double set_targets(const Model& model, const State& state, double h, bool bdf2);
+  // The level of the next step (its size is dt / 2^level) after `done` ticks of dt / 2^kDeepestLevel: deeper for
+  // an impact on the smooth floor, one up where the two steps before allow it (then BDF2 takes its history from two
+  // steps back, so every BDF2 step has a step ratio of at most 1).
+  int next_level(const Model& model, const State& state, double dt, int level, long long done) const;
+  // Whether the last three states (steps of h) are smooth enough for a step of 2h (see kGrowthTolerance).
+  bool smooth_enough_to_double(const Model& model, const State& state, double h) const;
+  // Whether a step of h from state is an impact on the smooth floor (see kImpactSpeed).
+  bool impact_within(const Model& model, const State& state, double h) const;
+  // One implicit step of h.
+  void take_step(const Model& model, State& state, double h);
+  // y, x̃ and ĥ of this step into target_, base_ (BDF2 with the step ratio ω = h_n/h_{n−1} from the history
+  // x_previous, v_previous; backward Euler where ratio is 0); returns ĥ [s].
+  double set_targets(const Model& model, const State& state, double h, double ratio,
+                     const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous);
   // solver.iterations sweeps over body b's vertices, from x = y.
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
+  // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
+  void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
@@ -60,12 +78,10 @@ class VertexBlockDescent final : public Integrator {
   std::vector<VertexBlocks> blocks_;              // per body
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
-  std::vector<ColliderLag> collider_lags_;        // scratch: one vertex's lags, per smooth collider
   std::vector<Vec3> target_;                      // y per vertex [m]
   std::vector<Vec3> base_;                        // x̃ per vertex [m]
   std::vector<Vec3> start_x_, start_v_;           // x_n, v_n (then the next step's history)
-  std::vector<Vec3> lagged_axis_;                 // scratch: the directions n̂ of one vertex's constraints
-  std::vector<double> lagged_length_, lagged_rate_;  // scratch: their lengths l [m] and approach (Δx_i − Δx_j)·n̂ [m]
+  ConstraintLags lags_;                           // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
 };
 

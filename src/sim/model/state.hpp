@@ -32,6 +32,11 @@ struct IntegratorCarry {
   std::vector<Vec3> previous_x;
   std::vector<Vec3> previous_v;
   double previous_dt_s = 0.0;
+  // ... and the state one step further back, x_{n−2} and v_{n−2}, with the size of the step from it to x_{n−1} [s]
+  // (after two steps of h, a step of 2h takes BDF2's history from there).
+  std::vector<Vec3> older_x;
+  std::vector<Vec3> older_v;
+  double older_dt_s = 0.0;
   // rk45's step-size controller.
   double previous_error = 1e-4;  // err of the last accepted step (PI control)
   bool rejected_last = false;    // the last attempt was rejected: do not grow the step now
@@ -70,6 +75,8 @@ struct State {
     carry.edge_tension_N.clear();
     carry.previous_x.clear();
     carry.previous_v.clear();
+    carry.older_x.clear();
+    carry.older_v.clear();
     coasting.clear();
     guard.budget_J.clear();
   }

@@ -95,6 +95,9 @@ std::string encode_state(const State& state) {
   w.vectors(state.carry.previous_x);
   w.vectors(state.carry.previous_v);
   w.scalar(state.carry.previous_dt_s);
+  w.vectors(state.carry.older_x);
+  w.vectors(state.carry.older_v);
+  w.scalar(state.carry.older_dt_s);
   w.scalar(state.carry.previous_error);
   w.scalar<std::uint8_t>(state.carry.rejected_last ? 1 : 0);
   w.array(state.coasting.data(), state.coasting.size());
@@ -130,6 +133,9 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.carry.previous_x = r.vectors("BDF2 history positions", n);
   state.carry.previous_v = r.vectors("BDF2 history velocities", n);
   state.carry.previous_dt_s = r.scalar<double>("BDF2 history step");
+  state.carry.older_x = r.vectors("BDF2 older history positions", n);
+  state.carry.older_v = r.vectors("BDF2 older history velocities", n);
+  state.carry.older_dt_s = r.scalar<double>("BDF2 older history step");
   state.carry.previous_error = r.scalar<double>("step-size controller error");
   state.carry.rejected_last = r.scalar<std::uint8_t>("step-size controller flag") != 0;
   const auto coasting_count = r.scalar<std::uint64_t>("coasting vertices");

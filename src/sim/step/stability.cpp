@@ -451,7 +451,9 @@ double xpbd_carried_dt(double omega_max) {
 
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s) {
+  const bool projected_floor = model.floor && model.floor->contact != FloorContact::Smooth;
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
+  if (integrator == IntegratorKind::Vbd && !projected_floor) h = std::min(frame_interval_s, kVbdLongestAutoStep);
   const bool xpbd = integrator == IntegratorKind::Xpbd;
   for (std::size_t b = 0; xpbd && b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
     h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));

@@ -144,7 +144,11 @@ constexpr double kXpbdCarriedPhaseLimit = 1.9;
 double xpbd_carried_dt(double omega_max);
 // The substep bound of (1) for one body of `vertices` vertices with fastest mode ω_max [s] (kUnlimited: no modes).
 double xpbd_bias_dt(double omega_max, int vertices);
-// vbd's `solver.substeps: "auto"` takes (2) alone: every force is implicit, nothing limits its step but accuracy.
+// vbd's `solver.substeps: "auto"`: every force is implicit, nothing limits its step but accuracy. With a smooth floor
+// (or none) one step per frame interval but at most kVbdLongestAutoStep, since vbd shrinks its own steps around
+// an impact (sim/integrators/vertex_block_descent.hpp); with a floor whose contact is a projection after the step,
+// (2), whose travel limit that projection needs.
+constexpr double kVbdLongestAutoStep = 1.0 / 30.0;  // s: measured on scenes/bounce_smooth.json (docs/notes)
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s);
 

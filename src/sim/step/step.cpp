@@ -117,6 +117,8 @@ void resolve_contacts(const Model& model, State& state, Workspace& workspace, do
     state.carry.acceleration.clear();
     state.carry.previous_x.clear();  // vbd: a BDF2 step across the jump would extrapolate it
     state.carry.previous_v.clear();
+    state.carry.older_x.clear();
+    state.carry.older_v.clear();
   }
 }
 

@@ -1,0 +1,213 @@
+// The affine coarse correction: a Galerkin Newton step of one body restricted to affine motions, and its line search.
+#include "sim/integrators/affine_correction.hpp"
+
+#include <Eigen/Dense>
+
+#include "sim/forces/forces.hpp"
+
+namespace sim {
+namespace {
+
+using Matrix12 = Eigen::Matrix<double, 12, 12>;
+using Vector12 = Eigen::Matrix<double, 12, 1>;
+
+// The coarse system's parts that sum over vertices and edges, gathered as moments and spread into K once:
+//   inertia  Σ_i w_i B_iᵀ B_i:       Σ w, Σ w r, Σ w r rᵀ (r = x_i − c)
+//   edges    Σ_e (B_i − B_j)ᵀ H_e (B_i − B_j) with H_e = T I + α n̂n̂ᵀ and (B_i − B_j) q = A d:
+//            T I ⊗ d dᵀ gives Σ T d dᵀ on K_AA's diagonal blocks; α n̂n̂ᵀ ⊗ d dᵀ = (α/|d|²) vec(d dᵀ) vec(d dᵀ)ᵀ,
+//            gathered over the six distinct entries p of d dᵀ as Σ (α/|d|²) p pᵀ.
+struct CoarseMoments {
+  double mass = 0.0;
+  Vec3 first = Vec3::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();                         // Σ w r rᵀ + Σ_e T d dᵀ
+  Eigen::Matrix<double, 6, 6> along = Eigen::Matrix<double, 6, 6>::Zero();  // Σ (α/|d|²) p pᵀ (upper triangle)
+
+  void add_inertia(double w, const Vec3& r) {
+    mass += w;
+    first += w * r;
+    add_outer(w, r);
+  }
+  void add_outer(double w, const Vec3& d) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = a; b < 3; ++b) second(a, b) += w * d[a] * d[b];
+    }
+  }
+  void add_edge(double transverse, double along_weight, const Vec3& d) {
+    add_outer(transverse, d);
+    const double p[6] = {d.x() * d.x(), d.x() * d.y(), d.x() * d.z(), d.y() * d.y(), d.y() * d.z(), d.z() * d.z()};
+    for (int u = 0; u < 6; ++u) {
+      const double wp = along_weight * p[u];
+      for (int v = u; v < 6; ++v) along(u, v) += wp * p[v];
+    }
+  }
+  // K += the moments, spread over the 12 unknowns (A row-major, then t).
+  void spread_into(Matrix12& K) const {
+    static constexpr int kPair[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};  // the index of (a, b) in p
+    const Eigen::Matrix3d second_full = second.selfadjointView<Eigen::Upper>();
+    const Eigen::Matrix<double, 6, 6> along_full = along.selfadjointView<Eigen::Upper>();
+    for (int row = 0; row < 3; ++row) {
+      for (int a = 0; a < 3; ++a) {
+        for (int col = 0; col < 3; ++col) {
+          for (int b = 0; b < 3; ++b) {
+            double value = along_full(kPair[row][a], kPair[col][b]);
+            if (row == col) value += second_full(a, b);
+            K(3 * row + a, 3 * col + b) += value;
+          }
+        }
+        K(3 * row + a, 9 + row) += first[a];
+        K(9 + row, 3 * row + a) += first[a];
+      }
+      K(9 + row, 9 + row) += mass;
+    }
+  }
+};
+
+// += B_iᵀ H B_i for a general symmetric 3×3 H at r.
+void add_block(const Block3& block, const Vec3& r, Matrix12& K) {
+  const Eigen::Matrix3d H =
+      (Eigen::Matrix3d() << block.xx, block.xy, block.xz, block.xy, block.yy, block.yz, block.xz, block.yz, block.zz)
+          .finished();
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) {
+      for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) K(3 * row + a, 3 * col + b) += H(row, col) * r[a] * r[b];
+        K(3 * row + a, 9 + col) += H(row, col) * r[a];
+        K(9 + col, 3 * row + a) += H(row, col) * r[a];
+      }
+      K(9 + row, 9 + col) += H(row, col);
+    }
+  }
+}
+
+// B_iᵀ g at r.
+void add_gradient(const Vec3& g, const Vec3& r, Vector12& G) {
+  for (int row = 0; row < 3; ++row) {
+    for (int a = 0; a < 3; ++a) G(3 * row + a) += g[row] * r[a];
+    G(9 + row) += g[row];
+  }
+}
+
+// B_i q at r: A r + t.
+Vec3 affine_motion(const Vector12& q, const Vec3& r) {
+  return Vec3(q(0) * r.x() + q(1) * r.y() + q(2) * r.z() + q(9), q(3) * r.x() + q(4) * r.y() + q(5) * r.z() + q(10),
+              q(6) * r.x() + q(7) * r.y() + q(8) * r.z() + q(11));
+}
+
+}  // namespace
+
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, std::vector<Vec3>& motion,
+                       std::vector<Vec3>& area_sums) {
+  const std::size_t n = x.size();
+  Vec3 centre = Vec3::Zero();
+  double mass = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    centre += s.mass_kg[i] * x[i];
+    mass += s.mass_kg[i];
+  }
+  centre /= mass;
+  Matrix12 K = Matrix12::Zero();
+  Vector12 G = Vector12::Zero();
+  CoarseMoments moments;
+  // Vertices: inertia, floor and colliders.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 r = x[i] - centre;
+    const double m = s.mass_kg[i];
+    moments.add_inertia(m * s.inverse_h2, r);
+    Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
+    if (s.floor && x[i].y() < s.floor->height_m) {
+      Block3 hessian;
+      add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      add_block(hessian, r, K);
+    }
+    for (const SmoothCollider& collider : s.colliders) {
+      Block3 hessian;
+      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      add_block(hessian, r, K);
+    }
+    add_gradient(gradient, r, G);
+  }
+  // Constraints: (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part.
+  const DistanceConstraints& constraints = body.constraints;
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const auto [i, j] = constraints.ends[e];
+    const Vec3 d = x[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(j)];
+    const double length = d.norm();
+    if (length == 0.0) continue;
+    const Vec3 axis = d / length;
+    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] / s.h_hat;
+    const double rate = ((x[static_cast<std::size_t>(i)] - s.base[static_cast<std::size_t>(i)]) -
+                         (x[static_cast<std::size_t>(j)] - s.base[static_cast<std::size_t>(j)]))
+                            .dot(axis);
+    const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
+    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] / length);
+    const double along = k + c_over_h - transverse;
+    for (int row = 0; row < 3; ++row) {
+      for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
+    }
+    moments.add_edge(transverse, along / (length * length), d);
+  }
+  moments.spread_into(K);
+  // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ.
+  double volume = 0.0;
+  if (s.gas) {
+    volume = volume_and_area_sums(body.topology.faces, x, area_sums);
+    Vector12 u = Vector12::Zero();
+    for (std::size_t i = 0; i < n; ++i) add_gradient(area_sums[i] / 6.0, x[i] - centre, u);
+    G -= s.gas->pressure(volume) * u;
+    K += s.gas->stiffness(volume) * u * u.transpose();
+  }
+  const Vector12 q = K.ldlt().solve(-G);
+  const double slope = G.dot(q);
+  if (!(slope < 0.0)) return false;
+  motion.resize(n);
+  for (std::size_t i = 0; i < n; ++i) motion[i] = affine_motion(q, x[i] - centre);
+  // Line search on E's change along the motion, with the directions and the floor's weights lagged at x.
+  std::vector<Vec3>& trial = area_sums;  // reused: the gas's sums are not needed any more
+  for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
+    double change = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 step = alpha * motion[i];
+      const double m = s.mass_kg[i];
+      change += 0.5 * m * s.inverse_h2 * step.dot(2.0 * (x[i] - s.target[i]) + step);
+      if (s.floor && (x[i].y() < s.floor->height_m || x[i].y() + step.y() < s.floor->height_m)) {
+        Vec3 unused_gradient = Vec3::Zero();
+        Block3 unused_hessian;
+        const FloorLag lag = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+        change += floor_energy_change(*s.floor, lag, m, x[i], step, s.base[i], s.h_hat);
+      }
+      for (const SmoothCollider& collider : s.colliders) {
+        Vec3 unused_gradient = Vec3::Zero();
+        Block3 unused_hessian;
+        const ColliderLag lag =
+            add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+        change += collider_energy_change(collider, lag, m, x[i], step, s.base[i], s.h_hat);
+      }
+    }
+    for (std::size_t e = 0; e < constraints.size(); ++e) {
+      const auto [i, j] = constraints.ends[e];
+      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+      const Vec3 d = x[vi] - x[vj];
+      const double before = d.norm();
+      if (before == 0.0) continue;
+      const Vec3 axis = d / before;
+      const Vec3 relative = alpha * (motion[vi] - motion[vj]);
+      const double after = (d + relative).norm();
+      const double k = constraints.stiffness_N_per_m[e], rest = constraints.rest_length_m[e];
+      change += 0.5 * k * (after - before) * (after + before - 2.0 * rest);
+      const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis), along = relative.dot(axis);
+      change += 0.5 * constraints.damping_N_s_per_m[e] / s.h_hat * along * (2.0 * rate + along);
+    }
+    if (s.gas) {
+      trial.resize(n);
+      for (std::size_t i = 0; i < n; ++i) trial[i] = x[i] + alpha * motion[i];
+      change += s.gas->energy_change(volume, enclosed_volume(body.topology.faces, trial) - volume);
+    }
+    if (change <= kArmijo * alpha * slope) {
+      for (std::size_t i = 0; i < n; ++i) x[i] += alpha * motion[i];
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace sim

@@ -1,0 +1,23 @@
+// The affine coarse correction of vbd's sweeps (sim/integrators/vertex_block_descent.hpp).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "sim/integrators/vertex_energy.hpp"
+#include "sim/model/body.hpp"
+
+namespace sim {
+
+// The affine coarse correction (a two-level method: Gauss–Seidel smooths what is local, one Galerkin Newton step on a
+// coarse space takes out what crosses the body, which a sweep moves by one ring of vertices only: the momentum a
+// floor takes from the whole body, the gas's breathing, a squash). The coarse space is every affine motion of the
+// body, δx_i = A (x_i − c) + t (A 3×3, t 3: q, 12 unknowns; c its centroid), δx = B q. The step solves
+// (Bᵀ H B) q = −Bᵀ ∇E with the sweeps' clamped, lagged H (Bᵀ H B is positive definite: its inertia part alone is),
+// then searches α on E's change along B q as a vertex does.
+// One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved. `motion` and
+// `scratch` are reused buffers.
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, std::vector<Vec3>& motion,
+                       std::vector<Vec3>& scratch);
+
+}  // namespace sim
