@@ -1,6 +1,5 @@
 // `softbody render SCENE [-o DIR] [--set ...] [--video FILE.mp4] [--no-png]`: simulate and render every
 // frame off-screen into PNG files (frame 0 is the initial state), figure.png and optionally a video.
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -12,6 +11,7 @@
 #include "app/prepared_run.hpp"
 #include "app/progress.hpp"
 #include "app/resume.hpp"
+#include "app/run_camera.hpp"
 #include "app/run_plan.hpp"
 #include "core/errors.hpp"
 #include "core/profile.hpp"
@@ -25,7 +25,6 @@
 #include "output/motion_track.hpp"
 #include "output/png_codec.hpp"
 #include "output/run_manifest.hpp"
-#include "render/camera_framing.hpp"
 #include "render/gl_context.hpp"
 #include "render/render_sink.hpp"
 #include "render/renderer.hpp"
@@ -45,35 +44,6 @@ struct RenderOptions {
   bool resume = false;
   bool profile = false;
 };
-
-// One silent pass over every frame, for what must be known before frame 0 is drawn: the box the bodies
-// sweep (the camera of a scene without one) and the moments figure.png shows. The pass starts from and
-// returns to the same State (a copy is a checkpoint), so the run afterwards gives the same bits, and every
-// farm chunk gets the same camera and figure; with --from-cache it reads the cache instead of stepping.
-output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoints* checkpoints) {
-  const sim::State start = run.world.state;
-  output::MotionTrack motion;
-  std::vector<frames::FrameSink*> sinks = {&motion};
-  const auto started = std::chrono::steady_clock::now();
-  try {
-    frames::run_frames(run.world, run.clock, sinks, {},
-                       {frames::FrameSelection::all(run.clock.frame_count), checkpoints});
-  } catch (const softbody::DivergedError&) {
-    // The run proper diverges at the same step and reports it, after writing the frames before it: the
-    // camera frames those.
-  } catch (const frames::Interrupted& stop) {
-    throw frames::Interrupted(stop.signal(), 0);  // SIGINT / SIGTERM before frame 0 was drawn: none complete
-  }
-  run.world.state = start;
-  std::fprintf(
-      stderr, "note: a pass over the run's %zu frames for the camera framing or the figure's frames took %.2f s\n",
-      motion.samples().size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
-  return motion;
-}
-
-glm::vec3 to_glm(const softbody::Vec3& v) {
-  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-}
 
 // The frames of figure.png: render.figure_frames's list, or that many chosen from the motion.
 std::vector<int> figure_frames(const scene::Scene& scene, const output::MotionTrack* motion, int last_frame) {
@@ -192,11 +162,7 @@ int run_render(const RenderOptions& options) {
       chosen.everything() && scene.render.figure_frame_list.empty() && scene.render.figure_frames > 0;
   std::optional<output::MotionTrack> motion;
   if (!scene.camera.given || motion_figure) motion = motion_of_the_run(run, planned.plan().checkpoints);
-  if (!scene.camera.given && !motion->samples().empty()) {
-    settings.camera = render::frame_swept_box(
-        render::including_colliders({to_glm(motion->swept_min()), to_glm(motion->swept_max())}, settings.colliders),
-        static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
-  }
+  if (!scene.camera.given) frame_the_motion(settings, *motion);
   const std::vector<int> figure =
       chosen.everything() ? figure_frames(scene, motion ? &*motion : nullptr, last_frame) : std::vector<int>{};
   render::Renderer renderer(*context, settings);

@@ -14,7 +14,10 @@
 namespace app {
 
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
-  scene::Scene scene = scene::load_scene(options.scene_file, options.overrides);
+  return prepare_run(scene::load_scene(options.scene_file, options.overrides), threads_when_auto);
+}
+
+PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
   std::vector<std::string> notes;
   std::vector<int> bodies_per_scene_body;
   // SIGINT / SIGTERM during setup (a long mesh repair, remesh, ...) end it when that phase ends.

@@ -24,6 +24,8 @@ struct PreparedRun {
 // `threads_when_auto`: the force threads when the scene leaves solver.threads at 0 (0: one per core);
 // render passes 1, because there the second core renders while the simulation runs beside it.
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto = 0);
+// The same from a scene already loaded (scene::load_scene): the Python module's Simulation.
+PreparedRun prepare_run(scene::Scene scene, int threads_when_auto = 0);
 
 // One summary line on stdout: frames, steps, dt, integrator, vertices, wall time, steps per second,
 // then `what_was_written`.

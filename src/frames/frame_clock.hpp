@@ -18,6 +18,10 @@ struct FrameClock {
 inline constexpr int kMaxFrames = 100'000'000;       // frames after frame 0: 38 days at 30 fps
 inline constexpr int kMaxStepsPerFrame = 1'000'000;  // steps per frame interval (fixed-step integrators)
 
+// The simulated time of frame `index` [s]: from the index, not the accumulated step sum, so frame times carry no
+// round-off drift (the CSV's time column, the frames the loops hand out).
+inline double frame_time_s(const FrameClock& clock, int index) { return index * clock.frame_interval_s; }
+
 // 1/fps must hold a whole number of steps: a requested dt that does not divide it is rounded down to
 // the next dt that does (never drifting), and `dt_note` reports it.
 // A run beyond kMaxFrames or kMaxStepsPerFrame throws softbody::InputError starting with `context` (the

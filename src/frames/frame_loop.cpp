@@ -9,9 +9,9 @@ namespace {
 
 // One frame interval of whole steps, then the guard's full check before the frame is handed out; false
 // (the frame unfinished) when a stop was requested before one of its steps.
-bool step_one_frame(sim::World& world, const FrameClock& clock) {
+bool step_one_frame(sim::World& world, const FrameClock& clock, sim::StopQuery stop) {
   for (int s = 0; s < clock.steps_per_frame; ++s) {
-    if (stop_requested()) return false;
+    if (stop()) return false;
     world.step(clock.dt_s);
   }
   world.check_before_frame();
@@ -21,7 +21,7 @@ bool step_one_frame(sim::World& world, const FrameClock& clock) {
 }  // namespace
 
 Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current, int target,
-                         const Checkpoints* checkpoints) {
+                         const Checkpoints* checkpoints, sim::StopQuery stop) {
   Advance advance;
   if (checkpoints) {
     const int stored = checkpoints->latest_at_or_before(target);
@@ -34,8 +34,8 @@ Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current
   const long long steps_before = world.state.steps, rejected_before = world.state.rejected_steps;
   for (int frame = current + 1; frame <= target && !advance.stopped; ++frame) {
     // Adaptive: its every step had the full check.
-    const bool reached = world.adaptive() ? world.advance_to(frame * clock.frame_interval_s, stop_requested)
-                                          : step_one_frame(world, clock);
+    const bool reached =
+        world.adaptive() ? world.advance_to(frame_time_s(clock, frame), stop) : step_one_frame(world, clock, stop);
     advance.stopped = !reached;
   }
   advance.steps = world.state.steps - steps_before;
@@ -49,8 +49,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
   RunStats stats;
   const auto start = WallClock::now();
   auto emit = [&](int index) {
-    // Time from the frame index, not the accumulated step sum, so frame times carry no round-off drift.
-    const double time_s = index * clock.frame_interval_s;
+    const double time_s = frame_time_s(clock, index);
     for (FrameSink* sink : sinks) sink->on_frame(index, time_s, world);
     ++stats.frames;
     if (progress) progress(stats.frames, selection.count());
@@ -62,7 +61,7 @@ RunStats run_frames(sim::World& world, const FrameClock& clock, std::span<FrameS
     for (int frame = 1; frame <= selection.last(); ++frame) {
       if (!selection.contains(frame)) continue;
       const auto step_start = WallClock::now();
-      const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+      const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints, plan.stop);
       if (advance.stopped) throw Interrupted(stop_signal(), stats.frames);  // the frame in progress is dropped
       current = frame;
       stats.step_wall_s += seconds_since(step_start);

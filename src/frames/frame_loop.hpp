@@ -7,6 +7,8 @@
 #include "frames/frame_clock.hpp"
 #include "frames/frame_selection.hpp"
 #include "frames/frame_sink.hpp"
+#include "frames/stop_request.hpp"
+#include "sim/step/step.hpp"
 
 namespace frames {
 
@@ -31,6 +33,7 @@ struct Checkpoints {
 struct RunPlan {
   FrameSelection frames;                     // default: every frame
   const Checkpoints* checkpoints = nullptr;  // none: every state is stepped from frame 0
+  sim::StopQuery stop = stop_requested;      // asked before every step (advance_to_frame): SIGINT / SIGTERM's flag
 };
 
 // Called after each delivered frame with (frames done, frames chosen in all); may be empty.
@@ -47,9 +50,10 @@ struct Advance {
 // Brings the world from frame `current` to frame `target` (> current): when a checkpoint lies between
 // them, its state is loaded first; then, frame by frame, whole steps followed by the guard's full check,
 // or the adaptive steps that land exactly on the frame time. Before every step it looks whether a stop was
-// requested (frames/stop_request.hpp) and if so returns at once with `stopped`: the caller discards the frame.
+// requested (`stop`: frames/stop_request.hpp's, or the Python module's signal check) and if so returns at once
+// with `stopped`: the caller discards the frame.
 Advance advance_to_frame(sim::World& world, const FrameClock& clock, int current, int target,
-                         const Checkpoints* checkpoints);
+                         const Checkpoints* checkpoints, sim::StopQuery stop = stop_requested);
 
 // Frame 0 is the initial state; then clock.frame_count frames, each clock.steps_per_frame steps apart
 // (adaptive integrators instead advance to each frame time with their own steps, landing on it exactly).

@@ -15,7 +15,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::
   RunStats stats;
   const auto start = WallClock::now();
   auto capture = [&](int index) {
-    for (CapturingFrameSink* sink : sinks) sink->capture(index, index * clock.frame_interval_s, world);
+    for (CapturingFrameSink* sink : sinks) sink->capture(index, frame_time_s(clock, index), world);
   };
   auto deliver = [&]() {
     for (CapturingFrameSink* sink : sinks) sink->deliver();
@@ -35,7 +35,7 @@ RunStats run_frames_overlapped(sim::World& world, const FrameClock& clock, std::
       std::future<std::pair<Advance, double>> stepping =
           std::async(std::launch::async, [&world, &clock, &plan, current, frame] {
             const auto step_start = WallClock::now();
-            const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints);
+            const Advance advance = advance_to_frame(world, clock, current, frame, plan.checkpoints, plan.stop);
             return std::make_pair(advance, seconds_since(step_start));
           });
       try {

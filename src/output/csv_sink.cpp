@@ -11,7 +11,7 @@
 #include "core/profile.hpp"
 #include "output/atomic_file.hpp"
 #include "output/checked_line.hpp"
-#include "sim/step/diagnostics.hpp"
+#include "output/csv_row.hpp"
 
 namespace output {
 
@@ -100,13 +100,12 @@ void CsvSink::on_frame(int index, double time_s, const sim::World& world) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::csv_write);
   const std::size_t frame_start = text_.size();
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b) {
-    const sim::BodyDiagnostics d = sim::diagnose(world.model, world.state, b);
+    const CsvRow r = csv_row(index, time_s, world, b);
+    const auto& v = r.values;
     char row[512];
     // %.17g round-trips doubles exactly.
-    std::snprintf(row, sizeof row, "%d,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", index,
-                  time_s, b, d.com_m.x(), d.com_m.y(), d.com_m.z(), d.com_velocity_m_per_s.x(),
-                  d.com_velocity_m_per_s.y(), d.com_velocity_m_per_s.z(), d.volume_m3, d.kinetic_J, d.total_J(),
-                  d.min_y_m);
+    std::snprintf(row, sizeof row, "%d,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+                  r.frame, r.time_s, r.body, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
     text_ += row;
   }
   if (journal_) {

@@ -2,7 +2,7 @@
 # The .deb on a newcomer's machine (ctest label `package`, slow: run with SOFTBODY_PACKAGE_TEST=1): builds the
 # package with CPack, installs it with apt-get into a fresh Debian 12 root (debootstrap minbase, kept as a
 # pristine tarball in the build tree after the first run and unpacked anew every time), and renders the
-# bounce from PATH in the home folder, with EGL and with OSMesa. Exit 77 (ctest: skipped) when not asked
+# bounce from PATH in the home folder, with EGL and with OSMesa, and from the Python module. Exit 77 (ctest: skipped) when not asked
 # for, not root, or debootstrap cannot reach the Debian archive.
 #   package_test.sh BUILD_DIR SCRATCH_DIR
 set -euo pipefail
@@ -66,6 +66,16 @@ for backend in egl osmesa; do
   [ -s "$root/root/work/bounce_$backend/figure.png" ] || { echo "FAIL: no figure.png ($backend)"; exit 1; }
   echo "$out" | grep -q "backend $backend" || { echo "FAIL: the summary does not name $backend"; exit 1; }
 done
+# The Python module, where the build makes one: the system's python3 imports it and renders a frame.
+if compgen -G "$build/python/softbody*.so" >/dev/null; then
+  out=$(in_root python3 -c "import softbody
+sim = softbody.Simulation(softbody.load_scene('/usr/share/softbody/scenes/bounce.json', set={'duration': 0.1}))
+frames = [frame.index for frame in sim.frames()]
+image = softbody.render(sim, width=64, height=48)
+print('softbody', softbody.__version__, frames, image.shape, image.dtype)" 2>&1) || { echo "$out"; echo "FAIL: import softbody"; exit 1; }
+  echo "  [python] $out"
+  echo "$out" | grep -q "\[0, 1, 2, 3\] (48, 64, 3) uint8" || { echo "FAIL: the Python module's frames or image"; exit 1; }
+fi
 [ -f "$root/usr/share/man/man1/softbody.1.gz" ] || { echo "FAIL: no man page installed"; exit 1; }
 [ -f "$root/usr/share/softbody/scenes/meshes/pillow.obj" ] || { echo "FAIL: the scenes' meshes are not installed"; exit 1; }
 grep -q "^License: GPL-3.0-or-later" "$root/usr/share/doc/softbody/copyright" ||
