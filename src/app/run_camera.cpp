@@ -42,7 +42,7 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
 void frame_the_motion(render::RenderSettings& settings, const output::MotionTrack& motion) {
   if (motion.samples().empty()) return;
   settings.camera = render::frame_swept_box(
-      {to_glm(motion.swept_min()), to_glm(motion.swept_max())},
+      render::including_colliders({to_glm(motion.swept_min()), to_glm(motion.swept_max())}, settings.colliders),
       static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
 }
 

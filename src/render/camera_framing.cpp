@@ -9,6 +9,19 @@
 
 namespace render {
 
+Bounds including_colliders(const Bounds& swept, std::span<const sim::ColliderGeometry> colliders) {
+  Bounds box = swept;
+  for (const sim::ColliderGeometry& collider : colliders) {
+    softbody::Vec3 lo, hi;
+    if (!sim::world_bounds(collider, lo, hi)) continue;
+    box.min = glm::min(box.min,
+                       glm::vec3(static_cast<float>(lo.x()), static_cast<float>(lo.y()), static_cast<float>(lo.z())));
+    box.max = glm::max(box.max,
+                       glm::vec3(static_cast<float>(hi.x()), static_cast<float>(hi.y()), static_cast<float>(hi.z())));
+  }
+  return box;
+}
+
 CameraSettings frame_swept_box(const Bounds& swept, float aspect, float fov_deg, float margin) {
   const CameraSettings defaults;
   const glm::vec3 centre = 0.5f * (swept.min + swept.max);

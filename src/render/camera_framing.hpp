@@ -1,7 +1,10 @@
-// The camera a scene without `camera` gets: it looks at the box that the bodies sweep over the whole run,
+// The camera a scene without `camera` gets: it looks at the box that the bodies sweep over the whole run (and the
+// bounded colliders take),
 // from the default camera's direction, near enough to fill the picture and far enough to keep every body
 // in view with a margin.
 #pragma once
+
+#include <span>
 
 #include "render/settings.hpp"
 #include "render/shadow_map.hpp"
@@ -17,6 +20,9 @@ constexpr float kFramingMargin = 0.12f;
 // (x, y, z) in camera axes around the centre (z towards the camera) needs
 //   d >= |x| / ((1 − margin) tan(θh)) + z  and  d >= |y| / ((1 − margin) tan(θv)) + z,
 // with θv half the vertical field of view and tan(θh) = aspect · tan(θv) (pinhole projection).
+// `swept` grown to hold every bounded collider (a plane is unbounded: it does not count).
+Bounds including_colliders(const Bounds& swept, std::span<const sim::ColliderGeometry> colliders);
+
 CameraSettings frame_swept_box(const Bounds& swept, float aspect, float fov_deg, float margin = kFramingMargin);
 
 }  // namespace render

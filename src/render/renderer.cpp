@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/collider_surface.hpp"
 #include "render/normals.hpp"
 
 namespace render {
@@ -19,6 +20,7 @@ constexpr float kSquareSize_m = 1.0f;               // checker squares
 const glm::vec3 kLightSquare{0.78f, 0.78f, 0.76f};  // linear RGB
 const glm::vec3 kDarkSquare{0.30f, 0.30f, 0.32f};
 const glm::vec3 kDefaultBodyColor{0.80f, 0.12f, 0.07f};  // the scene default (scene::Body::color)
+const glm::vec3 kColliderColor{0.34f, 0.40f, 0.48f};     // linear RGB: a slate grey-blue, apart from floor and bodies
 
 // The floor fades into the background between these multiples of the camera's distance to its target,
 // which hides the floor's edge and the aliasing near the horizon; the square reaches a bit beyond.
@@ -53,17 +55,45 @@ Renderer::Renderer(GlContext& context, RenderSettings settings)
       targets_(settings_.width_px, settings_.height_px, settings_.msaa_samples),
       lit_body_program_({"surface.vert"}, {"lighting.glsl", "body.frag"}),
       lit_floor_program_({"surface.vert"}, {"lighting.glsl", "floor.frag"}),
+      lit_collider_program_({"surface.vert"}, {"lighting.glsl", "collider.frag"}),
       shadow_program_({"shadow.vert"}, {"shadow.frag"}) {
   if (settings_.shadows) shadow_map_.emplace(kShadowMapSize_px);
+  const float view_distance = glm::length(settings_.camera.target - settings_.camera.position);
+  floor_fade_start_m_ = std::min(kFadeStart * view_distance, kMaxFadeEnd_m * kFadeStart / kFadeEnd);
+  floor_fade_end_m_ = std::min(kFadeEnd * view_distance, kMaxFadeEnd_m);
+  upload_colliders();
   if (settings_.floor_height_m) {
-    const float view_distance = glm::length(settings_.camera.target - settings_.camera.position);
-    floor_fade_start_m_ = std::min(kFadeStart * view_distance, kMaxFadeEnd_m * kFadeStart / kFadeEnd);
-    floor_fade_end_m_ = std::min(kFadeEnd * view_distance, kMaxFadeEnd_m);
     const glm::vec2 under_camera(settings_.camera.position.x, settings_.camera.position.z);
     floor_.emplace(*settings_.floor_height_m, under_camera, floor_fade_end_m_ * 1.1f);
   }
   glEnable(GL_DEPTH_TEST);
   check_gl("setting up the renderer");
+}
+
+void Renderer::upload_colliders() {
+  std::vector<ColliderSurface> surfaces;
+  for (const sim::ColliderGeometry& geometry : settings_.colliders) {
+    if (geometry.shape == sim::ColliderShape::Plane) continue;
+    surfaces.push_back(bounded_collider_surface(geometry));
+    Bounds box{surfaces.back().positions.front(), surfaces.back().positions.front()};
+    if (collider_bounds_) box = *collider_bounds_;
+    for (const glm::vec3& p : surfaces.back().positions) {
+      box.min = glm::min(box.min, p);
+      box.max = glm::max(box.max, p);
+    }
+    collider_bounds_ = box;
+  }
+  shadow_casting_colliders_ = surfaces.size();
+  // A plane: a square reaching as far as the floor's fade, around its point nearest the camera's target.
+  for (const sim::ColliderGeometry& geometry : settings_.colliders) {
+    if (geometry.shape == sim::ColliderShape::Plane) {
+      surfaces.push_back(plane_square(geometry, settings_.camera.target, floor_fade_end_m_ * 1.1f));
+    }
+  }
+  for (const ColliderSurface& surface : surfaces) {
+    collider_meshes_.emplace_back(surface.positions.size(), surface.triangles);
+    collider_meshes_.back().update(surface.positions, surface.normals, {});
+  }
 }
 
 void Renderer::draw(std::span<const FrameMesh> bodies) {
@@ -96,7 +126,10 @@ void Renderer::upload(std::span<const FrameMesh> bodies) {
 
 LightFrustum Renderer::draw_shadow_pass(std::span<const FrameMesh> bodies) {
   if (!shadow_map_ || bodies.empty()) return {};
-  const LightFrustum light = fit_light_frustum(settings_.light.direction, bounds_of(bodies));
+  Bounds casters = bounds_of(bodies);
+  if (collider_bounds_)
+    casters = {glm::min(casters.min, collider_bounds_->min), glm::max(casters.max, collider_bounds_->max)};
+  const LightFrustum light = fit_light_frustum(settings_.light.direction, casters);
   shadow_map_->begin_pass();
   shadow_program_.use();
   shadow_program_.set("light_view_projection", light.view_projection);
@@ -107,6 +140,7 @@ LightFrustum Renderer::draw_shadow_pass(std::span<const FrameMesh> bodies) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(2.0f, 2.0f);
   for (const BodyMesh& mesh : body_meshes_) mesh.draw();
+  for (std::size_t c = 0; c < shadow_casting_colliders_; ++c) collider_meshes_[c].draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
   return light;
 }
@@ -142,6 +176,14 @@ void Renderer::draw_main_pass(const LightFrustum& light) {
     lit_floor_program_.set("light_square", kLightSquare);
     lit_floor_program_.set("dark_square", kDarkSquare);
     floor_->draw();
+  }
+  if (!collider_meshes_.empty()) {
+    set_lighting(lit_collider_program_, light);
+    lit_collider_program_.set("collider_color", kColliderColor);
+    lit_collider_program_.set("background", settings_.background);
+    lit_collider_program_.set("fade_start", floor_fade_start_m_);
+    lit_collider_program_.set("fade_end", floor_fade_end_m_);
+    for (const BodyMesh& mesh : collider_meshes_) mesh.draw();
   }
   set_lighting(lit_body_program_, light);
   for (std::size_t b = 0; b < body_meshes_.size(); ++b) {

@@ -1,5 +1,5 @@
-// The off-screen renderer: draws the bodies of one frame over a checkerboard floor, with a shadow, into
-// an sRGB image. It knows surfaces (FrameMesh) and nothing of the simulation behind them.
+// The off-screen renderer: draws the bodies of one frame over a checkerboard floor and among the static colliders,
+// with shadows, into an sRGB image. It knows surfaces (FrameMesh) and nothing of the simulation behind them.
 //
 //   FrameMesh per body ──► normals (CPU) ──► upload positions + normals
 //                                              │
@@ -48,6 +48,7 @@ class Renderer {
   LightFrustum draw_shadow_pass(std::span<const FrameMesh> bodies);
   void draw_main_pass(const LightFrustum& light);
   void set_lighting(const ShaderProgram& program, const LightFrustum& light) const;
+  void upload_colliders();
 
   GlContext& context_;  // current on this thread from here on
   RenderSettings settings_;
@@ -55,12 +56,16 @@ class Renderer {
   RenderTargets targets_;
   ShaderProgram lit_body_program_;
   ShaderProgram lit_floor_program_;
+  ShaderProgram lit_collider_program_;
   ShaderProgram shadow_program_;
   std::optional<ShadowMap> shadow_map_;
   std::optional<FloorMesh> floor_;
   float floor_fade_start_m_ = 0.0f;
   float floor_fade_end_m_ = 0.0f;
   std::vector<BodyMesh> body_meshes_;
+  std::vector<BodyMesh> collider_meshes_;     // uploaded once: colliders are static
+  std::optional<Bounds> collider_bounds_;     // the bounded colliders' box (they cast shadows; planes do not)
+  std::size_t shadow_casting_colliders_ = 0;  // collider_meshes_ starts with the bounded ones
   std::vector<glm::vec3> normals_scratch_;
 };
 

@@ -29,6 +29,7 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
     settings.body_colors.push_back(to_glm(body.color));
     settings.body_patterns.push_back(static_cast<int>(body.pattern));
   }
+  for (const sim::Collider& collider : scene.colliders) settings.colliders.push_back(collider.geometry);
   return settings;
 }
 

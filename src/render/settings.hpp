@@ -6,6 +6,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "sim/contact/collider_shape.hpp"
+
 namespace scene {
 struct Scene;
 }
@@ -33,9 +35,10 @@ struct RenderSettings {
   glm::vec3 background{0.62f, 0.72f, 0.85f};  // linear RGB
   CameraSettings camera;
   LightSettings light;
-  std::optional<float> floor_height_m;  // no floor drawn when empty
-  std::vector<glm::vec3> body_colors;   // linear RGB, one per body, in the scene's order
-  std::vector<int> body_patterns;       // scene::Pattern as an int, one per body (0: plain)
+  std::optional<float> floor_height_m;           // no floor drawn when empty
+  std::vector<glm::vec3> body_colors;            // linear RGB, one per body, in the scene's order
+  std::vector<int> body_patterns;                // scene::Pattern as an int, one per body (0: plain)
+  std::vector<sim::ColliderGeometry> colliders;  // the static colliders, drawn in their own colour (none: none drawn)
 };
 
 // The scene's render, camera, light, floor and body colour keys, as the renderer takes them.

@@ -26,6 +26,7 @@ struct Body {
   std::string mesh = "icosphere:3";  // "icosphere:L", "cube:N" or a mesh file path
   std::filesystem::path mesh_file;   // resolved path when `mesh` is a file, empty for generators
   Vec3 position_m = Vec3::Zero();    // where the mesh's origin is placed
+  Vec3 rotation_deg = Vec3::Zero();  // Euler angles about world X, then Y, then Z (core/euler_rotation.hpp) [°]
   double scale = 1.0;                // uniform scale applied to the mesh before placing it
   Vec3 velocity_m_per_s = Vec3::Zero();
   double mass_kg = 1.0;               // whole body, lumped to vertices by area (a third of each face)
@@ -97,9 +98,10 @@ struct Scene {
   // resolves its substeps and automatic dt there: the world's model.solver is the copy in force.
   sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
-  std::optional<sim::Floor> floor;  // no floor when absent
-  mesh::MeshLimits limits;          // "limits": the most a mesh file may hold (raisable)
-  SceneTotals totals;               // "limits": the most the whole scene may hold (raisable)
+  std::optional<sim::Floor> floor;       // no floor when absent
+  std::vector<sim::Collider> colliders;  // static shapes; their contact keys default to the floor's
+  mesh::MeshLimits limits;               // "limits": the most a mesh file may hold (raisable)
+  SceneTotals totals;                    // "limits": the most the whole scene may hold (raisable)
   std::vector<Body> bodies;
   sim::BodyContact collisions;  // between bodies, when there are several
   RenderSettings render;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.hpp"
+#include "core/euler_rotation.hpp"
 #include "core/file_kind.hpp"
 #include "mesh/generators.hpp"
 #include "scene/frame_pattern_check.hpp"
@@ -271,6 +272,111 @@ std::optional<sim::Floor> read_floor(const ObjectReader& top) {
   return floor;
 }
 
+// The keys that belong to one collider shape (besides shape, position, rotation and the contact keys).
+const std::vector<std::string>& shape_keys(sim::ColliderShape shape) {
+  static const std::vector<std::string> plane{"normal"}, box{"size"}, sphere{"radius"}, capsule{"radius", "length"};
+  switch (shape) {
+    case sim::ColliderShape::Plane: return plane;
+    case sim::ColliderShape::Box: return box;
+    case sim::ColliderShape::Sphere: return sphere;
+    case sim::ColliderShape::Capsule: return capsule;
+  }
+  return plane;
+}
+
+// Refuses a key of another shape ("radius" on a box) and asks for each of this shape's keys that has no default.
+void check_shape_keys(const ObjectReader& r, sim::ColliderShape shape, const std::string& shape_name) {
+  const std::vector<std::string>& own = shape_keys(shape);
+  std::string own_words;
+  for (const std::string& k : own) own_words += (own_words.empty() ? "\"" : ", \"") + k + "\"";
+  for (const char* k : {"normal", "size", "radius", "length"}) {
+    const bool belongs = std::find(own.begin(), own.end(), k) != own.end();
+    if (!belongs && r.has(k))
+      r.fail(r.child(k), "a " + shape_name + " takes no \"" + k + "\" (its own: " + own_words + ")", nullptr);
+    if (belongs && !r.has(k) && r.spec(k).default_value.is_null()) {
+      r.fail(r.child(k), "expected it for a " + shape_name + " (" + r.spec(k).description + ")", nullptr);
+    }
+  }
+}
+
+// A collider's shape keys into its geometry, with the rotation and position.
+sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
+  if (r.has("shape") && r.at("shape") == "mesh") {
+    r.fail(r.child("shape"),
+           "\"mesh\" colliders are not supported yet; expected one of \"plane\" \"box\" \"sphere\" \"capsule\"",
+           nullptr);
+  }
+  if (!r.has("shape")) r.fail(r.child("shape"), "expected one of \"plane\" \"box\" \"sphere\" \"capsule\"", nullptr);
+  sim::ColliderGeometry g;
+  g.shape = r.choice<sim::ColliderShape>("shape", {{"plane", sim::ColliderShape::Plane},
+                                                   {"box", sim::ColliderShape::Box},
+                                                   {"sphere", sim::ColliderShape::Sphere},
+                                                   {"capsule", sim::ColliderShape::Capsule}});
+  check_shape_keys(r, g.shape, r.at("shape").get<std::string>());
+  g.position_m = r.vec3("position");
+  g.rotation = softbody::rotation_xyz_degrees(r.vec3("rotation"));
+  switch (g.shape) {
+    case sim::ColliderShape::Plane: {
+      const Vec3 normal = r.vec3("normal");
+      if (normal.stableNorm() == 0.0) r.fail(r.child("normal"), "expected a non-zero vector", &r.at("normal"));
+      g.plane_normal = normal.stableNormalized();  // exact for tiny components, whose squares would underflow
+      break;
+    }
+    case sim::ColliderShape::Box: {
+      const Vec3 size = r.vec3("size");
+      if (size.minCoeff() <= 0.0) r.fail(r.child("size"), "expected 3 edge lengths, each > 0", &r.at("size"));
+      g.half_size_m = 0.5 * size;
+      break;
+    }
+    case sim::ColliderShape::Sphere: g.radius_m = r.number("radius", 0.0); break;
+    case sim::ColliderShape::Capsule:
+      g.radius_m = r.number("radius", 0.0);
+      g.half_length_m = 0.5 * r.number("length", 0.0);
+      break;
+  }
+  g.world_reach_m = sim::world_reach(g);
+  return g;
+}
+
+// A collider: its shape, and the floor's contact keys, each left out taking the floor's value.
+sim::Collider read_collider(const json& node, const std::string& path, const fs::path& file, const ObjectKeys& keys,
+                            const sim::Floor& floor) {
+  const ObjectReader r(node, path, file, keys);
+  sim::Collider collider;
+  collider.geometry = read_collider_geometry(r);
+  collider.contact = r.has("contact")
+                         ? r.choice<sim::FloorContact>("contact", {{"paper", sim::FloorContact::Paper},
+                                                                   {"friction", sim::FloorContact::Friction},
+                                                                   {"smooth", sim::FloorContact::Smooth}})
+                         : floor.contact;
+  collider.material = floor.material;
+  collider.material.restitution = r.number("restitution", floor.material.restitution);
+  collider.material.friction = r.number("friction", floor.material.friction);
+  collider.smooth = floor.smooth;
+  collider.smooth.time_constant_s = r.number("time_constant", floor.smooth.time_constant_s);
+  collider.smooth.damping_ratio = r.number("damping_ratio", floor.smooth.damping_ratio);
+  collider.smooth.slip_speed_m_per_s = r.number("slip_speed", floor.smooth.slip_speed_m_per_s);
+  collider.smooth.smoothing_m = r.number("smoothing", floor.smooth.smoothing_m);
+  r.reject_unknown();
+  return collider;
+}
+
+// "colliders": at least one; the floor (or, without one, a floor's defaults) gives the contact keys left out.
+std::vector<sim::Collider> read_colliders(const ObjectReader& top, const std::optional<sim::Floor>& floor) {
+  if (!top.has("colliders")) return {};
+  const json& list = top.at("colliders");
+  if (!list.is_array() || list.empty()) {
+    top.fail("colliders", "expected an array of at least one collider (leave the key out for none)", &list);
+  }
+  const ObjectKeys& keys = *top.spec("colliders").form(FormKind::ObjectList).object;
+  const sim::Floor defaults = floor ? *floor : sim::Floor{};
+  std::vector<sim::Collider> colliders;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    colliders.push_back(read_collider(list[i], "colliders." + std::to_string(i), top.file(), keys, defaults));
+  }
+  return colliders;
+}
+
 std::string read_mesh_spec(const ObjectReader& r, Body& body) {
   const std::string spec = r.string("mesh");
   if (mesh::names_generator(spec)) {
@@ -397,6 +503,7 @@ Body read_body(const json& node, const std::string& path, const fs::path& file, 
   Body body;
   body.mesh = read_mesh_spec(r, body);
   body.position_m = r.vec3("position");
+  body.rotation_deg = r.vec3("rotation");
   body.scale = r.number("scale");
   body.velocity_m_per_s = r.vec3("velocity");
   body.mass_kg = r.number("mass");
@@ -572,6 +679,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.solver = read_solver(top);
   s.gravity_m_per_s2 = top.vec3("gravity");
   s.floor = read_floor(top);
+  s.colliders = read_colliders(top, s.floor);
   read_limits(top, s);
   s.bodies = read_bodies(top);
   s.collisions = read_collisions(top);

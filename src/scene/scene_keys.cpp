@@ -122,12 +122,13 @@ void add_smooth_contact(ObjectKeys& keys, double time_constant_s) {
 
 // Every object of the scene file. Members refer to each other (Form::object), so the table lives in one place.
 struct Table {
-  ObjectKeys top, solver, floor, limits, body, stiffness, damping, pressure, bending, repair, resolution, collisions,
-      render, camera, light, output;
+  ObjectKeys top, solver, floor, collider, limits, body, stiffness, damping, pressure, bending, repair, resolution,
+      collisions, render, camera, light, output;
 
   Table() {
     fill_solver();
     fill_floor();
+    fill_collider();
     fill_limits();
     fill_body();
     fill_collisions();
@@ -158,6 +159,9 @@ struct Table {
         key("gravity", {vec3()}, "m/s²", "Acceleration of gravity.", json::array({0.0, -9.81, 0.0})),
         key_without_default("floor", {of_kind(FormKind::Null), object(floor)}, "",
                             "The ground plane y = height; null or left out: no floor.", "no floor"),
+        key_without_default("colliders", {object_list(collider)}, "",
+                            "Static shapes (plane, box, sphere, capsule) that move bodies and are not moved by them.",
+                            "none"),
         key_without_default("limits", {object(limits)}, "",
                             "The most a mesh file and the whole scene may hold (raisable)."),
         required(key_without_default("bodies", {object_list(body)}, "", "The soft bodies, at least one.")),
@@ -214,6 +218,37 @@ struct Table {
     add_smooth_contact(floor, 0.002);
   }
 
+  void fill_collider() {
+    collider.path = "colliders[]";
+    collider.description =
+        "A static shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; capsule \"radius\" and "
+        "\"length\". The contact keys left out take the floor's values (the floor's defaults without a floor).";
+    collider.keys = {
+        required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule"})}, "",
+                                     "plane: the half-space behind a plane through the position; box: centred on "
+                                     "the position; sphere; capsule: a cylinder along its local y with round caps.")),
+        key("position", {vec3()}, "m", "The shape's centre (a plane: a point on it).", json::array({0.0, 0.0, 0.0})),
+        key("rotation", {vec3()}, "°",
+            "Euler angles [rx, ry, rz] in degrees, applied about the world's X, then Y, then Z (Blender's XYZ).",
+            json::array({0.0, 0.0, 0.0})),
+        key("normal", {vec3()}, "", "Plane: its outward normal in its own frame (then rotated), non-zero.",
+            json::array({0.0, 1.0, 0.0})),
+        key_without_default("size", {vec3()}, "m", "Box (required): its full edge lengths [sx, sy, sz], each > 0."),
+        key_without_default("radius", {positive()}, "m", "Sphere and capsule (required): the radius."),
+        key_without_default("length", {non_negative()}, "m",
+                            "Capsule (required): its cylinder's length along its local y (the whole capsule is "
+                            "length + 2 radius long)."),
+    };
+    // The floor's contact keys, each defaulting to the scene's floor value.
+    for (const Key& floor_key : floor.keys) {
+      if (floor_key.name == "height") continue;
+      Key k = floor_key;
+      k.default_value = nullptr;
+      k.default_words = "the floor's";
+      collider.keys.push_back(k);
+    }
+  }
+
   void fill_limits() {
     limits.path = "limits";
     limits.description =
@@ -244,6 +279,10 @@ struct Table {
                        "icosphere:3"),
                    kMaxPathBytes),
         key("position", {vec3()}, "m", "Where the mesh's origin is placed.", json::array({0.0, 0.0, 0.0})),
+        key("rotation", {vec3()}, "°",
+            "Euler angles [rx, ry, rz] in degrees turning the mesh about its origin, applied about the world's X, "
+            "then Y, then Z (Blender's XYZ), after the scale and before the position.",
+            json::array({0.0, 0.0, 0.0})),
         key("scale", {number(at_least(1e-6), at_most(1e6))}, "", "Uniform scale applied to the mesh before placing it.",
             1.0),
         key("velocity", {vec3()}, "m/s", "Initial velocity of every vertex.", json::array({0.0, 0.0, 0.0})),
@@ -424,8 +463,9 @@ const ObjectKeys& scene_keys() { return table().top; }
 
 std::vector<const ObjectKeys*> all_objects() {
   const Table& t = table();
-  return {&t.top,     &t.solver, &t.floor,      &t.limits,     &t.body,   &t.stiffness, &t.damping, &t.pressure,
-          &t.bending, &t.repair, &t.resolution, &t.collisions, &t.render, &t.camera,    &t.light,   &t.output};
+  return {&t.top,        &t.solver,  &t.floor,    &t.collider, &t.limits, &t.body,
+          &t.stiffness,  &t.damping, &t.pressure, &t.bending,  &t.repair, &t.resolution,
+          &t.collisions, &t.render,  &t.camera,   &t.light,    &t.output};
 }
 
 std::string short_number(double x) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "core/euler_rotation.hpp"
 #include "geometry/mesh_repair.hpp"
 #include "mesh/check.hpp"
 #include "mesh/load.hpp"
@@ -89,7 +90,12 @@ std::vector<BodyPart> parts_of(mesh::LoadedMesh& loaded, const scene::Body& spec
 std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::Body& spec) {
   std::vector<softbody::Vec3> x;
   x.reserve(mesh.vertices.size());
-  for (const softbody::Vec3& p : mesh.vertices) x.push_back(spec.position_m + spec.scale * p);
+  if (spec.rotation_deg.isZero(0.0)) {  // no rotation: the placement as it always was, byte for byte
+    for (const softbody::Vec3& p : mesh.vertices) x.push_back(spec.position_m + spec.scale * p);
+    return x;
+  }
+  const softbody::Mat3 rotation = softbody::rotation_xyz_degrees(spec.rotation_deg);
+  for (const softbody::Vec3& p : mesh.vertices) x.push_back(spec.position_m + rotation * (spec.scale * p));
   return x;
 }
 
@@ -103,6 +109,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   if (solver.threads == 0) solver.threads = threads_when_auto;
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, solver);
   model.body_contact = scene.collisions;
+  model.colliders = scene.colliders;
   sim::State state = sim::initial_state(model);
   SceneTotals totals(scene);
   totals.check();  // generators' sizes and proxies' counts are known before any mesh is built

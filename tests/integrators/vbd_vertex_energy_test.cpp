@@ -55,8 +55,8 @@ struct Fixture {
   }
   sim::BodySolve solve() const {
     const sim::Body& body = world.model.bodies[0];
-    sim::BodySolve s{blocks, world.model.mass_kg,   target,       base,   h_hat,
-                     0.0,    1.0 / (h_hat * h_hat), std::nullopt, &*floor};
+    sim::BodySolve s{blocks, world.model.mass_kg,   target,       base,    h_hat,
+                     0.0,    1.0 / (h_hat * h_hat), std::nullopt, &*floor, {}};
     s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
     return s;
   }

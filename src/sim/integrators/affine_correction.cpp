@@ -108,7 +108,7 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   Matrix12 K = Matrix12::Zero();
   Vector12 G = Vector12::Zero();
   CoarseMoments moments;
-  // Vertices: inertia and floor.
+  // Vertices: inertia, floor and colliders.
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
@@ -117,6 +117,11 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      add_block(hessian, r, K);
+    }
+    for (const SmoothCollider& collider : s.colliders) {
+      Block3 hessian;
+      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
       add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);
@@ -169,6 +174,13 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
         Block3 unused_hessian;
         const FloorLag lag = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
         change += floor_energy_change(*s.floor, lag, m, x[i], step, s.base[i], s.h_hat);
+      }
+      for (const SmoothCollider& collider : s.colliders) {
+        Vec3 unused_gradient = Vec3::Zero();
+        Block3 unused_hessian;
+        const ColliderLag lag =
+            add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+        change += collider_energy_change(collider, lag, m, x[i], step, s.base[i], s.h_hat);
       }
     }
     for (std::size_t e = 0; e < constraints.size(); ++e) {

@@ -65,6 +65,7 @@ void IncrementalPotential::build(const Model& model) {
   }
   damper_axis_.resize(edges_.size());
   floor_.build(model);
+  colliders_.build(model);
   contact_.build(model);
 }
 
@@ -80,6 +81,8 @@ void IncrementalPotential::begin_step(const Model& model, const State& start, do
   }
   floor_.begin_step(h);
   floor_.lag(model, predicted_x_);
+  colliders_.begin_step(h);
+  colliders_.lag(model, predicted_x_);
   contact_.begin_step(h);
   contact_.lag(model, predicted_x_);
 }
@@ -110,7 +113,8 @@ double IncrementalPotential::energy(const Model& model, std::span<const Vec3> x,
   }
   const double inertial_J = inertial / (2.0 * h_ * h_), springs_J = 0.5 * springs, dampers_J = dampers / (2.0 * h_);
   double floor_size = 0.0;
-  const double floor = floor_.energy(model, x, start_x_, floor_size);
+  double floor = floor_.energy(model, x, start_x_, floor_size);
+  if (colliders_.active()) floor += colliders_.energy(model, x, start_x_, floor_size);
   double contact_size = 0.0;
   const double contact = contact_.energy(model, x, start_x_, contact_size);
   scale = inertial_J + std::abs(gravity) + springs_J + dampers_J + gas_size + floor_size + contact_size;
@@ -119,6 +123,7 @@ double IncrementalPotential::energy(const Model& model, std::span<const Vec3> x,
 
 void IncrementalPotential::update_lags(const Model& model, std::span<const Vec3> x) {
   floor_.lag(model, x);
+  colliders_.lag(model, x);
   contact_.lag(model, x);
 }
 
@@ -149,6 +154,7 @@ void IncrementalPotential::assemble(const Model& model, std::span<const Vec3> x,
     hessian.add_diagonal(static_cast<int>(i), m[i] * inverse_h2 * Mat3::Identity());
   }
   floor_.add_derivatives(model, x, start_x_, hessian, gradient);
+  colliders_.add_derivatives(model, x, start_x_, hessian, gradient);
   contact_.add_derivatives(model, x, start_x_, gradient);
   for (std::size_t k = 0; k < gas_.size(); ++k) {
     const Body& body = model.bodies[gas_[k].body];

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "sim/contact/body_contact_potential.hpp"
+#include "sim/contact/collider_potential.hpp"
 #include "sim/contact/floor_potential.hpp"
 #include "sim/model/model.hpp"
 #include "sim/model/state.hpp"
@@ -26,6 +27,8 @@ namespace sim {
 //   dampers   D = Σ_e c/(2h) ((Δx_i − Δx_j)·d̂_e)²,  Δx = x − x_n,  d̂_e = d_e / |d_e| at x_n
 //   smooth floor: its spring, dashpot and friction (sim/contact/floor_potential.hpp; the dashpot's weight and
 //             the friction's normal force lagged: taken at x̂ by begin_step(), then wherever update_lags() says)
+//   smooth colliders: the floor's three terms against each collider's surface (sim/contact/collider_potential.hpp;
+//             the normal lagged too)
 //   smooth body contact: the same three per vertex near another body's surface (sim/contact/
 //             body_contact_potential.hpp; the contact frames lagged too); its Hessian is rank-one terms
 // ∇D = c ((v'_i − v'_j)·d̂_e) d̂_e is the model's damper force along the spring with its direction taken at
@@ -71,7 +74,7 @@ class IncrementalPotential {
   // The smooth body contact's Hessian as rank-one terms over four vertices each, at the last assemble().
   std::span<const BodyContactPotential::Term> contact_terms() const { return contact_.terms(); }
   // True when E has lagged terms (the smooth floor or body contact); update_lags() takes them at x, which changes E.
-  bool has_lagged_terms() const { return floor_.active() || contact_.active(); }
+  bool has_lagged_terms() const { return floor_.active() || colliders_.active() || contact_.active(); }
   void update_lags(const Model& model, std::span<const Vec3> x);
 
  private:
@@ -96,6 +99,7 @@ class IncrementalPotential {
   std::vector<Vec3> predicted_x_;  // x̂ = x_n + h v_n
   std::vector<Vec3> damper_axis_;  // per edge: d̂ at x_n
   FloorPotential floor_;
+  ColliderPotential colliders_;
   BodyContactPotential contact_;
 };
 

@@ -52,6 +52,11 @@ void VertexBlockDescent::prepare_once(const Model& model) {
   lags_.resize(static_cast<std::size_t>(most_constraints));
   smooth_floor_.reset();
   if (model.floor && model.floor->contact == FloorContact::Smooth) smooth_floor_ = resolve_smooth_floor(*model.floor);
+  smooth_colliders_.clear();
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact == FloorContact::Smooth) smooth_colliders_.push_back(resolve_smooth_collider(collider));
+  }
+  lags_.colliders.resize(smooth_colliders_.size());
 }
 
 double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, double ratio,
@@ -89,7 +94,8 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
               kNegligibleStep * body.rest.mean_edge_m,
               1.0 / (h_hat * h_hat),
               std::nullopt,
-              smooth_floor_ ? &*smooth_floor_ : nullptr};
+              smooth_floor_ ? &*smooth_floor_ : nullptr,
+              smooth_colliders_};
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = 0; sweep < sweeps_; ++sweep) {

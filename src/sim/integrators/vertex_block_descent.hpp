@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
@@ -29,7 +30,8 @@ namespace sim {
 // curvature is clamped at zero, so H_i is positive definite and Δ a descent direction. A backtracking line search
 // on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers E: no setting can make a sweep add
 // energy, whatever h. Then v' = (x' − x̃)/ĥ.
-// The smooth floor enters E as newton's floor terms do (sim/contact/floor_potential.hpp); the paper's and the
+// The smooth floor and the smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
+// smooth_collider.hpp); the paper's and the
 // friction floor and the impulse contact between bodies stay projections after the step (sim::step).
 // What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
 // of the State is a checkpoint. No allocation per step once sizes settle.
@@ -73,12 +75,13 @@ class VertexBlockDescent final : public Integrator {
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
   std::vector<Vec3> coarse_motion_, coarse_scratch_;
-  std::vector<VertexBlocks> blocks_;         // per body
-  std::optional<SmoothFloor> smooth_floor_;  // the floor's constants when its contact is smooth
-  std::vector<Vec3> target_;                 // y per vertex [m]
-  std::vector<Vec3> base_;                   // x̃ per vertex [m]
-  std::vector<Vec3> start_x_, start_v_;      // x_n, v_n (then the next step's history)
-  ConstraintLags lags_;                      // scratch: one vertex's constraints as its visit found them
+  std::vector<VertexBlocks> blocks_;              // per body
+  std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
+  std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
+  std::vector<Vec3> target_;                      // y per vertex [m]
+  std::vector<Vec3> base_;                        // x̃ per vertex [m]
+  std::vector<Vec3> start_x_, start_v_;           // x_n, v_n (then the next step's history)
+  ConstraintLags lags_;                           // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
 };
 

@@ -53,6 +53,26 @@ double floor_energy_change(const SmoothFloor& floor, const FloorLag& lag, double
   return spring + dashpot + friction;
 }
 
+ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const Vec3& x, const Vec3& base, double h_hat,
+                               Vec3& gradient, Block3& hessian) {
+  const ColliderLag lag = lag_smooth_collider(collider, m, x);
+  Mat3 block = Mat3::Zero();
+  add_smooth_collider_derivatives(collider, lag, m, x, base, h_hat, gradient, block);
+  hessian.xx += block(0, 0);
+  hessian.xy += block(0, 1);
+  hessian.xz += block(0, 2);
+  hessian.yy += block(1, 1);
+  hessian.yz += block(1, 2);
+  hessian.zz += block(2, 2);
+  return lag;
+}
+
+double collider_energy_change(const SmoothCollider& collider, const ColliderLag& lag, double m, const Vec3& x,
+                              const Vec3& step, const Vec3& base, double h_hat) {
+  return smooth_collider_terms(collider, lag, m, x + step, base, h_hat) -
+         smooth_collider_terms(collider, lag, m, x, base, h_hat);
+}
+
 Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x) {
   const Vec3 xi = x[static_cast<std::size_t>(i)];
   Vec3 sum = Vec3::Zero();
@@ -100,6 +120,9 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
     terms.hessian.add_outer(s.gas->stiffness(volume), terms.volume_gradient);
   }
   if (s.floor) terms.floor = add_floor_terms(*s.floor, m, xi, base_i, s.h_hat, terms.gradient, terms.hessian);
+  for (std::size_t c = 0; c < s.colliders.size(); ++c) {
+    lags.colliders[c] = add_collider_terms(s.colliders[c], m, xi, base_i, s.h_hat, terms.gradient, terms.hessian);
+  }
   return terms;
 }
 
@@ -123,6 +146,9 @@ double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, 
   }
   if (s.gas) change += s.gas->energy_change(volume, terms.volume_gradient.dot(step));  // exact: V is affine in x_i
   if (s.floor) change += floor_energy_change(*s.floor, terms.floor, m, xi, step, s.base[vi], s.h_hat);
+  for (std::size_t c = 0; c < s.colliders.size(); ++c) {
+    change += collider_energy_change(s.colliders[c], lags.colliders[c], m, xi, step, s.base[vi], s.h_hat);
+  }
   return change;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
 
@@ -76,6 +77,7 @@ struct BodySolve {
   double inverse_h2 = 0.0;         // 1/ĥ² [1/s²]
   std::optional<GasLaw> gas;
   const SmoothFloor* floor = nullptr;
+  std::span<const SmoothCollider> colliders;  // the colliders whose contact is smooth
 };
 
 // The smooth floor's terms of one vertex, with the dashpot's weight w and friction's normal force N lagged at the
@@ -93,6 +95,13 @@ FloorLag add_floor_terms(const SmoothFloor& floor, double m, const Vec3& x, cons
 // The floor terms' change of E when the vertex moves from x by step [J].
 double floor_energy_change(const SmoothFloor& floor, const FloorLag& lag, double m, const Vec3& x, const Vec3& step,
                            const Vec3& base, double h_hat);
+// A smooth collider's terms of one vertex at x (sim/contact/smooth_collider.hpp, newton's too): its gradient and
+// Hessian added, and its normal, dashpot weight and friction force lagged at x returned.
+ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const Vec3& x, const Vec3& base, double h_hat,
+                               Vec3& gradient, Block3& hessian);
+// That collider's terms' change of E when the vertex moves from x by step, with the lags taken at x [J].
+double collider_energy_change(const SmoothCollider& collider, const ColliderLag& lag, double m, const Vec3& x,
+                              const Vec3& step, const Vec3& base, double h_hat);
 // Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²].
 Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x);
 
@@ -100,6 +109,7 @@ Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3
 struct ConstraintLags {
   std::vector<Vec3> axis;
   std::vector<double> length_m, rate_m;
+  std::vector<ColliderLag> colliders;  // per smooth collider (sized by the integrator once)
   void resize(std::size_t most_constraints) {
     axis.resize(most_constraints);
     length_m.resize(most_constraints);
@@ -116,7 +126,8 @@ struct VertexTerms {
 };
 
 // The terms of vertex i at x: inertia, its constraints (lagging each direction and approach into `lags`), the gas at
-// volume V (V of x), the smooth floor. A compressed spring's transverse curvature is clamped at zero.
+// volume V (V of x), the smooth floor and the smooth colliders (their lags into lags.colliders). A compressed spring's
+// transverse curvature is clamped at zero.
 VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags);
 
 // E(x with x_i moved by step) − E(x) [J], with the lags vertex_terms took at x (exact for the springs, the gas and the

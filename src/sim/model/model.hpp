@@ -19,6 +19,7 @@ struct Model {
   std::vector<double> inverse_mass;  // per vertex, all bodies [1/kg]
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
   std::optional<Floor> floor;           // none: no floor
+  std::vector<Collider> colliders;      // static shapes against which every vertex collides (none: no cost)
   BodyContact body_contact;             // between bodies (searched only when there are several)
   Solver solver;                        // the integrator and its options (dt_s: the step a run asks for)
   std::vector<Vec3> initial_x;          // every vertex where the model placed it: the stable-dt advice's state

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "sim/contact/collider_shape.hpp"
+
 namespace sim {
 
 // Time integrators (src/sim/integrators/): the paper's forward Euler and the methods compared in
@@ -106,6 +108,15 @@ struct Floor {
   FloorContact contact = FloorContact::Paper;
   ContactMaterial material;  // the friction and smooth contacts' restitution and friction
   SmoothContact smooth;      // the smooth contact's constants
+};
+
+// A shape that moves bodies and is not moved by them (static), with a floor's contact model and constants
+// (sim/contact/collider_contact.hpp, smooth_collider.hpp): a plane collider acts as a floor does.
+struct Collider {
+  ColliderGeometry geometry;
+  FloorContact contact = FloorContact::Paper;
+  ContactMaterial material;
+  SmoothContact smooth;
 };
 
 // How bodies touch each other.

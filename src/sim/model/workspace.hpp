@@ -25,6 +25,7 @@ struct Workspace {
   // What the contact phases found during the last step() (all its substeps) or advance_to() (all its steps
   // and attempts), for checks and benchmarks: how deep a vertex got into the floor before it was put back [m].
   double deepest_floor_penetration_m = 0.0;
+  double deepest_collider_penetration_m = 0.0;  // the same for the colliders (any of them) [m]
 };
 
 }  // namespace sim

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sim/contact/body_collision.hpp"
+#include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/forces/energy.hpp"
 #include "sim/forces/forces.hpp"
@@ -33,6 +34,10 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
   BodyDiagnostics d = diagnose(body, model.of(body, state.x), model.of(body, state.v), model.gravity_m_per_s2);
   if (model.floor && model.floor->contact == FloorContact::Smooth) {
     d.contact_J = smooth_floor_energy(resolve_smooth_floor(*model.floor), body.masses.kg, model.of(body, state.x));
+  }
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact != FloorContact::Smooth) continue;
+    d.contact_J += smooth_collider_energy(resolve_smooth_collider(collider), body.masses.kg, model.of(body, state.x));
   }
   if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
     BodyCollider collider;  // a search per call: diagnostics run per frame, not per step

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/contact/collider_shape.hpp"
 #include "sim/forces/energy.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/step/finite_scan.hpp"
@@ -68,9 +69,26 @@ std::optional<Divergence> bad_volume(int b, const Body& body, std::span<const Ve
   return std::nullopt;
 }
 
+// How far a body's centre may fall before something stops it [m]: to the floor; with colliders, also to each one's
+// lowest point along gravity (a bounded shape's world box corner, a plane's position).
+double fall_height(const Model& model, const Vec3& com) {
+  double height = model.floor ? std::max(0.0, com.y() - model.floor->height_m) : 0.0;
+  const double g = model.gravity_m_per_s2.norm();
+  if (model.colliders.empty() || g == 0.0) return height;
+  const Vec3 down = model.gravity_m_per_s2 / g;
+  for (const Collider& collider : model.colliders) {
+    Vec3 lowest = collider.geometry.position_m, lo, hi;
+    if (world_bounds(collider.geometry, lo, hi)) {
+      for (int k = 0; k < 3; ++k) lowest[k] = down[k] > 0.0 ? hi[k] : lo[k];
+    }
+    height = std::max(height, (lowest - com).dot(down));
+  }
+  return height;
+}
+
 // The energy budget of a body in this state [J] (check 2).
-double energy_budget(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
-                     const std::optional<Floor>& floor, double gravity_m_per_s2) {
+double energy_budget(const Model& model, const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
+                     double gravity_m_per_s2) {
   const double kinetic = kinetic_energy(body, v);
   const Vec3 com = centre_of_mass(body, x);
   const double spring = spring_energy(body, x);
@@ -81,7 +99,7 @@ double energy_budget(const Body& body, std::span<const Vec3> x, std::span<const 
     const double volume = std::max(enclosed_volume(body.topology.faces, x), collapsed);
     gas = body.params.pressure_J * (std::log(volume / collapsed) + std::log(10.0));
   }
-  const double height = floor ? std::max(0.0, com.y() - floor->height_m) : 0.0;
+  const double height = fall_height(model, com);
   const double fall = body.masses.total_kg * gravity_m_per_s2 * height;  // M |g| h
   // A body at rest with no stored energy still gets a small allowance: 1 cm/s for every kilogram.
   const double allowance = 0.5 * body.masses.total_kg * 1e-4;
@@ -109,7 +127,7 @@ std::optional<Divergence> check_all(const Model& model, State& state) {
     const auto x = model.of(body, state.x), v = model.of(body, state.v);
     const int index = static_cast<int>(b);
     if (auto found = non_finite(index, x, v)) return found;
-    if (take_budget) budget[b] = energy_budget(body, x, v, model.floor, g);
+    if (take_budget) budget[b] = energy_budget(model, body, x, v, g);
     const Motion m = motion_of(body, v);
     if (!(m.internal_kinetic_J <= kRunawayFactor * budget[b])) return runaway(index, m, budget[b], v);
     if (auto found = bad_volume(index, body, x)) return found;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <Eigen/Eigenvalues>
 
@@ -281,10 +282,28 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   return margin * limit;
 }
 
+namespace {
+
+// The height a falling vertex may reach a contact surface at [m]: the floor's; without a floor the lowest of the
+// colliders (a plane's point, a bounded shape's lowest extent); none without either.
+std::optional<double> lowest_contact_height(const Model& model) {
+  if (model.floor) return model.floor->height_m;
+  std::optional<double> lowest;
+  for (const Collider& collider : model.colliders) {
+    Vec3 lo, hi;
+    const double height = world_bounds(collider.geometry, lo, hi) ? lo.y() : collider.geometry.position_m.y();
+    lowest = lowest ? std::min(*lowest, height) : height;
+  }
+  return lowest;
+}
+
+}  // namespace
+
 StabilityEstimate estimate_stability(const Model& model, const State& state) {
   StabilityEstimate estimate = estimate_stability(model.bodies, state.x);
   for (const Vec3& v : state.v) estimate.impact_speed_m_per_s = std::max(estimate.impact_speed_m_per_s, v.norm());
-  if (!model.floor) {
+  const std::optional<double> ground = lowest_contact_height(model);
+  if (!ground) {
     scale_for_contacts(estimate, model);
     return estimate;
   }
@@ -295,7 +314,7 @@ StabilityEstimate estimate_stability(const Model& model, const State& state) {
     double speed = 0.0, height = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       speed = std::max(speed, v[i].norm());
-      height = std::max(height, x[i].y() - model.floor->height_m);
+      height = std::max(height, x[i].y() - *ground);
     }
     speed += std::sqrt(2.0 * g * std::max(0.0, height));  // m/s, v² = 2 g h
     estimate.impact_speed_m_per_s = std::max(estimate.impact_speed_m_per_s, speed);
@@ -331,17 +350,17 @@ void add_smooth_contact(StabilityEstimate& estimate, const SmoothResponse& conta
 
 }  // namespace
 
-void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
-  if (floor.contact == FloorContact::Smooth) {
-    add_smooth_contact(estimate,
-                       resolve_smooth_floor(floor));  // a force like the others: no projection, no projection margins
-    return;
-  }
-  const FloorContact contact = floor.contact;
+namespace {
+
+// The margins a post-step projection asks of the explicit integrators (the floor's friction or paper contact).
+void scale_for_projection(StabilityEstimate& estimate) {
   for (const IntegratorInfo& integrator : kIntegrators) {
     if (integrator.explicit_springs) estimate.stable_dt_s[static_cast<int>(integrator.kind)] *= kContactMargin;
   }
-  if (contact != FloorContact::Paper) return;
+}
+
+// What the paper's reflection asks besides (symplectic Euler's and forward Euler's limits).
+void scale_for_paper_projection(StabilityEstimate& estimate) {
   estimate.stable_dt_s[static_cast<int>(IntegratorKind::Symplectic)] *= kSymplecticProjectionFactor;
   double& euler = estimate.stable_dt_s[static_cast<int>(IntegratorKind::Euler)];
   for (const ModeBounds& b : estimate.bodies) {
@@ -353,8 +372,37 @@ void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
   }
 }
 
+}  // namespace
+
+void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor) {
+  if (floor.contact == FloorContact::Smooth) {
+    add_smooth_contact(estimate,
+                       resolve_smooth_floor(floor));  // a force like the others: no projection, no projection margins
+    return;
+  }
+  scale_for_projection(estimate);
+  if (floor.contact == FloorContact::Paper) scale_for_paper_projection(estimate);
+}
+
+void scale_for_collider_contacts(StabilityEstimate& estimate, const Model& model) {
+  bool margins = model.floor && model.floor->contact != FloorContact::Smooth;  // the floor's already taken
+  bool paper_margins = model.floor && model.floor->contact == FloorContact::Paper;
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact == FloorContact::Smooth) {
+      add_smooth_contact(estimate, resolve_smooth_response(collider.smooth, collider.material));
+      continue;
+    }
+    // A projection's margins once per kind, as the floor's: another projecting surface does not shrink them again.
+    if (!margins) scale_for_projection(estimate);
+    if (collider.contact == FloorContact::Paper && !paper_margins) scale_for_paper_projection(estimate);
+    margins = true;
+    paper_margins = paper_margins || collider.contact == FloorContact::Paper;
+  }
+}
+
 void scale_for_contacts(StabilityEstimate& estimate, const Model& model) {
   if (model.floor) scale_for_floor_contact(estimate, *model.floor);
+  scale_for_collider_contacts(estimate, model);
   if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
     add_smooth_contact(estimate, resolve_smooth_response(model.body_contact.smooth, model.body_contact.material));
   }

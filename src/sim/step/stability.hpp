@@ -157,7 +157,10 @@ int auto_substeps(IntegratorKind integrator, const Model& model, const Stability
 // contact acts on the same vertices as the springs, so the stiffest mode is at most the sum); the travel
 // limit needs velocities and is applied by estimate_stability(model, state).
 void scale_for_floor_contact(StabilityEstimate& estimate, const Floor& floor);
-// The floor's (if any) and the smooth body contact's (with several bodies) costs.
+// The colliders' contacts as the floor's: each smooth one's spring, dashpot and friction, and a projection's margins
+// once (not again where the floor's contact already took them).
+void scale_for_collider_contacts(StabilityEstimate& estimate, const Model& model);
+// The floor's (if any), the colliders' and the smooth body contact's (with several bodies) costs.
 void scale_for_contacts(StabilityEstimate& estimate, const Model& model);
 
 }  // namespace sim

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/profile.hpp"
+#include "sim/contact/collider_contact.hpp"
 #include "sim/contact/contact.hpp"
 #include "sim/step/diverged.hpp"
 #include "sim/step/guard.hpp"
@@ -67,6 +68,35 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace, double
   return found.below;
 }
 
+// Phase 3b: each collider's contact model, as the floor's (phase 3) against its surface. The paper's model appends
+// the vertices it reversed to state.coasting (cleared here when the floor's paper model has not just filled it).
+int resolve_colliders(const Model& model, State& state, Workspace& workspace, double h) {
+  if (model.colliders.empty()) return 0;
+  const softbody::ProfileScope profile(softbody::ProfilePhase::floor_contact);
+  const bool floor_filled_coasting = model.floor && model.floor->contact == FloorContact::Paper;
+  if (!floor_filled_coasting) state.coasting.clear();
+  const bool position_based = integrator_info(model.solver.integrator).position_based;
+  int touched = 0;
+  for (const Collider& collider : model.colliders) {
+    FloorContactFound found;
+    switch (collider.contact) {
+      case FloorContact::Paper:
+        found = resolve_collider_paper(collider.geometry, state.x, state.v, state.coasting);
+        break;
+      case FloorContact::Friction:
+        found = position_based ? resolve_collider_positional(collider.geometry, collider.material, h, state.x, state.v)
+                               : resolve_collider_friction(collider.geometry, collider.material, state.x, state.v);
+        break;
+      case FloorContact::Smooth:  // a force inside the dynamics: only the depth to report
+        found.deepest_m = deepest_inside_collider(collider.geometry, state.x);
+        break;
+    }
+    workspace.deepest_collider_penetration_m = std::max(workspace.deepest_collider_penetration_m, found.deepest_m);
+    touched += found.below;
+  }
+  return touched;
+}
+
 // Phase 4: the guard. Finite values every step; energy and volume every kFullCheckInterval steps, or every
 // step when `full` (a rejected step can be retried).
 std::optional<Divergence> guard(const Model& model, State& state, bool full) {
@@ -78,10 +108,11 @@ std::optional<Divergence> guard(const Model& model, State& state, bool full) {
   return check_finite(model, state);
 }
 
-// Phases 2 and 3 after a successful integration. A contact moved the state under the integrator: what it
+// Phases 2, 3 and 3b after a successful integration. A contact moved the state under the integrator: what it
 // carried about the old state is stale (a step with such an event is only first order, whatever the method).
 void resolve_contacts(const Model& model, State& state, Workspace& workspace, double h) {
-  const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h);
+  const int touched = resolve_body_contacts(model, state, workspace, h) + resolve_floor(model, state, workspace, h) +
+                      resolve_colliders(model, state, workspace, h);
   if (touched > 0) {
     state.carry.acceleration.clear();
     state.carry.previous_x.clear();  // vbd: a BDF2 step across the jump would extrapolate it
@@ -158,6 +189,7 @@ void reject_attempt(State& state, const Workspace& workspace, double next_dt_s) 
 void step(const Model& model, State& state, Workspace& workspace, double dt) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::step);
   workspace.deepest_floor_penetration_m = 0.0;
+  workspace.deepest_collider_penetration_m = 0.0;
   const bool retry = model.solver.retry;
   if (retry) save_before_step(model, state, workspace);
   if (const std::optional<Divergence> found = run_retry_substeps(model, state, workspace, dt)) {
@@ -172,6 +204,7 @@ void step(const Model& model, State& state, Workspace& workspace, double dt) {
 
 bool advance_to(const Model& model, State& state, Workspace& workspace, double end_time_s, StopQuery stop) {
   workspace.deepest_floor_penetration_m = 0.0;
+  workspace.deepest_collider_penetration_m = 0.0;
   std::optional<Divergence> last_finding;
   while (state.time_s < end_time_s) {
     if (stop && stop()) return false;

@@ -1,0 +1,26 @@
+// A static collider as triangles the renderer draws: a box's faces, a sphere's and a capsule's tessellation, flat
+// or smooth normals, in world coordinates; and a plane as a large square around a point of it.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/frame_mesh.hpp"
+#include "sim/contact/collider_shape.hpp"
+
+namespace render {
+
+struct ColliderSurface {
+  std::vector<glm::vec3> positions;  // m, world
+  std::vector<glm::vec3> normals;    // unit, outward
+  std::vector<glm::uvec3> triangles;
+};
+
+// The surface of a bounded collider (box, sphere, capsule); a plane has none here (plane_square).
+ColliderSurface bounded_collider_surface(const sim::ColliderGeometry& geometry);
+
+// A square of side 2 half_size_m on the plane, centred at the point of the plane nearest `near`.
+ColliderSurface plane_square(const sim::ColliderGeometry& plane, const glm::vec3& near, float half_size_m);
+
+}  // namespace render

@@ -1,0 +1,97 @@
+// The paper's, the friction and the positional contact against a static collider.
+#include "sim/contact/collider_contact.hpp"
+
+#include <algorithm>
+
+#include "sim/contact/contact_response.hpp"
+
+namespace sim {
+namespace {
+
+// The restitution and friction impulse on v for the outward normal n (per unit mass).
+Vec3 contact_impulse_velocity(const Vec3& v, const Vec3& n, const ContactMaterial& material) {
+  const double normal_speed = v.dot(n);
+  if (normal_speed >= 0.0) return v;  // already leaving: no impulse
+  const double new_normal_speed = separating_speed(normal_speed, material);
+  const double normal_impulse = new_normal_speed - normal_speed;  // > 0
+  Vec3 tangential = v - normal_speed * n;
+  const double tangential_speed = tangential.norm();
+  const double friction = friction_impulse(material, normal_impulse, tangential_speed);
+  if (friction == tangential_speed) {
+    tangential.setZero();  // static friction holds the vertex
+  } else {
+    tangential *= 1.0 - friction / tangential_speed;  // sliding friction
+  }
+  return tangential + new_normal_speed * n;
+}
+
+void record(FloorContactFound& found, double distance_m) {
+  found.deepest_m = std::max(found.deepest_m, -distance_m);
+  ++found.below;
+}
+
+}  // namespace
+
+FloorContactFound resolve_collider_paper(const ColliderGeometry& collider, std::span<Vec3> x, std::span<Vec3> v,
+                                         std::vector<int>& reversed) {
+  FloorContactFound found;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
+    const SurfacePoint s = nearest_surface(collider, x[i]);
+    if (s.distance_m >= 0.0) continue;
+    record(found, s.distance_m);
+    v[i] = -v[i];
+    x[i] = s.closest_m;
+    reversed.push_back(static_cast<int>(i));
+  }
+  return found;
+}
+
+FloorContactFound resolve_collider_friction(const ColliderGeometry& collider, const ContactMaterial& material,
+                                            std::span<Vec3> x, std::span<Vec3> v) {
+  FloorContactFound found;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
+    const SurfacePoint s = nearest_surface(collider, x[i]);
+    if (s.distance_m >= 0.0) continue;
+    record(found, s.distance_m);
+    x[i] = s.closest_m;
+    v[i] = contact_impulse_velocity(v[i], s.normal, material);
+  }
+  return found;
+}
+
+FloorContactFound resolve_collider_positional(const ColliderGeometry& collider, const ContactMaterial& material,
+                                              double h, std::span<Vec3> x, std::span<Vec3> v) {
+  FloorContactFound found;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
+    const SurfacePoint s = nearest_surface(collider, x[i]);
+    if (s.distance_m >= 0.0) continue;
+    const double depth = -s.distance_m;
+    record(found, s.distance_m);
+    x[i] = s.closest_m;
+    const Vec3& n = s.normal;
+    const double normal_speed = v[i].dot(n);
+    Vec3 tangential = v[i] - normal_speed * n;  // m/s
+    const double tangential_speed = tangential.norm();
+    if (h * tangential_speed <= material.friction * depth) {
+      x[i] -= h * tangential;  // static friction: the substep's tangential travel undone
+      tangential.setZero();
+    } else {
+      tangential *= 1.0 - std::min(material.friction * depth / h, tangential_speed) / tangential_speed;
+    }
+    v[i] = tangential + (normal_speed < 0.0 ? separating_speed(normal_speed, material) : normal_speed) * n;
+  }
+  return found;
+}
+
+double deepest_inside_collider(const ColliderGeometry& collider, std::span<const Vec3> x) {
+  double deepest = 0.0;
+  for (const Vec3& p : x) {
+    if (is_inside(collider, p)) deepest = std::max(deepest, -nearest_surface(collider, p).distance_m);
+  }
+  return deepest;
+}
+
+}  // namespace sim

@@ -1,0 +1,88 @@
+// No vertex inside a collider deeper than its contact model allows, at any frame, for every integrator at the step
+// "auto" chooses: a soft ball dropped onto a box's edge, a sphere and a tilted capsule (so that it also slides off).
+// The impulse models put every vertex back on the surface after each step: none inside. The smooth contact lets a
+// vertex sink until its spring has stopped it: about v τ for an impact at v (a spring m/τ² taking ½ m v²), plus the
+// smoothing depth δ over which the spring ramps up.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "frames/frame_clock.hpp"
+#include "setup/build_world.hpp"
+#include "sim/contact/collider_shape.hpp"
+#include "sim/step/step_plan.hpp"
+#include "sim/step/world.hpp"
+#include "test_helpers.hpp"
+
+namespace {
+
+using softbody::Vec3;
+
+constexpr double kDrop_m = 0.6;            // from the ball's lowest point to the collider's top
+constexpr double kTimeConstant_s = 0.002;  // the smooth contact's τ (the default)
+constexpr double kSmoothing_m = 0.002;     // its δ (the default)
+
+const char* const kShapes[] = {
+    R"({"shape": "box", "position": [0.25, 0, 0], "size": [0.5, 0.5, 0.5], "rotation": [0, 0, 10]})",
+    R"({"shape": "sphere", "position": [0.1, 0, 0], "radius": 0.25})",
+    R"({"shape": "capsule", "position": [0, 0, 0], "radius": 0.25, "length": 0.6, "rotation": [80, 0, 0]})",
+};
+
+std::string ball_onto(const std::string& shape, const std::string& contact, const sim::IntegratorInfo& integrator) {
+  const std::string step = integrator.frame_substeps ? R"("substeps": "auto")" : R"("dt": "auto")";
+  std::string collider = shape;
+  collider.insert(collider.size() - 1, R"(, "contact": ")" + contact + R"(", "restitution": 0.3, "friction": 0.4)");
+  return R"({ "duration": 0.8, "fps": 30, "solver": { "integrator": ")" + std::string(integrator.name) + R"(", )" +
+         step + R"( }, "colliders": [)" + collider + R"(],
+      "bodies": [ { "mesh": "icosphere:2", "scale": 0.2, "position": [0, )" +
+         std::to_string(0.25 + kDrop_m + 0.2) +
+         R"(, 0], "mass": 1, "stiffness": 600, "damping": {"ratio": 0.3}, "pressure": {"inflation": 0.05} } ] })";
+}
+
+// The deepest any vertex is inside the collider at any frame [m].
+double deepest_at_frames(const std::string& text) {
+  const scene::Scene scene = testing_support::scene_from_text(text);
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(scene, notes);
+  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
+  const sim::ColliderGeometry& collider = world.model.colliders.at(0).geometry;
+  double deepest = 0.0;
+  for (int frame = 1; frame <= clock.frame_count; ++frame) {
+    if (world.adaptive()) {
+      world.advance_to(frame * clock.frame_interval_s);
+    } else {
+      testing_support::run_steps(world, clock.steps_per_frame, clock.dt_s);
+    }
+    for (const Vec3& x : world.state.x) deepest = std::max(deepest, -sim::nearest_surface(collider, x).distance_m);
+  }
+  return deepest;
+}
+
+TEST(ColliderDepth, ImpulseContactsLeaveNoVertexInside) {
+  for (const char* contact : {"paper", "friction"}) {
+    for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
+      for (const char* shape : kShapes) {
+        const double deepest = deepest_at_frames(ball_onto(shape, contact, integrator));
+        EXPECT_LT(deepest, 1e-12) << contact << ", " << integrator.name << ", " << shape;
+      }
+    }
+  }
+}
+
+TEST(ColliderDepth, SmoothContactStaysWithinItsSkin) {
+  const double impact_speed = std::sqrt(2.0 * 9.81 * kDrop_m);        // m/s
+  const double skin = impact_speed * kTimeConstant_s + kSmoothing_m;  // v τ + δ = 8.9 mm
+  for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
+    for (const char* shape : kShapes) {
+      const double deepest = deepest_at_frames(ball_onto(shape, "smooth", integrator));
+      std::printf("smooth, %-10s %.2f mm (skin %.2f mm): %s\n", std::string(integrator.name).c_str(), 1e3 * deepest,
+                  1e3 * skin, shape);
+      EXPECT_LT(deepest, skin) << integrator.name << ", " << shape;
+    }
+  }
+}
+
+}  // namespace
