@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/profile.hpp"
+#include "sim/contact/collider_shape.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/affine_correction.hpp"
 
@@ -16,10 +17,11 @@ constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this
 // A Newton step shorter than this fraction of the body's mean edge is taken without a line search: E's change is then
 // below its own round-off (about k ε l |l − L0| for a spring), so the test could only refuse a harmless move.
 constexpr double kNegligibleStep = 1e-8;
-// Around an impact on the smooth floor the steps shrink to ω h ≤ kImpactPhase (ω = 1/τ, the contact's spring per unit
-// mass; the impact lasts about π/ω). A step counts as an impact where the vertices in or reaching contact within it
-// carry more normal momentum Σ m |v_y| than the body would at kImpactSpeed: a roll or a rest, whose vertices touch
-// down slowly, keeps full steps. Measured on scenes/bounce_smooth.json (docs/notes/2026-12-05-vbd.md).
+// Around an impact on the smooth floor or a smooth collider the steps shrink to ω h ≤ kImpactPhase (ω = 1/τ, the
+// contact's spring per unit mass; the impact lasts about π/ω). A step counts as an impact where the vertices in or
+// reaching contact within it carry more normal momentum Σ m |v·n| than the body would at kImpactSpeed: a roll or a
+// rest, whose vertices touch down slowly, keeps full steps. Measured on scenes/bounce_smooth.json
+// (docs/notes/2026-12-05-vbd.md).
 constexpr double kImpactPhase = 0.5;
 constexpr double kImpactSpeed = 0.01;  // m/s
 // The steps within a driver's step dt are dt / 2^level, level 0 to kDeepestLevel, so that they always tile it.
@@ -129,25 +131,41 @@ void VertexBlockDescent::visit_vertex(const BodySolve& s, int i, std::span<Vec3>
   if (s.gas) volume += terms.volume_gradient.dot(alpha * direction);  // exact: V is affine in x_i
 }
 
-bool VertexBlockDescent::impact_within(const Model& model, const State& state, double h) const {
-  const double g_y = model.gravity_m_per_s2.y();
-  const double floor_y = smooth_floor_->height_m;
+double VertexBlockDescent::impact_omega(const Model& model, const State& state, double h) const {
+  const Vec3 g = model.gravity_m_per_s2;
+  double omega = 0.0;
   for (const Body& body : model.bodies) {
     const auto x = Model::of(body, state.x);
     const auto v = Model::of(body, state.v);
     const auto m = Model::of(body, model.mass_kg);
-    double approach = 0.0, body_mass = 0.0;  // Σ m |v_y| of the vertices in or reaching contact [kg m/s]
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      body_mass += m[i];
-      // The lowest point of the free path y + v t + ½ g t² over [0, h]: an end, or its vertex where g_y > 0.
-      double lowest = std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g_y * h * h);
-      if (g_y > 0.0 && v[i].y() < 0.0 && -v[i].y() / g_y < h) lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g_y;
-      if (lowest < floor_y) approach += m[i] * std::abs(v[i].y());
+    double body_mass = 0.0;
+    for (const double mass : m) body_mass += mass;
+    const double least_impact = kImpactSpeed * body_mass;  // [kg m/s]
+    if (smooth_floor_) {
+      double approach = 0.0;  // Σ m |v_y| of the vertices in or reaching the floor within h [kg m/s]
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        // The lowest point of the free path y + v t + ½ g t² over [0, h]: an end, or its vertex where g_y > 0.
+        double lowest = std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g.y() * h * h);
+        if (g.y() > 0.0 && v[i].y() < 0.0 && -v[i].y() / g.y() < h)
+          lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g.y();
+        if (lowest < smooth_floor_->height_m) approach += m[i] * std::abs(v[i].y());
+      }
+      if (approach > least_impact) omega = std::max(omega, std::sqrt(smooth_floor_->omega2));
     }
-    // An impact: the vertices reaching the floor carry more normal momentum than the body at kImpactSpeed.
-    if (approach > kImpactSpeed * body_mass) return true;
+    for (const SmoothCollider& collider : smooth_colliders_) {
+      double approach = 0.0;  // Σ m |v·n| of the vertices inside it at the free path's start, middle or end
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const Vec3 middle = x[i] + 0.5 * h * v[i] + 0.125 * h * h * g, end = x[i] + h * v[i] + 0.5 * h * h * g;
+        if (!is_inside(collider.geometry, x[i]) && !is_inside(collider.geometry, middle) &&
+            !is_inside(collider.geometry, end)) {
+          continue;
+        }
+        approach += m[i] * std::abs(v[i].dot(nearest_surface(collider.geometry, x[i]).normal));
+      }
+      if (approach > least_impact) omega = std::max(omega, std::sqrt(collider.omega2));
+    }
   }
-  return false;
+  return omega;
 }
 
 bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State& state, double h) const {
@@ -168,8 +186,9 @@ bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State
 int VertexBlockDescent::next_level(const Model& model, const State& state, double dt, int level, long long done) const {
   const IntegratorCarry& carry = state.carry;
   const double h = std::ldexp(dt, -level);
-  if (smooth_floor_ && impact_within(model, state, h)) {  // the shallowest level with ω h ≤ kImpactPhase
-    const double pieces = dt * std::sqrt(smooth_floor_->omega2) / kImpactPhase;
+  if (const double omega = impact_omega(model, state, h);
+      omega > 0.0) {  // the shallowest level with ω h ≤ kImpactPhase
+    const double pieces = dt * omega / kImpactPhase;
     const int impact_level = static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0))));
     return std::clamp(impact_level, level, kDeepestLevel);
   }
@@ -178,8 +197,7 @@ int VertexBlockDescent::next_level(const Model& model, const State& state, doubl
   const bool can_double = level > 0 && done % double_ticks == 0 && same_step(carry.previous_dt_s, h) &&
                           same_step(carry.older_dt_s, h) &&
                           has_history(carry.older_x, carry.older_v, carry.older_dt_s, state.x.size());
-  if (can_double && smooth_enough_to_double(model, state, h) &&
-      !(smooth_floor_ && impact_within(model, state, 2.0 * h))) {
+  if (can_double && smooth_enough_to_double(model, state, h) && impact_omega(model, state, 2.0 * h) == 0.0) {
     return level - 1;
   }
   return level;

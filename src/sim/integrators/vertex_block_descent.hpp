@@ -17,7 +17,7 @@ namespace sim {
 //   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
 //             (at a constant h; with a step ratio ω = h_n/h_{n−1} ≤ 2 its variable-step form, set_targets)
 //   backward Euler (a run's first step, after a contact moved the state, after h grew over 2×): ĥ = h, x̃ = x_n
-// One call of step(dt) takes one such step, or several around an impact on the smooth floor (next_step).
+// One call of step(dt) takes one such step, or several around an impact on a smooth contact (next_level).
 // Eliminating v' leaves m (x' − y)/ĥ² = f(x', (x' − x̃)/ĥ), y = x̃ + ĥ ṽ + ĥ² g, the stationary point of
 //   E(x) = Σ_i m_i |x_i − y_i|² / (2ĥ²) + Σ_e ½ k (|d_e| − L0)² − nRT ln V + D(x) + floor terms        [J]
 // with the dampers' and the smooth floor's dissipation D taken with their directions and weights lagged at the
@@ -54,13 +54,14 @@ class VertexBlockDescent final : public Integrator {
   // The bodies' layouts, on the first step (again for a model with other bodies).
   void prepare_once(const Model& model);
   // The level of the next step (its size is dt / 2^level) after `done` ticks of dt / 2^kDeepestLevel: deeper for
-  // an impact on the smooth floor, one up where the two steps before allow it (then BDF2 takes its history from two
+  // an impact on a smooth contact, one up where the two steps before allow it (then BDF2 takes its history from two
   // steps back, so every BDF2 step has a step ratio of at most 1).
   int next_level(const Model& model, const State& state, double dt, int level, long long done) const;
   // Whether the last three states (steps of h) are smooth enough for a step of 2h (see kGrowthTolerance).
   bool smooth_enough_to_double(const Model& model, const State& state, double h) const;
-  // Whether a step of h from state is an impact on the smooth floor (see kImpactSpeed).
-  bool impact_within(const Model& model, const State& state, double h) const;
+  // The ω [1/s] of the stiffest smooth contact (floor or collider) that a step of h from state meets as an impact
+  // (see kImpactSpeed); 0 for none.
+  double impact_omega(const Model& model, const State& state, double h) const;
   // One implicit step of h.
   void take_step(const Model& model, State& state, double h);
   // y, x̃ and ĥ of this step into target_, base_ (BDF2 with the step ratio ω = h_n/h_{n−1} from the history
