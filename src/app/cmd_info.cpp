@@ -1,5 +1,6 @@
 // `softbody info SCENE [--set ...]`: mesh statistics, lumped masses, the fastest modes and, per
 // integrator, the estimated stable dt and the steps per frame it implies.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -8,6 +9,9 @@
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "scene/scene_json.hpp"
+#include "sim/contact/smooth_collider.hpp"
+#include "sim/contact/smooth_contact.hpp"
+#include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/step/stability.hpp"
 
 namespace app {
@@ -91,6 +95,49 @@ void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate,
               frame_interval_s / substeps, per_frame, cost, substeps_per_s, vertices, kXpbdSubstepNsPerVertex);
 }
 
+// What one vbd sweep costs per vertex, one thread, the affine correction included [ns of CPU time]: 340 on
+// scenes/bounce_smooth.json at icosphere:3 (0.27 CPU s per simulated s for 925 steps × 4 sweeps × 642 vertices in 3 s;
+// docs/notes/2026-12-05-vbd.md).
+constexpr double kVbdSweepNsPerVertex = 340.0;
+
+// The ω [1/s] of the stiffest smooth contact (floor or collider) of `model`; 0 for none.
+double stiffest_smooth_contact(const sim::Model& model) {
+  double omega2 = 0.0;
+  if (model.floor && model.floor->contact == sim::FloorContact::Smooth) {
+    omega2 = sim::resolve_smooth_floor(*model.floor).omega2;
+  }
+  for (const sim::Collider& collider : model.colliders) {
+    if (collider.contact == sim::FloorContact::Smooth) {
+      omega2 = std::max(omega2, sim::resolve_smooth_collider(collider).omega2);
+    }
+  }
+  return std::sqrt(omega2);
+}
+
+// vbd's line: the steps per frame `substeps: auto` picks and what they cost in flight; around impacts on a smooth
+// contact vbd takes smaller steps of its own, which the line names but does not price (their number depends on the
+// motion).
+void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
+               std::size_t vertices) {
+  const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);
+  const double steps_per_s = steps / frame_interval_s;
+  const int sweeps = model.solver.iterations;
+  const double cost = steps_per_s * sweeps * static_cast<double>(vertices) * kVbdSweepNsPerVertex * 1e-9;
+  char per_frame[32], limit[32] = "no limit";
+  std::snprintf(per_frame, sizeof per_frame, "%d steps", steps);
+  // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
+  if (model.floor && model.floor->contact != sim::FloorContact::Smooth) {
+    std::snprintf(limit, sizeof limit, "%.4g", estimate.travel_dt_s);
+  }
+  std::printf("  %-10s  %-12s %-12.4g %-22s about %.3g s in flight (%.0f steps/s x %d sweeps x %zu vertices x %.0f ns)",
+              "vbd", limit, frame_interval_s / steps, per_frame, cost, steps_per_s, sweeps, vertices,
+              kVbdSweepNsPerVertex);
+  if (const double omega = stiffest_smooth_contact(model); omega > 0.0) {
+    std::printf("; impacts add steps of at most %.2g ms while they last", 1e3 * sim::kVbdImpactPhase / omega);
+  }
+  std::printf("\n");
+}
+
 struct InfoOptions {
   SceneOptions scene;
   bool plan = false;
@@ -126,6 +173,8 @@ int run_info(const InfoOptions& options) {
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
     if (integrator.kind == sim::IntegratorKind::Xpbd) {
       print_xpbd(run.world.model, estimate, run.clock.frame_interval_s, run.world.state.x.size());
+    } else if (integrator.kind == sim::IntegratorKind::Vbd) {
+      print_vbd(run.world.model, estimate, run.clock.frame_interval_s, run.world.state.x.size());
     } else {
       print_integrator(integrator.kind, estimate.stable_dt(integrator.kind), run.clock.frame_interval_s,
                        run.world.state.x.size());

@@ -12,6 +12,9 @@
 
 namespace sim {
 
+// Around an impact on a smooth contact vbd's steps shrink to ω h ≤ kVbdImpactPhase (ω = 1/τ of the contact).
+inline constexpr double kVbdImpactPhase = 0.5;
+
 // Each step of h is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
 // SIGGRAPH 2024, for the solve; Ascher & Petzold, "Computer Methods for ODEs and DAEs", Sect. 5.1, for BDF2):
 //   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
