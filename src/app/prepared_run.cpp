@@ -30,20 +30,17 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
   scene.bodies = std::move(bodies);
   const sim::StepPlan step =
       sim::resolve_step(world.model, world.state, 1.0 / scene.fps, scene.source.string(), after_phase);
-  if (step.substeps_chosen && world.model.solver.integrator == sim::IntegratorKind::Vbd) {
-    char note[200];
-    std::snprintf(note, sizeof note,
-                  "solver.substeps = auto: %d steps per frame (h = %.4g s; the contact travel limit %.4g s applies "
-                  "to the paper's and the friction floor; vbd shrinks its steps itself around smooth impacts)",
-                  step.substeps, step.dt_s, step.travel_dt_s);
-    notes.insert(notes.begin(), note);
-  } else if (step.substeps_chosen) {
-    char note[200];
-    std::snprintf(note, sizeof note,
-                  "solver.substeps = auto: %d substeps per frame (h = %.4g s: within the carried form's limit and "
-                  "the contact travel limit %.4g s)",
-                  step.substeps, step.dt_s, step.travel_dt_s);
-    notes.insert(notes.begin(), note);
+  if (step.substeps_chosen) {
+    const bool vbd = world.model.solver.integrator == sim::IntegratorKind::Vbd;
+    char head[96], limit[32];
+    std::snprintf(head, sizeof head, "solver.substeps = auto: %d %s per frame (h = %.4g s", step.substeps,
+                  vbd ? "steps" : "substeps", step.dt_s);
+    std::snprintf(limit, sizeof limit, "%.4g s", step.travel_dt_s);
+    const std::string why =
+        vbd ? std::string("; the contact travel limit ") + limit +
+                  " applies to the paper's and the friction floor; vbd shrinks its steps itself around smooth impacts)"
+            : std::string(": within the carried form's limit and the contact travel limit ") + limit + ")";
+    notes.insert(notes.begin(), head + why);
   } else if (step.dt_chosen) {
     const sim::IntegratorKind integrator = world.model.solver.integrator;
     char note[200];
