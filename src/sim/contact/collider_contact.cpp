@@ -14,62 +14,47 @@ Vec3 contact_impulse_velocity(const Vec3& v, const Vec3& n, const ContactMateria
   if (normal_speed >= 0.0) return v;  // already leaving: no impulse
   const double new_normal_speed = separating_speed(normal_speed, material);
   const double normal_impulse = new_normal_speed - normal_speed;  // > 0
-  Vec3 tangential = v - normal_speed * n;
-  const double tangential_speed = tangential.norm();
-  const double friction = friction_impulse(material, normal_impulse, tangential_speed);
-  if (friction == tangential_speed) {
-    tangential.setZero();  // static friction holds the vertex
-  } else {
-    tangential *= 1.0 - friction / tangential_speed;  // sliding friction
-  }
-  return tangential + new_normal_speed * n;
+  return tangential_after_impulse(v - normal_speed * n, normal_impulse, material) + new_normal_speed * n;
 }
 
-void record(FloorContactFound& found, double distance_m) {
-  found.deepest_m = std::max(found.deepest_m, -distance_m);
-  ++found.below;
+// Calls respond(i, s) for every vertex i inside the collider (s: its nearest surface point), and counts them.
+template <class Respond>
+FloorContactFound for_each_inside(const ColliderGeometry& collider, std::span<const Vec3> x, Respond respond) {
+  FloorContactFound found;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!is_inside(collider, x[i])) continue;
+    const SurfacePoint s = nearest_surface(collider, x[i]);
+    if (s.distance_m >= 0.0) continue;
+    found.deepest_m = std::max(found.deepest_m, -s.distance_m);
+    ++found.below;
+    respond(i, s);
+  }
+  return found;
 }
 
 }  // namespace
 
 FloorContactFound resolve_collider_paper(const ColliderGeometry& collider, std::span<Vec3> x, std::span<Vec3> v,
                                          std::vector<int>& reversed) {
-  FloorContactFound found;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!is_inside(collider, x[i])) continue;
-    const SurfacePoint s = nearest_surface(collider, x[i]);
-    if (s.distance_m >= 0.0) continue;
-    record(found, s.distance_m);
+  return for_each_inside(collider, x, [&](std::size_t i, const SurfacePoint& s) {
     v[i] = -v[i];
     x[i] = s.closest_m;
     reversed.push_back(static_cast<int>(i));
-  }
-  return found;
+  });
 }
 
 FloorContactFound resolve_collider_friction(const ColliderGeometry& collider, const ContactMaterial& material,
                                             std::span<Vec3> x, std::span<Vec3> v) {
-  FloorContactFound found;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!is_inside(collider, x[i])) continue;
-    const SurfacePoint s = nearest_surface(collider, x[i]);
-    if (s.distance_m >= 0.0) continue;
-    record(found, s.distance_m);
+  return for_each_inside(collider, x, [&](std::size_t i, const SurfacePoint& s) {
     x[i] = s.closest_m;
     v[i] = contact_impulse_velocity(v[i], s.normal, material);
-  }
-  return found;
+  });
 }
 
 FloorContactFound resolve_collider_positional(const ColliderGeometry& collider, const ContactMaterial& material,
                                               double h, std::span<Vec3> x, std::span<Vec3> v) {
-  FloorContactFound found;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!is_inside(collider, x[i])) continue;
-    const SurfacePoint s = nearest_surface(collider, x[i]);
-    if (s.distance_m >= 0.0) continue;
+  return for_each_inside(collider, x, [&](std::size_t i, const SurfacePoint& s) {
     const double depth = -s.distance_m;
-    record(found, s.distance_m);
     x[i] = s.closest_m;
     const Vec3& n = s.normal;
     const double normal_speed = v[i].dot(n);
@@ -82,8 +67,7 @@ FloorContactFound resolve_collider_positional(const ColliderGeometry& collider, 
       tangential *= 1.0 - std::min(material.friction * depth / h, tangential_speed) / tangential_speed;
     }
     v[i] = tangential + (normal_speed < 0.0 ? separating_speed(normal_speed, material) : normal_speed) * n;
-  }
-  return found;
+  });
 }
 
 double deepest_inside_collider(const ColliderGeometry& collider, std::span<const Vec3> x) {

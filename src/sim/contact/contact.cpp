@@ -39,14 +39,7 @@ FloorContactFound resolve_floor_friction(double height_m, const ContactMaterial&
     if (normal_speed >= 0.0) continue;     // already leaving: no impulse
     const double new_normal_speed = separating_speed(normal_speed, material);
     const double normal_impulse = new_normal_speed - normal_speed;  // per unit mass, > 0
-    Vec3 tangential(v[i].x(), 0.0, v[i].z());
-    const double tangential_speed = tangential.norm();
-    const double friction = friction_impulse(material, normal_impulse, tangential_speed);
-    if (friction == tangential_speed) {
-      tangential.setZero();  // static friction holds the vertex
-    } else {
-      tangential *= 1.0 - friction / tangential_speed;  // sliding friction
-    }
+    const Vec3 tangential = tangential_after_impulse(Vec3(v[i].x(), 0.0, v[i].z()), normal_impulse, material);
     v[i] = Vec3(tangential.x(), new_normal_speed, tangential.z());
   }
   return found;

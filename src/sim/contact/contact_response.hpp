@@ -1,10 +1,11 @@
-// The rule of an impulse contact, shared by the friction floor and contact between bodies: how fast a
+// The rule of an impulse contact, shared by the friction floor, the colliders and contact between bodies: how fast a
 // contact separates after an impact (restitution, with resting contacts kept at rest), and how much
 // tangential impulse Coulomb friction allows.
 #pragma once
 
 #include <algorithm>
 
+#include "core/vec.hpp"
 #include "sim/model/settings.hpp"
 
 namespace sim {
@@ -20,6 +21,17 @@ inline double separating_speed(double normal_speed, const ContactMaterial& mater
 // for the floor, kg·m/s between bodies).
 inline double friction_impulse(const ContactMaterial& material, double normal_impulse, double stopping_impulse) {
   return std::min(material.friction * normal_impulse, stopping_impulse);
+}
+
+// The tangential velocity after an impulse with `normal_impulse` (both per unit mass): zero where static friction
+// holds the vertex, else slowed by Coulomb's μ × the normal impulse (sliding friction).
+inline softbody::Vec3 tangential_after_impulse(softbody::Vec3 tangential, double normal_impulse,
+                                               const ContactMaterial& material) {
+  const double tangential_speed = tangential.norm();
+  const double friction = friction_impulse(material, normal_impulse, tangential_speed);
+  if (friction == tangential_speed) return softbody::Vec3::Zero();  // static friction
+  tangential *= 1.0 - friction / tangential_speed;                  // sliding friction
+  return tangential;
 }
 
 }  // namespace sim
