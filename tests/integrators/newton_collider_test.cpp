@@ -15,12 +15,8 @@
 namespace {
 
 using integrator_tests::make_world;
+using integrator_tests::wiggle;
 using softbody::Vec3;
-
-Vec3 wiggle(std::size_t i, double phase) {
-  const double s = static_cast<double>(i);
-  return Vec3(std::sin(7.1 * s + phase), std::cos(3.3 * s + 2.0 * phase), std::sin(5.7 * s + 1.0 + phase));
-}
 
 // A unit sphere sunk 0.1 m into a sphere collider on its left and a tilted box on its right, sliding: every term of
 // both colliders is non-zero at some vertex.

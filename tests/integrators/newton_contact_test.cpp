@@ -17,13 +17,8 @@
 namespace {
 
 using integrator_tests::make_world;
+using integrator_tests::wiggle;
 using softbody::Vec3;
-
-// A deterministic, non-smooth field of unit size.
-Vec3 wiggle(std::size_t i, double phase) {
-  const double s = static_cast<double>(i);
-  return Vec3(std::sin(7.1 * s + phase), std::cos(3.3 * s + 2.0 * phase), std::sin(5.7 * s + 1.0 + phase));
-}
 
 // Two unit spheres pressed 3 cm into each other, off-centre, and sliding past each other, with a 4 cm smoothing
 // skin (a 2 mm one holds no vertex of these coarse meshes): their contact has vertices outside the skin, inside

@@ -17,13 +17,8 @@
 namespace {
 
 using integrator_tests::make_world;
+using integrator_tests::wiggle;
 using softbody::Vec3;
-
-// A deterministic, non-smooth field of unit size.
-Vec3 wiggle(std::size_t i, double phase) {
-  const double s = static_cast<double>(i);
-  return Vec3(std::sin(7.1 * s + phase), std::cos(3.3 * s + 2.0 * phase), std::sin(5.7 * s + 1.0 + phase));
-}
 
 // A unit sphere sunk 0.1 m into the smooth floor (its lowest ring of vertices 0 to 10 cm deep, some inside the
 // 2 mm smoothing depth), sliding sideways: every floor term of E is non-zero.

@@ -18,16 +18,11 @@ namespace {
 
 using integrator_tests::make_world;
 using integrator_tests::total_energy;
+using integrator_tests::wiggle;
 using softbody::Vec3;
 
 const sim::NewtonEuler& newton_of(const sim::World& world) {
   return dynamic_cast<const sim::NewtonEuler&>(*world.workspace.integrator);
-}
-
-// A deterministic, non-smooth field of unit size.
-Vec3 wiggle(std::size_t i, double phase) {
-  const double s = static_cast<double>(i);
-  return Vec3(std::sin(7.1 * s + phase), std::cos(3.3 * s + 2.0 * phase), std::sin(5.7 * s + 1.0 + phase));
 }
 
 // A sphere moving and deformed, mid-step: every term of E is non-zero (pressure 0: no gas term).

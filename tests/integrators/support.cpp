@@ -41,6 +41,11 @@ double rms_position_difference(const sim::State& a, const sim::State& b) {
   return std::sqrt(sum / static_cast<double>(a.x.size()));
 }
 
+softbody::Vec3 wiggle(std::size_t i, double phase) {
+  const double s = static_cast<double>(i);
+  return softbody::Vec3(std::sin(7.1 * s + phase), std::cos(3.3 * s + 2.0 * phase), std::sin(5.7 * s + 1.0 + phase));
+}
+
 double total_energy(const sim::World& world) {
   double energy = 0.0;
   for (std::size_t b = 0; b < world.model.bodies.size(); ++b)

@@ -15,6 +15,9 @@
 
 namespace integrator_tests {
 
+// A deterministic, non-smooth field of unit size over vertex indices (perturbed states for finite differences).
+softbody::Vec3 wiggle(std::size_t i, double phase);
+
 // The scene in `json_text` (comments allowed) with its solver replaced by `solver`.
 scene::Scene scene_with_solver(const std::string& json_text, const sim::Solver& solver);
 
