@@ -9,6 +9,7 @@
 
 namespace {
 
+using integrator_tests::kDust;
 using integrator_tests::make_world;
 using softbody::Vec3;
 
@@ -19,13 +20,6 @@ constexpr const char* kThrownSphere = R"({
   "gravity": [0, -9.81, 0],
   "bodies": [ { "mesh": "icosphere:2", "position": [0, 5, 0], "velocity": [1.5, 4, -0.5],
                 "mass": 1.0, "stiffness": 500.0, "damping": 0.5, "pressure": 300.0 } ]
-})";
-
-// Gravity only: every vertex is a free particle.
-constexpr const char* kDust = R"({
-  "gravity": [0, -9.81, 0],
-  "bodies": [ { "mesh": "icosphere:1", "position": [0, 5, 0], "velocity": [1.5, 4, -0.5],
-                "mass": 1.0, "stiffness": 0.0, "damping": 0.0, "pressure": 0.0 } ]
 })";
 
 const Vec3 kG(0, -9.81, 0);

@@ -26,6 +26,10 @@ sim::World make_world(const std::string& json_text, sim::IntegratorKind integrat
   sim::Solver solver;
   solver.integrator = integrator;
   solver.tolerance = tolerance;
+  return make_world(json_text, solver);
+}
+
+sim::World make_world(const std::string& json_text, const sim::Solver& solver) {
   std::vector<std::string> notes;
   return setup::build_world(scene_with_solver(json_text, solver), notes);
 }

@@ -23,6 +23,15 @@ scene::Scene scene_with_solver(const std::string& json_text, const sim::Solver& 
 
 // The world of `json_text` integrated with `integrator` (rk45: with `tolerance`).
 sim::World make_world(const std::string& json_text, sim::IntegratorKind integrator, double tolerance = 1e-6);
+// The same with the whole solver given (e.g. vbd's sweeps).
+sim::World make_world(const std::string& json_text, const sim::Solver& solver);
+
+// Gravity only: every vertex is a free particle.
+inline constexpr const char* kDust = R"({
+  "gravity": [0, -9.81, 0],
+  "bodies": [ { "mesh": "icosphere:1", "position": [0, 5, 0], "velocity": [1.5, 4, -0.5],
+                "mass": 1.0, "stiffness": 0.0, "damping": 0.0, "pressure": 0.0 } ]
+})";
 
 // Runs whole steps of dt until `duration_s` (which dt must divide up to round-off).
 void run_for(sim::World& world, double duration_s, double dt);

@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include "setup/build_world.hpp"
 #include "sim/contact/contact.hpp"
 #include "sim/forces/dynamics.hpp"
 #include "sim/step/diagnostics.hpp"
@@ -18,6 +17,7 @@
 
 namespace {
 
+using integrator_tests::kDust;
 using softbody::Vec3;
 
 // The world of `json_text` integrated by vbd with `sweeps` sweeps per step.
@@ -25,16 +25,8 @@ sim::World vbd_world(const std::string& json_text, int sweeps) {
   sim::Solver solver;
   solver.integrator = sim::IntegratorKind::Vbd;
   solver.iterations = sweeps;
-  std::vector<std::string> notes;
-  return setup::build_world(integrator_tests::scene_with_solver(json_text, solver), notes);
+  return integrator_tests::make_world(json_text, solver);
 }
-
-// Gravity only: every vertex is a free particle.
-constexpr const char* kDust = R"({
-  "gravity": [0, -9.81, 0],
-  "bodies": [ { "mesh": "icosphere:1", "position": [0, 5, 0], "velocity": [1.5, 4, -0.5],
-                "mass": 1.0, "stiffness": 0.0, "damping": 0.0, "pressure": 0.0 } ]
-})";
 
 // Every force at once: springs, dampers, bending links, gas, and the smooth floor with friction, 2 cm below the ball.
 constexpr const char* kEveryForce = R"({

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include "setup/build_world.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "support.hpp"
@@ -46,8 +45,7 @@ struct Fixture {
   static sim::World make(double scale) {
     sim::Solver solver;
     solver.integrator = sim::IntegratorKind::Vbd;
-    std::vector<std::string> notes;
-    sim::World world = setup::build_world(integrator_tests::scene_with_solver(kPressedBall, solver), notes);
+    sim::World world = integrator_tests::make_world(kPressedBall, solver);
     Vec3 centre = Vec3::Zero();
     for (const Vec3& p : world.state.x) centre += p / static_cast<double>(world.state.x.size());
     for (Vec3& p : world.state.x) p = centre + scale * (p - centre);
