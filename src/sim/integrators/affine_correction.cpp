@@ -93,10 +93,32 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
               q(6) * r.x() + q(7) * r.y() + q(8) * r.z() + q(11));
 }
 
+// The floor's and the smooth colliders' lags of every vertex at x, as the vertex's own terms take them.
+void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch) {
+  const std::size_t n = x.size();
+  Vec3 unused_gradient = Vec3::Zero();
+  Block3 unused_hessian;
+  if (s.floor) {
+    scratch.floor_lags.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch.floor_lags[i] =
+          add_floor_terms(*s.floor, s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+    }
+  }
+  scratch.collider_lags.resize(s.colliders.size() * n);
+  for (std::size_t c = 0; c < s.colliders.size(); ++c) {
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch.collider_lags[c * n + i] =
+          add_collider_terms(s.colliders[c], s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+    }
+  }
+}
+
 }  // namespace
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, std::vector<Vec3>& motion,
-                       std::vector<Vec3>& area_sums) {
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch) {
+  std::vector<Vec3>& motion = scratch.motion;
+  std::vector<Vec3>& area_sums = scratch.area_sums;
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
@@ -161,7 +183,9 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   if (!(slope < 0.0)) return false;
   motion.resize(n);
   for (std::size_t i = 0; i < n; ++i) motion[i] = affine_motion(q, x[i] - centre);
-  // Line search on E's change along the motion, with the directions and the floor's weights lagged at x.
+  // Line search on E's change along the motion, with the directions and the floor's and colliders' weights lagged
+  // at x (taken once: they do not depend on α).
+  take_contact_lags(s, x, scratch);
   std::vector<Vec3>& trial = area_sums;  // reused: the gas's sums are not needed any more
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
     double change = 0.0;
@@ -170,17 +194,11 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
       const double m = s.mass_kg[i];
       change += 0.5 * m * s.inverse_h2 * step.dot(2.0 * (x[i] - s.target[i]) + step);
       if (s.floor && (x[i].y() < s.floor->height_m || x[i].y() + step.y() < s.floor->height_m)) {
-        Vec3 unused_gradient = Vec3::Zero();
-        Block3 unused_hessian;
-        const FloorLag lag = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
-        change += floor_energy_change(*s.floor, lag, m, x[i], step, s.base[i], s.h_hat);
+        change += floor_energy_change(*s.floor, scratch.floor_lags[i], m, x[i], step, s.base[i], s.h_hat);
       }
-      for (const SmoothCollider& collider : s.colliders) {
-        Vec3 unused_gradient = Vec3::Zero();
-        Block3 unused_hessian;
-        const ColliderLag lag =
-            add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
-        change += collider_energy_change(collider, lag, m, x[i], step, s.base[i], s.h_hat);
+      for (std::size_t c = 0; c < s.colliders.size(); ++c) {
+        change +=
+            collider_energy_change(s.colliders[c], scratch.collider_lags[c * n + i], m, x[i], step, s.base[i], s.h_hat);
       }
     }
     for (std::size_t e = 0; e < constraints.size(); ++e) {

@@ -15,9 +15,15 @@ namespace sim {
 // body, δx_i = A (x_i − c) + t (A 3×3, t 3: q, 12 unknowns; c its centroid), δx = B q. The step solves
 // (Bᵀ H B) q = −Bᵀ ∇E with the sweeps' clamped, lagged H (Bᵀ H B is positive definite: its inertia part alone is),
 // then searches α on E's change along B q as a vertex does.
-// One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved. `motion` and
-// `scratch` are reused buffers.
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, std::vector<Vec3>& motion,
-                       std::vector<Vec3>& scratch);
+// The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
+struct AffineScratch {
+  std::vector<Vec3> motion;                // B q per vertex [m]
+  std::vector<Vec3> area_sums;             // the gas's per-vertex sums, then the line search's trial positions
+  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
+  std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
+};
+
+// One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved.
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch);
 
 }  // namespace sim

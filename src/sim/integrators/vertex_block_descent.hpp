@@ -6,6 +6,7 @@
 
 #include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
+#include "sim/integrators/affine_correction.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
 #include "sim/integrators/vertex_energy.hpp"
@@ -78,7 +79,7 @@ class VertexBlockDescent final : public Integrator {
 
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
-  std::vector<Vec3> coarse_motion_, coarse_scratch_;
+  AffineScratch coarse_scratch_;
   std::vector<VertexBlocks> blocks_;              // per body
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
