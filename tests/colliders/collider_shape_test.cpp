@@ -33,6 +33,15 @@ ColliderGeometry shape(ColliderShape kind, const Vec3& position = Vec3::Zero(),
   return g;
 }
 
+// A shape of `kind` off the origin, turned about all three axes, with sides, radius and length all different.
+ColliderGeometry posed_shape(ColliderShape kind) {
+  ColliderGeometry g = shape(kind, Vec3(0.1, 0.2, -0.3), Vec3(10, 20, 30));
+  g.half_size_m = Vec3(0.5, 0.7, 0.9);
+  g.radius_m = 0.6;
+  g.half_length_m = 0.4;
+  return g;
+}
+
 TEST(EulerRotation, AppliesXThenYThenZAboutTheWorldAxes) {
   // R = R_z R_y R_x: [90, 90, 0] takes y to z (about X), then z to x (about Y). The other order, R_x R_y, would leave
   // y at y and then take it to z.
@@ -125,10 +134,7 @@ TEST(ColliderShape, NormalIsTheGradientOfTheDistance) {
   std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
   for (const ColliderShape kind :
        {ColliderShape::Plane, ColliderShape::Box, ColliderShape::Sphere, ColliderShape::Capsule}) {
-    ColliderGeometry g = shape(kind, Vec3(0.1, 0.2, -0.3), Vec3(10, 20, 30));
-    g.half_size_m = Vec3(0.5, 0.7, 0.9);
-    g.radius_m = 0.6;
-    g.half_length_m = 0.4;
+    ColliderGeometry g = posed_shape(kind);
     int checked = 0;
     for (int trial = 0; trial < 200; ++trial) {
       const Vec3 x(coordinate(random), coordinate(random), coordinate(random));
@@ -157,10 +163,7 @@ TEST(ColliderShape, InsideTestAgreesWithTheSignedDistance) {
   std::uniform_real_distribution<double> coordinate(-1.5, 1.5);
   for (const ColliderShape kind :
        {ColliderShape::Plane, ColliderShape::Box, ColliderShape::Sphere, ColliderShape::Capsule}) {
-    ColliderGeometry g = shape(kind, Vec3(0.1, 0.2, -0.3), Vec3(10, 20, 30));
-    g.half_size_m = Vec3(0.5, 0.7, 0.9);
-    g.radius_m = 0.6;
-    g.half_length_m = 0.4;
+    ColliderGeometry g = posed_shape(kind);
     if (kind != ColliderShape::Plane) g.world_reach_m = sim::world_reach(g);  // the quick rejection on
     int inside = 0;
     for (int trial = 0; trial < 2000; ++trial) {
