@@ -159,9 +159,10 @@ struct Table {
         key("gravity", {vec3()}, "m/s²", "Acceleration of gravity.", json::array({0.0, -9.81, 0.0})),
         key_without_default("floor", {of_kind(FormKind::Null), object(floor)}, "",
                             "The ground plane y = height; null or left out: no floor.", "no floor"),
-        key_without_default("colliders", {object_list(collider)}, "",
-                            "Static shapes (plane, box, sphere, capsule) that move bodies and are not moved by them.",
-                            "none"),
+        key_without_default(
+            "colliders", {object_list(collider)}, "",
+            "Static shapes (plane, box, sphere, capsule, triangle mesh) that move bodies and are not moved by them.",
+            "none"),
         key_without_default("limits", {object(limits)}, "",
                             "The most a mesh file and the whole scene may hold (raisable)."),
         required(key_without_default("bodies", {object_list(body)}, "", "The soft bodies, at least one.")),
