@@ -42,7 +42,8 @@ void load_collider_meshes(const scene::Scene& scene, std::vector<sim::Collider>&
     if (!geometry.mesh->closed) {
       char text[160];
       std::snprintf(text, sizeof text,
-                    ": open (%zu edges of one triangle) or not consistently wound: a two-sided sheet %.3g m thick",
+                    ": not a closed solid (%zu edges of one triangle; or edges of three, mis-wound ones, no volume): "
+                    "a two-sided sheet %.3g m thick",
                     geometry.mesh->boundary_edges, 2.0 * geometry.mesh->half_thickness_m);
       notes.push_back(key + ": " + what + text);
     }

@@ -172,6 +172,12 @@ TEST(MeshCollider, OpenQuadIsASheetOfItsThickness) {
   EXPECT_NEAR(sim::nearest_surface(g, Vec3(1.3, 0.4, 0)).distance_m, 0.5 - 0.01, 1e-15);
   EXPECT_TRUE(sim::is_inside(g, Vec3(1.005, 0.0, 0.5)));  // within the rim's half thickness
   EXPECT_FALSE(sim::is_inside(g, Vec3(1.02, 0.0, 0.5)));
+  // The quad with both windings (every edge used twice, opposite ways) encloses no volume: a sheet too.
+  std::vector<softbody::Triangle> both = quad.triangles;
+  for (const softbody::Triangle& t : quad.triangles) both.push_back({t[0], t[2], t[1]});
+  const auto layers = sim::make_collider_mesh(quad.vertices, both, 0.02);
+  EXPECT_FALSE(layers->closed);
+  EXPECT_TRUE(sim::mesh_inside_local(*layers, Vec3(0.2, 0.005, 0.4)));
 }
 
 // A soft ball dropped on the corner region of a turned box, and on the same box as a cube mesh: the same motion, in

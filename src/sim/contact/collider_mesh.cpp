@@ -105,6 +105,17 @@ double signed_volume(const ColliderMesh& m) {
   return six_volume / 6.0;
 }
 
+// The volume of the vertices' bounding box [m³], the scale a signed volume is compared with.
+double box_volume(const ColliderMesh& m) {
+  Vec3 lo = m.vertices_m.front(), hi = lo;
+  for (const Vec3& p : m.vertices_m) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double diagonal = (hi - lo).norm();
+  return diagonal * diagonal * diagonal;
+}
+
 void add_vertex_normals(ColliderMesh& m) {
   m.vertex_normals.assign(m.vertices_m.size(), Vec3::Zero());
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
@@ -213,7 +224,12 @@ std::shared_ptr<const ColliderMesh> make_collider_mesh(std::vector<Vec3> vertice
   }
   if (m->triangles.empty()) throw std::invalid_argument("the mesh has no triangle with an area");
   m->closed = pair_edges(*m);
-  if (m->closed && signed_volume(*m) < 0.0) {  // wound inside out: turn every triangle and its normal
+  const double volume = m->closed ? signed_volume(*m) : 0.0;
+  if (m->closed && std::abs(volume) <= 1e-12 * box_volume(*m)) {
+    m->closed = false;  // no volume (a sheet's two sides as two layers of triangles): a sheet, not a solid
+    m->edge_normals.clear();
+  }
+  if (m->closed && volume < 0.0) {  // wound inside out: turn every triangle and its normal
     for (softbody::Triangle& t : m->triangles) std::swap(t[1], t[2]);
     for (Vec3& n : m->face_normals) n = -n;
     m->boundary_edges = 0;
