@@ -156,8 +156,7 @@ int run_render(const RenderOptions& options) {
       "render " + scene.source.string());
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
   render::RenderSettings settings = render::settings_from_scene(scene);
-  settings.colliders.clear();  // the world's: setup reads a mesh collider's triangles, which the scene only names
-  for (const sim::Collider& collider : run.world.model.colliders) settings.colliders.push_back(collider.geometry);
+  render::use_world_colliders(settings, run.world.model.colliders);
   const int last_frame = run.clock.frame_count;
   // A run of some frames only (a farm chunk) makes no figure.
   const bool motion_figure =
