@@ -40,12 +40,12 @@ void load_collider_meshes(const scene::Scene& scene, std::vector<sim::Collider>&
     }
     geometry.world_reach_m = sim::world_reach(geometry);
     if (!geometry.mesh->closed) {
-      char text[160];
-      std::snprintf(text, sizeof text,
-                    ": not a closed solid (%zu edges of one triangle; or edges of three, mis-wound ones, no volume): "
-                    "a two-sided sheet %.3g m thick",
-                    geometry.mesh->boundary_edges, 2.0 * geometry.mesh->half_thickness_m);
-      notes.push_back(key + ": " + what + text);
+      const std::string why = geometry.mesh->boundary_edges > 0
+                                  ? "open (" + std::to_string(geometry.mesh->boundary_edges) + " edges of one triangle)"
+                                  : "not a closed solid (edges of three triangles, mis-wound edges or no volume)";
+      char sheet[64];
+      std::snprintf(sheet, sizeof sheet, ": a two-sided sheet %.3g m thick", 2.0 * geometry.mesh->half_thickness_m);
+      notes.push_back(key + ": " + what + ": " + why + sheet);
     }
   }
 }
