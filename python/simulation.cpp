@@ -89,6 +89,7 @@ softbody::Image Simulation::render(int width_px, int height_px, sim::StopQuery s
   if (!renderer_ || renderer_->width() != width_px || renderer_->height() != height_px) {
     renderer_.reset();
     render::RenderSettings settings = render::settings_from_scene(run_.scene);
+    render::use_world_colliders(settings, run_.world.model.colliders);
     settings.width_px = width_px;
     settings.height_px = height_px;
     if (!run_.scene.camera.given) app::frame_the_motion(settings, motion_of_the_run(stop));

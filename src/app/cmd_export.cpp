@@ -1,5 +1,5 @@
 // `softbody export SCENE [-o DIR] [--format obj|ply|pc2|mdd] [--set ...]`: the simulated mesh of every frame,
-// or per body one mesh and a point cache of its positions.
+// or per body one mesh and a point cache of its positions; and the colliders once (output/collider_export.hpp).
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -16,6 +16,7 @@
 #include "core/profile.hpp"
 #include "frames/stop_request.hpp"
 #include "output/atomic_file.hpp"
+#include "output/collider_export.hpp"
 #include "output/folder_lock.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/mesh_exporter.hpp"
@@ -42,6 +43,14 @@ frames::Progress export_progress(const ExportOptions& options) {
   return options.progress_lines ? progress_lines() : frames::Progress{};
 }
 
+// Refuses collider files that would overwrite an input (checked before anything is written).
+void refuse_colliders_onto_inputs(const std::filesystem::path& dir, std::size_t colliders, const std::string& extension,
+                                  const std::vector<output::InputFile>& inputs) {
+  for (std::size_t i = 0; i < colliders; ++i) {
+    output::refuse_output_onto_inputs(output::collider_path(dir, i, extension), inputs, "-o");
+  }
+}
+
 // --format pc2 | mdd: DIR/body<N>.obj and DIR/body<N>.pc2 (.mdd), written when the run ends.
 int run_point_cache_export(const ExportOptions& options, output::PointCacheFormat format) {
   if (options.resume) {
@@ -66,6 +75,7 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
     output::refuse_output_onto_inputs(exporter.mesh_path(body), inputs, "-o");
     output::refuse_output_onto_inputs(exporter.cache_path(body), inputs, "-o");
   }
+  refuse_colliders_onto_inputs(dir, run.world.model.colliders.size(), ".obj", inputs);
   // One run at a time writes into the folder; the files are written whole at the end, so chunks would replace
   // each other's: none share it.
   const output::FolderLock lock(
@@ -73,7 +83,8 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
       run_identity("export", run.scene,
                    export_output_settings(format == output::PointCacheFormat::Pc2 ? "pc2" : "mdd")),
       output::FolderLock::Sharing::Exclusive, "export " + run.scene.source.string());
-  output::remove_stale_temporaries(dir);  // a killed run's half-written cache
+  output::remove_stale_temporaries(dir);                            // a killed run's half-written cache
+  output::write_colliders(dir, run.world.model.colliders, ".obj");  // static: once, before the frames
   std::vector<frames::FrameSink*> sinks = {&exporter};
   const frames::RunStats stats =
       frames::run_frames(run.world, run.clock, sinks, export_progress(options), planned.plan());
@@ -110,6 +121,8 @@ int run_export(const ExportOptions& options) {
   output::refuse_numbered_outputs_onto_inputs(
       dir, run.clock.frame_count, [&](int i) { return exporter.frame_path(i).filename(); }, scene_inputs(run.scene),
       "-o");
+  const std::string collider_extension = mesh_format == output::MeshFormat::Obj ? ".obj" : ".ply";
+  refuse_colliders_onto_inputs(dir, run.world.model.colliders.size(), collider_extension, scene_inputs(run.scene));
   // One run at a time writes into the folder; the chunks of one export (--frames, same scene and format)
   // share it.
   const std::string format = mesh_format == output::MeshFormat::Obj ? "obj" : "ply";
@@ -119,6 +132,7 @@ int run_export(const ExportOptions& options) {
                                 "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);
   if (!options.resume && planned.plan().frames.everything()) remove_earlier_meshes(dir, exporter.frame_pattern());
+  output::write_colliders(dir, run.world.model.colliders, collider_extension);  // static: once, before the frames
   std::unique_ptr<ResumableRun> resumable;
   output::RunManifest manifest;
   std::vector<frames::FrameSink*> sinks = {&exporter};
@@ -185,7 +199,10 @@ Action register_export(CLI::App& parent) {
       "  (little-endian, \"POINTCACHE2\", start frame = the first frame, one sample per frame) or DIR/body<N>.mdd\n"
       "  (big-endian, the simulated time of each frame) its positions, in the scene's units (m, y up).\n"
       "  The frames (all, or one --frames range) are kept in memory (12 bytes per vertex per frame) and the files\n"
-      "  written whole at the end (also when the run diverges: the frames before it).");
+      "  written whole at the end (also when the run diverges: the frames before it).\n"
+      "Colliders: DIR/collider_<N>.obj (.ply with --format ply), N the collider's index in the scene's \"colliders\",\n"
+      "  written once (they are static) in world coordinates: a mesh as its triangles, a box, sphere or capsule\n"
+      "  tessellated as rendered, a plane as a 20 m square around its point nearest the origin.");
   return [options] {
     const ProfiledRun profiled(options->profile);
     return run_export(*options);

@@ -156,6 +156,7 @@ int run_render(const RenderOptions& options) {
       "render " + scene.source.string());
   const std::unique_ptr<render::GlContext> context = render::create_offscreen_context(backend.backend);
   render::RenderSettings settings = render::settings_from_scene(scene);
+  render::use_world_colliders(settings, run.world.model.colliders);
   const int last_frame = run.clock.frame_count;
   // A run of some frames only (a farm chunk) makes no figure.
   const bool motion_figure =

@@ -22,6 +22,10 @@ std::vector<output::InputFile> scene_inputs(const scene::Scene& scene) {
     if (!scene.bodies[b].mesh_file.empty())
       inputs.push_back({scene.bodies[b].mesh_file, "the mesh file of bodies." + std::to_string(b)});
   }
+  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
+    if (!collider.mesh_file.empty())
+      inputs.push_back({collider.mesh_file, "the mesh file of colliders." + std::to_string(collider.collider)});
+  }
   return inputs;
 }
 

@@ -1,5 +1,5 @@
-// A static collider as triangles the renderer draws: a box's faces, a sphere's and a capsule's tessellation, flat
-// or smooth normals, in world coordinates; and a plane as a large square around a point of it.
+// A collider as triangles the renderer draws: the shared tessellation (frames/collider_tessellation.hpp) in the
+// renderer's single-precision vectors.
 #pragma once
 
 #include <vector>
@@ -17,7 +17,7 @@ struct ColliderSurface {
   std::vector<glm::uvec3> triangles;
 };
 
-// The surface of a bounded collider (box, sphere, capsule); a plane has none here (plane_square).
+// The surface of a bounded collider (box, sphere, capsule, mesh); a plane has none here (plane_square).
 ColliderSurface bounded_collider_surface(const sim::ColliderGeometry& geometry);
 
 // A square of side 2 half_size_m on the plane, centred at the point of the plane nearest `near`.

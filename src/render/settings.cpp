@@ -33,4 +33,9 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
   return settings;
 }
 
+void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders) {
+  settings.colliders.clear();
+  for (const sim::Collider& collider : colliders) settings.colliders.push_back(collider.geometry);
+}
+
 }  // namespace render

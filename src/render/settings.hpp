@@ -2,11 +2,13 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "sim/contact/collider_shape.hpp"
+#include "sim/model/settings.hpp"
 
 namespace scene {
 struct Scene;
@@ -43,5 +45,9 @@ struct RenderSettings {
 
 // The scene's render, camera, light, floor and body colour keys, as the renderer takes them.
 RenderSettings settings_from_scene(const scene::Scene& scene);
+
+// Draws `colliders` (the world's) instead of the scene's: setup reads a mesh collider's triangles, which the scene
+// only names.
+void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders);
 
 }  // namespace render

@@ -85,6 +85,15 @@ struct SceneTotals {
   long long max_triangles = 8'000'000;
 };
 
+// A "mesh" collider's file (or generator), which setup reads into the collider's shape (setup/collider_meshes.hpp).
+struct ColliderMeshSource {
+  std::size_t collider = 0;         // its index in Scene::colliders
+  std::string mesh;                 // as written: a file path relative to the scene, or a generator
+  std::filesystem::path mesh_file;  // the resolved path when `mesh` is a file, empty for a generator
+  double scale = 1.0;               // uniform scale applied to the mesh before it is turned and placed
+  double thickness_m = 0.01;        // an open mesh's thickness [m]
+};
+
 struct Scene {
   std::filesystem::path source;  // the scene file ("" when built in code)
   // The validated document with --set applied, less the keys that do not change the simulation (name,
@@ -98,10 +107,11 @@ struct Scene {
   // resolves its substeps and automatic dt there: the world's model.solver is the copy in force.
   sim::Solver solver;
   Vec3 gravity_m_per_s2{0.0, -9.81, 0.0};
-  std::optional<sim::Floor> floor;       // no floor when absent
-  std::vector<sim::Collider> colliders;  // static shapes; their contact keys default to the floor's
-  mesh::MeshLimits limits;               // "limits": the most a mesh file may hold (raisable)
-  SceneTotals totals;                    // "limits": the most the whole scene may hold (raisable)
+  std::optional<sim::Floor> floor;                  // no floor when absent
+  std::vector<sim::Collider> colliders;             // static shapes; their contact keys default to the floor's
+  std::vector<ColliderMeshSource> collider_meshes;  // one per "mesh" collider, read by setup
+  mesh::MeshLimits limits;                          // "limits": the most a mesh file may hold (raisable)
+  SceneTotals totals;                               // "limits": the most the whole scene may hold (raisable)
   std::vector<Body> bodies;
   sim::BodyContact collisions;  // between bodies, when there are several
   RenderSettings render;

@@ -274,12 +274,14 @@ std::optional<sim::Floor> read_floor(const ObjectReader& top) {
 
 // The keys that belong to one collider shape (besides shape, position, rotation and the contact keys).
 const std::vector<std::string>& shape_keys(sim::ColliderShape shape) {
-  static const std::vector<std::string> plane{"normal"}, box{"size"}, sphere{"radius"}, capsule{"radius", "length"};
+  static const std::vector<std::string> plane{"normal"}, box{"size"}, sphere{"radius"}, capsule{"radius", "length"},
+      mesh{"mesh", "scale", "thickness"};
   switch (shape) {
     case sim::ColliderShape::Plane: return plane;
     case sim::ColliderShape::Box: return box;
     case sim::ColliderShape::Sphere: return sphere;
     case sim::ColliderShape::Capsule: return capsule;
+    case sim::ColliderShape::Mesh: return mesh;
   }
   return plane;
 }
@@ -289,7 +291,7 @@ void check_shape_keys(const ObjectReader& r, sim::ColliderShape shape, const std
   const std::vector<std::string>& own = shape_keys(shape);
   std::string own_words;
   for (const std::string& k : own) own_words += (own_words.empty() ? "\"" : ", \"") + k + "\"";
-  for (const char* k : {"normal", "size", "radius", "length"}) {
+  for (const char* k : {"normal", "size", "radius", "length", "mesh", "scale", "thickness"}) {
     const bool belongs = std::find(own.begin(), own.end(), k) != own.end();
     if (!belongs && r.has(k))
       r.fail(r.child(k), "a " + shape_name + " takes no \"" + k + "\" (its own: " + own_words + ")", nullptr);
@@ -301,17 +303,15 @@ void check_shape_keys(const ObjectReader& r, sim::ColliderShape shape, const std
 
 // A collider's shape keys into its geometry, with the rotation and position.
 sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
-  if (r.has("shape") && r.at("shape") == "mesh") {
-    r.fail(r.child("shape"),
-           "\"mesh\" colliders are not supported yet; expected one of \"plane\" \"box\" \"sphere\" \"capsule\"",
-           nullptr);
+  if (!r.has("shape")) {
+    r.fail(r.child("shape"), "expected one of \"plane\" \"box\" \"sphere\" \"capsule\" \"mesh\"", nullptr);
   }
-  if (!r.has("shape")) r.fail(r.child("shape"), "expected one of \"plane\" \"box\" \"sphere\" \"capsule\"", nullptr);
   sim::ColliderGeometry g;
   g.shape = r.choice<sim::ColliderShape>("shape", {{"plane", sim::ColliderShape::Plane},
                                                    {"box", sim::ColliderShape::Box},
                                                    {"sphere", sim::ColliderShape::Sphere},
-                                                   {"capsule", sim::ColliderShape::Capsule}});
+                                                   {"capsule", sim::ColliderShape::Capsule},
+                                                   {"mesh", sim::ColliderShape::Mesh}});
   check_shape_keys(r, g.shape, r.at("shape").get<std::string>());
   g.position_m = r.vec3("position");
   g.rotation = softbody::rotation_xyz_degrees(r.vec3("rotation"));
@@ -333,17 +333,44 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
       g.radius_m = r.number("radius", 0.0);
       g.half_length_m = 0.5 * r.number("length", 0.0);
       break;
+    case sim::ColliderShape::Mesh: return g;  // its reach once setup has read the mesh
   }
   g.world_reach_m = sim::world_reach(g);
   return g;
 }
 
+// A mesh collider's "mesh" (a file relative to the scene, or a generator), "scale" and "thickness".
+ColliderMeshSource read_collider_mesh(const ObjectReader& r, std::size_t index) {
+  ColliderMeshSource source;
+  source.collider = index;
+  source.mesh = r.string("mesh", "");  // required: check_shape_keys asked for it
+  source.scale = r.number("scale");
+  source.thickness_m = r.number("thickness");
+  if (mesh::names_generator(source.mesh)) {
+    if (const std::string error = mesh::generator_spec_error(source.mesh); !error.empty()) {
+      r.fail(r.child("mesh"), error, nullptr);
+    }
+    return source;
+  }
+  const fs::path file = r.file().parent_path() / source.mesh;
+  if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
+    r.fail(r.child("mesh"),
+           "mesh file " + file.string() + " " + words +
+               " (expected a mesh file path relative to the scene, or a generator: icosphere:L, cube:N)",
+           nullptr);
+  }
+  source.mesh_file = file;
+  return source;
+}
+
 // A collider: its shape, and the floor's contact keys, each left out taking the floor's value.
-sim::Collider read_collider(const json& node, const std::string& path, const fs::path& file, const ObjectKeys& keys,
-                            const sim::Floor& floor) {
-  const ObjectReader r(node, path, file, keys);
+// A mesh collider's file goes to `meshes`.
+sim::Collider read_collider(const json& node, std::size_t index, const fs::path& file, const ObjectKeys& keys,
+                            const sim::Floor& floor, std::vector<ColliderMeshSource>& meshes) {
+  const ObjectReader r(node, "colliders." + std::to_string(index), file, keys);
   sim::Collider collider;
   collider.geometry = read_collider_geometry(r);
+  if (collider.geometry.shape == sim::ColliderShape::Mesh) meshes.push_back(read_collider_mesh(r, index));
   collider.contact = r.has("contact")
                          ? r.choice<sim::FloorContact>("contact", {{"paper", sim::FloorContact::Paper},
                                                                    {"friction", sim::FloorContact::Friction},
@@ -362,7 +389,8 @@ sim::Collider read_collider(const json& node, const std::string& path, const fs:
 }
 
 // "colliders": at least one; the floor (or, without one, a floor's defaults) gives the contact keys left out.
-std::vector<sim::Collider> read_colliders(const ObjectReader& top, const std::optional<sim::Floor>& floor) {
+std::vector<sim::Collider> read_colliders(const ObjectReader& top, const std::optional<sim::Floor>& floor,
+                                          std::vector<ColliderMeshSource>& meshes) {
   if (!top.has("colliders")) return {};
   const json& list = top.at("colliders");
   if (!list.is_array() || list.empty()) {
@@ -372,7 +400,7 @@ std::vector<sim::Collider> read_colliders(const ObjectReader& top, const std::op
   const sim::Floor defaults = floor ? *floor : sim::Floor{};
   std::vector<sim::Collider> colliders;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    colliders.push_back(read_collider(list[i], "colliders." + std::to_string(i), top.file(), keys, defaults));
+    colliders.push_back(read_collider(list[i], i, top.file(), keys, defaults, meshes));
   }
   return colliders;
 }
@@ -679,7 +707,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   s.solver = read_solver(top);
   s.gravity_m_per_s2 = top.vec3("gravity");
   s.floor = read_floor(top);
-  s.colliders = read_colliders(top, s.floor);
+  s.colliders = read_colliders(top, s.floor, s.collider_meshes);
   read_limits(top, s);
   s.bodies = read_bodies(top);
   s.collisions = read_collisions(top);

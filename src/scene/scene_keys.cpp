@@ -159,9 +159,10 @@ struct Table {
         key("gravity", {vec3()}, "m/s²", "Acceleration of gravity.", json::array({0.0, -9.81, 0.0})),
         key_without_default("floor", {of_kind(FormKind::Null), object(floor)}, "",
                             "The ground plane y = height; null or left out: no floor.", "no floor"),
-        key_without_default("colliders", {object_list(collider)}, "",
-                            "Static shapes (plane, box, sphere, capsule) that move bodies and are not moved by them.",
-                            "none"),
+        key_without_default(
+            "colliders", {object_list(collider)}, "",
+            "Static shapes (plane, box, sphere, capsule, triangle mesh) that move bodies and are not moved by them.",
+            "none"),
         key_without_default("limits", {object(limits)}, "",
                             "The most a mesh file and the whole scene may hold (raisable)."),
         required(key_without_default("bodies", {object_list(body)}, "", "The soft bodies, at least one.")),
@@ -222,11 +223,13 @@ struct Table {
     collider.path = "colliders[]";
     collider.description =
         "A static shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; capsule \"radius\" and "
-        "\"length\". The contact keys left out take the floor's values (the floor's defaults without a floor).";
+        "\"length\"; mesh \"mesh\", \"scale\" and \"thickness\". The contact keys left out take the floor's values "
+        "(the floor's defaults without a floor).";
     collider.keys = {
-        required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule"})}, "",
+        required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule", "mesh"})}, "",
                                      "plane: the half-space behind a plane through the position; box: centred on "
-                                     "the position; sphere; capsule: a cylinder along its local y with round caps.")),
+                                     "the position; sphere; capsule: a cylinder along its local y with round caps; "
+                                     "mesh: a triangle mesh file, solid when closed, else a sheet of a thickness.")),
         key("position", {vec3()}, "m", "The shape's centre (a plane: a point on it).", json::array({0.0, 0.0, 0.0})),
         key("rotation", {vec3()}, "°",
             "Euler angles [rx, ry, rz] in degrees, applied about the world's X, then Y, then Z (Blender's XYZ).",
@@ -238,6 +241,17 @@ struct Table {
         key_without_default("length", {non_negative()}, "m",
                             "Capsule (required): its cylinder's length along its local y (the whole capsule is "
                             "length + 2 radius long)."),
+        names_file(key_without_default("mesh", {of_kind(FormKind::String)}, "",
+                                       "Mesh (required): a mesh file path relative to the scene file (any format a "
+                                       "body's mesh may have, within \"limits\"), or a generator (\"icosphere:L\", "
+                                       "\"cube:N\", ...). Closed: solid; open: a two-sided sheet."),
+                   kMaxPathBytes),
+        key("scale", {number(at_least(1e-6), at_most(1e6))}, "",
+            "Mesh: uniform scale applied to the mesh before it is turned and placed at the position.", 1.0),
+        key("thickness", {positive()}, "m",
+            "Mesh: an open mesh's thickness: a point nearer its triangles than half of it is inside (a closed mesh "
+            "does not use it).",
+            0.01),
     };
     // The floor's contact keys, each defaulting to the scene's floor value.
     for (const Key& floor_key : floor.keys) {

@@ -11,6 +11,7 @@
 #include "mesh/load.hpp"
 #include "mesh/parts.hpp"
 #include "setup/bind_skin.hpp"
+#include "setup/collider_meshes.hpp"
 #include "setup/derived_quantities.hpp"
 #include "setup/scene_totals.hpp"
 #include "setup/simulation_proxy.hpp"
@@ -110,6 +111,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, solver);
   model.body_contact = scene.collisions;
   model.colliders = scene.colliders;
+  load_collider_meshes(scene, model.colliders, notes);
   sim::State state = sim::initial_state(model);
   SceneTotals totals(scene);
   totals.check();  // generators' sizes and proxies' counts are known before any mesh is built

@@ -20,12 +20,15 @@ std::uint64_t simulation_hash(const scene::Scene& scene) {
   const std::string build = build_fingerprint();
   XXH3_64bits_update(state, build.data(), build.size() + 1);
   XXH3_64bits_update(state, scene.simulation_json.data(), scene.simulation_json.size() + 1);
-  for (const scene::Body& body : scene.bodies) {
-    if (body.mesh_file.empty()) continue;
-    std::ifstream in(body.mesh_file, std::ios::binary);
+  std::vector<std::filesystem::path> files;
+  for (const scene::Body& body : scene.bodies) files.push_back(body.mesh_file);
+  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) files.push_back(collider.mesh_file);
+  for (const std::filesystem::path& file : files) {
+    if (file.empty()) continue;
+    std::ifstream in(file, std::ios::binary);
     if (!in.is_open()) {
       XXH3_freeState(state);
-      throw softbody::InputError(body.mesh_file.string() + ": cannot read the mesh file to hash the scene");
+      throw softbody::InputError(file.string() + ": cannot read the mesh file to hash the scene");
     }
     std::stringstream bytes;
     bytes << in.rdbuf();

@@ -1,5 +1,6 @@
 // No vertex inside a collider deeper than its contact model allows, at any frame, for every integrator at the step
-// "auto" chooses: a soft ball dropped onto a box's edge, a sphere and a tilted capsule (so that it also slides off).
+// "auto" chooses: a soft ball dropped onto a box's edge, a sphere, a tilted capsule (so that it also slides off), the
+// box as a cube mesh and a tilted square sheet (an open mesh).
 // The impulse models put every vertex back on the surface after each step: none inside. The smooth contact lets a
 // vertex sink until its spring has stopped it: about v τ for an impact at v (a spring m/τ² taking ½ m v²), plus the
 // smoothing depth δ over which the spring ramps up.
@@ -28,6 +29,9 @@ const char* const kShapes[] = {
     R"({"shape": "box", "position": [0.25, 0, 0], "size": [0.5, 0.5, 0.5], "rotation": [0, 0, 10]})",
     R"({"shape": "sphere", "position": [0.1, 0, 0], "radius": 0.25})",
     R"({"shape": "capsule", "position": [0, 0, 0], "radius": 0.25, "length": 0.6, "rotation": [80, 0, 0]})",
+    // The box as a closed mesh, and an open square sheet (1 cm thick) tilted as the box is.
+    R"({"shape": "mesh", "mesh": "cube:1", "scale": 0.5, "position": [0.25, 0, 0], "rotation": [0, 0, 10]})",
+    R"({"shape": "mesh", "mesh": "data/quad.obj", "scale": 0.4, "position": [0.25, 0.25, 0], "rotation": [0, 0, 10]})",
 };
 
 std::string ball_onto(const std::string& shape, const std::string& contact, const sim::IntegratorInfo& integrator) {

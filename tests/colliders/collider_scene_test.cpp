@@ -1,5 +1,5 @@
 // The "colliders" key: shapes read into their geometry, contact keys defaulting to the floor's, and clear errors
-// naming the key for a shape's missing or foreign keys and for the shapes not supported yet.
+// naming the key for a shape's missing or foreign keys and for a mesh file that is not there.
 #include <cmath>
 #include <string>
 
@@ -65,7 +65,10 @@ TEST(ColliderScene, RefusesMissingForeignAndUnsupportedKeys) {
             std::string::npos);
   EXPECT_NE(refusal(with_colliders("", R"([{"shape": "plane", "normal": [0, 0, 0]}])")).find("colliders.0.normal"),
             std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "mesh", "mesh": "a.obj"}])")).find("not supported yet"),
+  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "mesh", "mesh": "no_such_file.obj"}])"))
+                .find("colliders.0.mesh: mesh file"),
+            std::string::npos);
+  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "mesh"}])")).find("colliders.0.mesh: expected it for a mesh"),
             std::string::npos);
   EXPECT_NE(refusal(with_colliders("", "[]")).find("colliders: expected an array of at least one collider"),
             std::string::npos);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/contact/collider_mesh.hpp"
+
 namespace sim {
 namespace {
 
@@ -63,6 +65,7 @@ SurfacePoint nearest_local(const ColliderGeometry& g, const Vec3& q) {
     case ColliderShape::Box: return box_local(g.half_size_m, q);
     case ColliderShape::Sphere: return sphere_local(g.radius_m, q);
     case ColliderShape::Capsule: return capsule_local(g.radius_m, g.half_length_m, q);
+    case ColliderShape::Mesh: return mesh_nearest_local(*g.mesh, q);
   }
   return {};
 }
@@ -81,10 +84,12 @@ bool is_inside(const ColliderGeometry& g, const Vec3& x) {
     case ColliderShape::Plane: return g.plane_normal.dot(g.rotation.transpose() * offset) < 0.0;
     case ColliderShape::Sphere: return offset.squaredNorm() < g.radius_m * g.radius_m;
     case ColliderShape::Box:
-    case ColliderShape::Capsule: break;
+    case ColliderShape::Capsule:
+    case ColliderShape::Mesh: break;
   }
   if ((offset.cwiseAbs() - g.world_reach_m).maxCoeff() >= 0.0) return false;  // outside the world box
   const Vec3 q = g.rotation.transpose() * offset;
+  if (g.shape == ColliderShape::Mesh) return mesh_inside_local(*g.mesh, q);
   if (g.shape == ColliderShape::Box) return (q.cwiseAbs() - g.half_size_m).maxCoeff() < 0.0;
   const Vec3 out(q.x(), q.y() - std::clamp(q.y(), -g.half_length_m, g.half_length_m), q.z());  // capsule
   return out.squaredNorm() < g.radius_m * g.radius_m;
@@ -97,12 +102,23 @@ Vec3 world_reach(const ColliderGeometry& g) {
     case ColliderShape::Box: return spread * g.half_size_m;
     case ColliderShape::Sphere: return Vec3::Constant(g.radius_m);
     case ColliderShape::Capsule: return spread.col(1) * g.half_length_m + Vec3::Constant(g.radius_m);
+    case ColliderShape::Mesh: {  // the local box's centre c and half sides e: |R c| + |R| e
+      const Vec3 centre = 0.5 * (g.mesh->lo_m + g.mesh->hi_m), half = 0.5 * (g.mesh->hi_m - g.mesh->lo_m);
+      return Vec3((g.rotation * centre).cwiseAbs() + spread * half);
+    }
   }
   return Vec3::Zero();
 }
 
 bool world_bounds(const ColliderGeometry& g, Vec3& lo, Vec3& hi) {
   if (g.shape == ColliderShape::Plane) return false;
+  if (g.shape == ColliderShape::Mesh) {  // the mesh's own box, turned: centre position + R c, half sides |R| e
+    const Vec3 centre = g.position_m + g.rotation * (0.5 * (g.mesh->lo_m + g.mesh->hi_m));
+    const Vec3 half = g.rotation.cwiseAbs() * (0.5 * (g.mesh->hi_m - g.mesh->lo_m));
+    lo = centre - half;
+    hi = centre + half;
+    return true;
+  }
   const Vec3 reach = world_reach(g);
   lo = g.position_m - reach;
   hi = g.position_m + reach;

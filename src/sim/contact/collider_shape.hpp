@@ -1,9 +1,10 @@
-// The analytic shapes a collider may have (plane, box, sphere, capsule), placed in the world, and the one query
-// every contact model asks of them: a point's signed distance to the surface, the outward normal and the closest
-// surface point.
+// The shapes a collider may have (plane, box, sphere, capsule, and a triangle mesh: sim/contact/collider_mesh.hpp),
+// placed in the world, and the one query every contact model asks of them: a point's signed distance to the surface,
+// the outward normal and the closest surface point.
 #pragma once
 
 #include <limits>
+#include <memory>
 
 #include "core/vec.hpp"
 
@@ -17,17 +18,21 @@ enum class ColliderShape {
   Box,      // a rectangular box centred on the position
   Sphere,   // a ball centred on the position
   Capsule,  // a cylinder along the local y axis with hemispherical caps, centred on the position
+  Mesh,     // a triangle mesh placed at the position: solid when closed, else a sheet of a thickness
 };
+
+struct ColliderMesh;  // sim/contact/collider_mesh.hpp
 
 // A shape and where it is: local coordinates q map to world ones as x = position + rotation q.
 struct ColliderGeometry {
   ColliderShape shape = ColliderShape::Plane;
   Vec3 position_m = Vec3::Zero();
-  Mat3 rotation = Mat3::Identity();  // local → world, orthonormal
-  Vec3 plane_normal{0.0, 1.0, 0.0};  // plane: unit outward normal, local
-  Vec3 half_size_m{0.5, 0.5, 0.5};   // box: half the edge lengths, local x, y, z [m]
-  double radius_m = 0.5;             // sphere and capsule [m]
-  double half_length_m = 0.5;        // capsule: half its cylinder's length along local y [m]
+  Mat3 rotation = Mat3::Identity();          // local → world, orthonormal
+  Vec3 plane_normal{0.0, 1.0, 0.0};          // plane: unit outward normal, local
+  Vec3 half_size_m{0.5, 0.5, 0.5};           // box: half the edge lengths, local x, y, z [m]
+  double radius_m = 0.5;                     // sphere and capsule [m]
+  double half_length_m = 0.5;                // capsule: half its cylinder's length along local y [m]
+  std::shared_ptr<const ColliderMesh> mesh;  // mesh: its triangles (scaled, local) and tree, shared by the copies
   // Half the sides of a world box that holds the shape [m]: is_inside() rejects a point beyond it at once. Infinite
   // (no quick rejection) until set from world_reach() once the shape's size and pose are final.
   Vec3 world_reach_m = Vec3::Constant(std::numeric_limits<double>::infinity());

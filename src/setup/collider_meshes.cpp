@@ -1,0 +1,53 @@
+// Reading the mesh colliders' files.
+#include "setup/collider_meshes.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "core/one_line.hpp"
+#include "mesh/generators.hpp"
+#include "mesh/import.hpp"
+#include "mesh/weld.hpp"
+#include "sim/contact/collider_mesh.hpp"
+
+namespace setup {
+namespace {
+
+// The mesh as written (a generator, or a file read within the limits and welded), scaled.
+mesh::TriMesh read_scaled(const scene::ColliderMeshSource& source, const mesh::MeshLimits& limits) {
+  mesh::TriMesh m = source.mesh_file.empty() ? mesh::generate(source.mesh)
+                                             : mesh::weld(mesh::import_mesh_file(source.mesh_file, limits));
+  for (softbody::Vec3& p : m.vertices) p *= source.scale;
+  return m;
+}
+
+}  // namespace
+
+void load_collider_meshes(const scene::Scene& scene, std::vector<sim::Collider>& colliders,
+                          std::vector<std::string>& notes) {
+  for (const scene::ColliderMeshSource& source : scene.collider_meshes) {
+    const std::string key = scene.source.string() + ": colliders." + std::to_string(source.collider) + ".mesh";
+    const std::string what = softbody::one_line(source.mesh_file.empty() ? source.mesh : source.mesh_file.string());
+    sim::ColliderGeometry& geometry = colliders.at(source.collider).geometry;
+    try {
+      mesh::TriMesh m = read_scaled(source, scene.limits);
+      geometry.mesh = sim::make_collider_mesh(std::move(m.vertices), std::move(m.triangles), source.thickness_m);
+    } catch (const softbody::InputError& e) {
+      throw softbody::InputError(key + ": mesh " + what + " " + e.what());
+    } catch (const std::invalid_argument& e) {
+      throw softbody::InputError(key + ": mesh " + what + ": " + e.what() + " (expected a triangle mesh)");
+    }
+    geometry.world_reach_m = sim::world_reach(geometry);
+    if (!geometry.mesh->closed) {
+      const std::string why = geometry.mesh->boundary_edges > 0
+                                  ? "open (" + std::to_string(geometry.mesh->boundary_edges) + " edges of one triangle)"
+                                  : "not a closed solid (edges of three triangles, mis-wound edges or no volume)";
+      char sheet[64];
+      std::snprintf(sheet, sizeof sheet, ": a two-sided sheet %.3g m thick", 2.0 * geometry.mesh->half_thickness_m);
+      notes.push_back(key + ": " + what + ": " + why + sheet);
+    }
+  }
+}
+
+}  // namespace setup
