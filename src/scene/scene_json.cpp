@@ -338,12 +338,50 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
   return g;
 }
 
+// "keys" and "interpolation": a keyframed collider's motion (none: static). A key's position and rotation left out
+// take the collider's own; its times must increase.
+sim::ColliderMotion read_collider_motion(const ObjectReader& r) {
+  sim::ColliderMotion motion;
+  motion.interpolation = r.choice<sim::KeyInterpolation>(
+      "interpolation", {{"linear", sim::KeyInterpolation::Linear}, {"smooth", sim::KeyInterpolation::Smooth}});
+  if (!r.has("keys")) {
+    if (r.has("interpolation"))
+      r.fail(r.child("interpolation"), "expected only with \"keys\" (a moving collider)", nullptr);
+    return motion;
+  }
+  const json& list = r.at("keys");
+  if (!list.is_array() || list.empty()) {
+    r.fail(r.child("keys"), "expected an array of at least one key {\"time\": t, \"position\": [x, y, z], ...}", &list);
+  }
+  const ObjectKeys& keys = *r.spec("keys").form(FormKind::ObjectList).object;
+  const Vec3 position = r.vec3("position"), rotation = r.vec3("rotation");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const ObjectReader k(list[i], r.child("keys") + "." + std::to_string(i), r.file(), keys);
+    if (!k.has("time")) k.fail(k.child("time"), "expected the key's time [s]", nullptr);
+    sim::ColliderKey key;
+    key.time_s = k.number("time", 0.0);
+    if (i > 0 && !(key.time_s > motion.keys.back().time_s)) {
+      k.fail(k.child("time"),
+             "expected a time later than the key before's (" + short_number(motion.keys.back().time_s) +
+                 " s): the keys' times must increase",
+             &k.at("time"));
+    }
+    key.position_m = k.has("position") ? k.vec3("position") : position;
+    key.rotation = sim::Quat(softbody::rotation_xyz_degrees(k.has("rotation") ? k.vec3("rotation") : rotation));
+    key.scale = k.number("scale");
+    k.reject_unknown();
+    motion.keys.push_back(key);
+  }
+  return motion;
+}
+
 // A collider: its shape, and the floor's contact keys, each left out taking the floor's value.
 sim::Collider read_collider(const json& node, const std::string& path, const fs::path& file, const ObjectKeys& keys,
                             const sim::Floor& floor) {
   const ObjectReader r(node, path, file, keys);
   sim::Collider collider;
   collider.geometry = read_collider_geometry(r);
+  collider.motion = read_collider_motion(r);
   collider.contact = r.has("contact")
                          ? r.choice<sim::FloorContact>("contact", {{"paper", sim::FloorContact::Paper},
                                                                    {"friction", sim::FloorContact::Friction},
