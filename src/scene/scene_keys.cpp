@@ -222,8 +222,9 @@ struct Table {
   void fill_collider() {
     collider.path = "colliders[]";
     collider.description =
-        "A static shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; capsule \"radius\" and "
-        "\"length\". The contact keys left out take the floor's values (the floor's defaults without a floor).";
+        "A static or keyframed (\"keys\") shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; "
+        "capsule \"radius\" and \"length\". The contact keys left out take the floor's values (the floor's defaults "
+        "without a floor).";
     collider.keys = {
         required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule"})}, "",
                                      "plane: the half-space behind a plane through the position; box: centred on "

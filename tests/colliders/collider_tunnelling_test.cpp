@@ -27,7 +27,8 @@ std::string ball_at_board(const std::string& contact, const sim::IntegratorInfo&
   return R"({ "duration": 0.1, "fps": 100, "solver": { "integrator": ")" + std::string(integrator.name) + R"(", )" +
          step + R"( }, "colliders": [ { "shape": "box", "size": [0.6, 0.01, 0.6], "contact": ")" + contact +
          R"(", "restitution": 0.3, "friction": 0.3 } ],
-      "bodies": [ { "mesh": "icosphere:2", "scale": 0.05, "position": [0, 0.06, 0], "velocity": [0, -5, 0],
+      "bodies": [ { "mesh": "icosphere:2", "scale": 0.05, "position": [0, 0.06, 0], "velocity": [0, )" +
+         std::to_string(-kSpeed_m_per_s) + R"(, 0],
                     "mass": 0.2, "stiffness": 300, "damping": {"ratio": 0.3}, "pressure": {"inflation": 0.05} } ] })";
 }
 

@@ -22,10 +22,10 @@ enum class ColliderShape {
 // How a collider's points move at one time (sim/contact/collider_motion.hpp): a point at x moves at
 // u(x) = v + ω × (x − c) + (ṡ/s) (x − c) [m/s], c the collider's position. All zero for a static collider.
 struct ColliderVelocity {
-  bool moving = false;                       // false: u = 0 everywhere (and the contact models skip it)
-  Vec3 linear_m_per_s = Vec3::Zero();        // v, of the position c
-  Vec3 angular_rad_per_s = Vec3::Zero();     // ω, world frame
-  double expansion_per_s = 0.0;              // ṡ/s, the scale's relative rate
+  bool moving = false;                    // false: u = 0 everywhere (and the contact models skip it)
+  Vec3 linear_m_per_s = Vec3::Zero();     // v, of the position c
+  Vec3 angular_rad_per_s = Vec3::Zero();  // ω, world frame
+  double expansion_per_s = 0.0;           // ṡ/s, the scale's relative rate
 };
 
 // A shape and where it is: local coordinates q map to world ones as x = position + rotation q.
