@@ -49,18 +49,22 @@ RenderSink::RenderSink(Renderer& renderer, RenderOutputs outputs) : renderer_(re
   }
 }
 
-void RenderSink::capture(int index, double /*time_s*/, const sim::World& world) {
+void RenderSink::capture(int index, double time_s, const sim::World& world) {
   auto start = Clock::now();
   const softbody::ProfileScope profile(softbody::ProfilePhase::snapshot);
   output::snapshot_surfaces(world, meshes_);
   captured_index_ = index;
+  captured_time_s_ = time_s;
   lap(start, timings_.snapshot_s);
 }
 
 void RenderSink::deliver() {
   const int index = captured_index_;
   auto start = Clock::now();
-  softbody::profiled(softbody::ProfilePhase::render, [&] { renderer_.draw(meshes_); });
+  softbody::profiled(softbody::ProfilePhase::render, [&] {
+    renderer_.pose_colliders(captured_time_s_);
+    renderer_.draw(meshes_);
+  });
   lap(start, timings_.render_s);
   if (png_writer_) frame_ = png_writer_->recycled_image();
   softbody::profiled(softbody::ProfilePhase::read_back, [&] { renderer_.read_back(frame_); });

@@ -87,6 +87,7 @@ class RenderSink final : public frames::CapturingFrameSink {
   RenderOutputs outputs_;
   std::vector<FrameMesh> meshes_;  // the captured frame
   int captured_index_ = 0;
+  double captured_time_s_ = 0.0;  // the captured frame's simulated time (a keyframed collider's pose)
   softbody::Image frame_;
   std::optional<output::PngWriter> png_writer_;
   std::unique_ptr<output::VideoWriter> video_;  // ffmpeg fed from its own thread

@@ -70,9 +70,10 @@ Renderer::Renderer(GlContext& context, RenderSettings settings)
   check_gl("setting up the renderer");
 }
 
-void Renderer::upload_colliders() {
+std::vector<ColliderSurface> Renderer::collider_surfaces(std::span<const sim::ColliderGeometry> colliders) {
   std::vector<ColliderSurface> surfaces;
-  for (const sim::ColliderGeometry& geometry : settings_.colliders) {
+  collider_bounds_.reset();
+  for (const sim::ColliderGeometry& geometry : colliders) {
     if (geometry.shape == sim::ColliderShape::Plane) continue;
     surfaces.push_back(bounded_collider_surface(geometry));
     Bounds box{surfaces.back().positions.front(), surfaces.back().positions.front()};
@@ -85,15 +86,31 @@ void Renderer::upload_colliders() {
   }
   shadow_casting_colliders_ = surfaces.size();
   // A plane: a square reaching as far as the floor's fade, around its point nearest the camera's target.
-  for (const sim::ColliderGeometry& geometry : settings_.colliders) {
+  for (const sim::ColliderGeometry& geometry : colliders) {
     if (geometry.shape == sim::ColliderShape::Plane) {
       surfaces.push_back(plane_square(geometry, settings_.camera.target, floor_fade_end_m_ * 1.1f));
     }
   }
-  for (const ColliderSurface& surface : surfaces) {
+  return surfaces;
+}
+
+void Renderer::upload_colliders() {
+  for (const ColliderSurface& surface : collider_surfaces(settings_.colliders)) {
     collider_meshes_.emplace_back(surface.positions.size(), surface.triangles);
     collider_meshes_.back().update(surface.positions, surface.normals, {});
   }
+}
+
+void Renderer::pose_colliders(double time_s) {
+  if (settings_.moving_colliders.empty()) return;
+  auto moving = settings_.moving_colliders.begin();
+  for (sim::ColliderGeometry& geometry : settings_.colliders) {
+    if (moving == settings_.moving_colliders.end()) break;
+    if (geometry.velocity.moving) geometry = sim::collider_at(*moving++, time_s);
+  }
+  const std::vector<ColliderSurface> surfaces = collider_surfaces(settings_.colliders);
+  for (std::size_t c = 0; c < surfaces.size(); ++c)
+    collider_meshes_[c].update(surfaces[c].positions, surfaces[c].normals, {});
 }
 
 void Renderer::draw(std::span<const FrameMesh> bodies) {

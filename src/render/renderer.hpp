@@ -16,6 +16,7 @@
 #include "core/image.hpp"
 #include "render/body_mesh.hpp"
 #include "render/camera.hpp"
+#include "render/collider_surface.hpp"
 #include "render/floor_mesh.hpp"
 #include "render/frame_mesh.hpp"
 #include "render/gl_context.hpp"
@@ -36,6 +37,9 @@ class Renderer {
   // frame uploads each body's triangles; later frames must have the same bodies and triangles.
   void draw(std::span<const FrameMesh> bodies);
 
+  // Moves the keyframed colliders to their pose at time t (nothing without any): the next draw() shows them there.
+  void pose_colliders(double time_s);
+
   // Copies the last drawn frame into `image` (resized to fit): top row first, 8-bit sRGB RGB.
   void read_back(softbody::Image& image);
 
@@ -49,6 +53,8 @@ class Renderer {
   void draw_main_pass(const LightFrustum& light);
   void set_lighting(const ShaderProgram& program, const LightFrustum& light) const;
   void upload_colliders();
+  // The colliders' surfaces: the bounded ones first (they cast shadows), then the planes; sets collider_bounds_.
+  std::vector<ColliderSurface> collider_surfaces(std::span<const sim::ColliderGeometry> colliders);
 
   GlContext& context_;  // current on this thread from here on
   RenderSettings settings_;
@@ -63,7 +69,7 @@ class Renderer {
   float floor_fade_start_m_ = 0.0f;
   float floor_fade_end_m_ = 0.0f;
   std::vector<BodyMesh> body_meshes_;
-  std::vector<BodyMesh> collider_meshes_;     // uploaded once: colliders are static
+  std::vector<BodyMesh> collider_meshes_;     // uploaded once; a keyframed collider's moved by pose_colliders
   std::optional<Bounds> collider_bounds_;     // the bounded colliders' box (they cast shadows; planes do not)
   std::size_t shadow_casting_colliders_ = 0;  // collider_meshes_ starts with the bounded ones
   std::vector<glm::vec3> normals_scratch_;

@@ -29,7 +29,14 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
     settings.body_colors.push_back(to_glm(body.color));
     settings.body_patterns.push_back(static_cast<int>(body.pattern));
   }
-  for (const sim::Collider& collider : scene.colliders) settings.colliders.push_back(collider.geometry);
+  for (const sim::Collider& collider : scene.colliders) {
+    if (!collider.motion.moving()) {
+      settings.colliders.push_back(collider.geometry);
+      continue;
+    }
+    settings.colliders.push_back(sim::collider_at(collider, collider.motion.keys.front().time_s));
+    settings.moving_colliders.push_back(collider);
+  }
   return settings;
 }
 

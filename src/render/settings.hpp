@@ -40,7 +40,10 @@ struct RenderSettings {
   std::optional<float> floor_height_m;           // no floor drawn when empty
   std::vector<glm::vec3> body_colors;            // linear RGB, one per body, in the scene's order
   std::vector<int> body_patterns;                // scene::Pattern as an int, one per body (0: plain)
-  std::vector<sim::ColliderGeometry> colliders;  // the static colliders, drawn in their own colour (none: none drawn)
+  std::vector<sim::ColliderGeometry> colliders;  // the colliders, drawn in their own colour (none: none drawn); a
+                                                 // keyframed one at its first key's pose
+  std::vector<sim::Collider> moving_colliders;   // the keyframed ones, in the same order among themselves: each frame
+                                                 // poses them at its time (Renderer::pose_colliders)
 };
 
 // The scene's render, camera, light, floor and body colour keys, as the renderer takes them.

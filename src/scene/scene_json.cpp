@@ -363,6 +363,55 @@ ColliderMeshSource read_collider_mesh(const ObjectReader& r, std::size_t index) 
   return source;
 }
 
+// "keys" and "interpolation": a keyframed collider's motion (none: static). A key's position and rotation left out
+// take the collider's own; its times must increase.
+sim::ColliderMotion read_collider_motion(const ObjectReader& r) {
+  sim::ColliderMotion motion;
+  motion.interpolation = r.choice<sim::KeyInterpolation>(
+      "interpolation", {{"linear", sim::KeyInterpolation::Linear}, {"smooth", sim::KeyInterpolation::Smooth}});
+  if (!r.has("keys")) {
+    if (r.has("interpolation"))
+      r.fail(r.child("interpolation"), "expected only with \"keys\" (a moving collider)", nullptr);
+    return motion;
+  }
+  const json& list = r.at("keys");
+  if (!list.is_array() || list.empty()) {
+    r.fail(r.child("keys"), "expected an array of at least one key {\"time\": t, \"position\": [x, y, z], ...}", &list);
+  }
+  const ObjectKeys& keys = *r.spec("keys").form(FormKind::ObjectList).object;
+  const Vec3 position = r.vec3("position"), rotation = r.vec3("rotation");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const ObjectReader k(list[i], r.child("keys") + "." + std::to_string(i), r.file(), keys);
+    if (!k.has("time")) k.fail(k.child("time"), "expected the key's time [s]", nullptr);
+    sim::ColliderKey key;
+    key.time_s = k.number("time", 0.0);
+    if (i > 0 && !(key.time_s > motion.keys.back().time_s)) {
+      k.fail(k.child("time"),
+             "expected a time later than the key before's (" + short_number(motion.keys.back().time_s) +
+                 " s): the keys' times must increase",
+             &k.at("time"));
+    }
+    key.position_m = k.has("position") ? k.vec3("position") : position;
+    key.rotation = sim::Quat(softbody::rotation_xyz_degrees(k.has("rotation") ? k.vec3("rotation") : rotation));
+    key.scale = k.number("scale");
+    k.reject_unknown();
+    motion.keys.push_back(key);
+  }
+  return motion;
+}
+
+// A mesh collider's keys move and turn it but do not scale it (its triangles are scaled once, by "scale").
+void refuse_scaling_keys(const ObjectReader& r, const sim::ColliderMotion& motion) {
+  for (std::size_t i = 0; i < motion.keys.size(); ++i) {
+    if (motion.keys[i].scale != 1.0) {
+      const std::string key = r.child("keys") + "." + std::to_string(i) + ".scale";
+      r.fail(key,
+             "expected 1: a mesh collider's keys move and turn it but cannot scale it (use the collider's \"scale\")",
+             nullptr);
+    }
+  }
+}
+
 // A collider: its shape, and the floor's contact keys, each left out taking the floor's value.
 // A mesh collider's file goes to `meshes`.
 sim::Collider read_collider(const json& node, std::size_t index, const fs::path& file, const ObjectKeys& keys,
@@ -371,6 +420,8 @@ sim::Collider read_collider(const json& node, std::size_t index, const fs::path&
   sim::Collider collider;
   collider.geometry = read_collider_geometry(r);
   if (collider.geometry.shape == sim::ColliderShape::Mesh) meshes.push_back(read_collider_mesh(r, index));
+  collider.motion = read_collider_motion(r);
+  if (collider.geometry.shape == sim::ColliderShape::Mesh) refuse_scaling_keys(r, collider.motion);
   collider.contact = r.has("contact")
                          ? r.choice<sim::FloorContact>("contact", {{"paper", sim::FloorContact::Paper},
                                                                    {"friction", sim::FloorContact::Friction},

@@ -122,12 +122,13 @@ void add_smooth_contact(ObjectKeys& keys, double time_constant_s) {
 
 // Every object of the scene file. Members refer to each other (Form::object), so the table lives in one place.
 struct Table {
-  ObjectKeys top, solver, floor, collider, limits, body, stiffness, damping, pressure, bending, repair, resolution,
-      collisions, render, camera, light, output;
+  ObjectKeys top, solver, floor, collider, collider_key, limits, body, stiffness, damping, pressure, bending, repair,
+      resolution, collisions, render, camera, light, output;
 
   Table() {
     fill_solver();
     fill_floor();
+    fill_collider_key();
     fill_collider();
     fill_limits();
     fill_body();
@@ -222,9 +223,9 @@ struct Table {
   void fill_collider() {
     collider.path = "colliders[]";
     collider.description =
-        "A static shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; capsule \"radius\" and "
-        "\"length\"; mesh \"mesh\", \"scale\" and \"thickness\". The contact keys left out take the floor's values "
-        "(the floor's defaults without a floor).";
+        "A static or keyframed (\"keys\") shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; "
+        "capsule \"radius\" and \"length\"; mesh \"mesh\", \"scale\" and \"thickness\". The contact keys left out "
+        "take the floor's values (the floor's defaults without a floor).";
     collider.keys = {
         required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule", "mesh"})}, "",
                                      "plane: the half-space behind a plane through the position; box: centred on "
@@ -252,6 +253,15 @@ struct Table {
             "Mesh: an open mesh's thickness: a point nearer its triangles than half of it is inside (a closed mesh "
             "does not use it).",
             0.01),
+        key_without_default("keys", {object_list(collider_key)}, "",
+                            "A moving collider's keyframes, in increasing time: its pose at each key's time, "
+                            "interpolated between them; before the first and after the last it holds its pose.",
+                            "none (static)"),
+        key("interpolation", {choice({"linear", "smooth"})}, "",
+            "With \"keys\": linear (constant velocity between keys; rotations by slerp) or smooth (C¹: Catmull–Rom "
+            "positions and scale, a C¹ rotation spline). The collider's velocity comes from the motion: friction "
+            "carries a body on a moving platform.",
+            "linear"),
     };
     // The floor's contact keys, each defaulting to the scene's floor value.
     for (const Key& floor_key : floor.keys) {
@@ -261,6 +271,21 @@ struct Table {
       k.default_words = "the floor's";
       collider.keys.push_back(k);
     }
+  }
+
+  void fill_collider_key() {
+    collider_key.path = "colliders[].keys[]";
+    collider_key.description =
+        "One keyframe of a moving collider: its pose at a time. Position and rotation left out take the collider's.";
+    collider_key.keys = {
+        required(
+            key_without_default("time", {number()}, "s", "When the collider has this pose (after the key before).")),
+        key_without_default("position", {vec3()}, "m", "The shape's centre (a plane: a point on it) at this time.",
+                            "the collider's position"),
+        key_without_default("rotation", {vec3()}, "°", "Euler angles [rx, ry, rz] at this time, as the collider's.",
+                            "the collider's rotation"),
+        key("scale", {positive()}, "", "Multiplies the shape's sizes (radius, size, length) at this time.", 1.0),
+    };
   }
 
   void fill_limits() {
@@ -477,9 +502,9 @@ const ObjectKeys& scene_keys() { return table().top; }
 
 std::vector<const ObjectKeys*> all_objects() {
   const Table& t = table();
-  return {&t.top,        &t.solver,  &t.floor,    &t.collider, &t.limits, &t.body,
-          &t.stiffness,  &t.damping, &t.pressure, &t.bending,  &t.repair, &t.resolution,
-          &t.collisions, &t.render,  &t.camera,   &t.light,    &t.output};
+  return {&t.top,        &t.solver,     &t.floor,   &t.collider, &t.collider_key, &t.limits,
+          &t.body,       &t.stiffness,  &t.damping, &t.pressure, &t.bending,      &t.repair,
+          &t.resolution, &t.collisions, &t.render,  &t.camera,   &t.light,        &t.output};
 }
 
 std::string short_number(double x) {

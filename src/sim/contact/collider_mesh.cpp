@@ -4,10 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace sim {
 namespace {
+
+// A point within this fraction of the mesh's diagonal of its nearest point lies on the mesh, to round-off.
+constexpr double kOnMeshRelative = 1e-12;
 
 constexpr int kLeafTriangles = 4;
 
@@ -208,7 +212,83 @@ Vec3 pseudo_normal(const ColliderMesh& m, const MeshHit& h) {
   return m.face_normals[t];
 }
 
+// The parameter in [0, 1] where the segment a + t d enters the box [lo, hi] (the slabs' latest entry before every
+// exit; 0 when a is inside), or none.
+std::optional<double> segment_box_entry(const Vec3& lo, const Vec3& hi, const Vec3& a, const Vec3& d) {
+  double enter = 0.0, leave = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0.0) {
+      if (a[k] < lo[k] || a[k] > hi[k]) return std::nullopt;
+      continue;
+    }
+    const double t1 = (lo[k] - a[k]) / d[k], t2 = (hi[k] - a[k]) / d[k];
+    enter = std::max(enter, std::min(t1, t2));
+    leave = std::min(leave, std::max(t1, t2));
+  }
+  if (enter > leave) return std::nullopt;
+  return enter;
+}
+
+// The parameter in [0, 1] where the segment a + t d crosses triangle (p, q, r), edges included (Möller & Trumbore
+// 1997, "Fast, minimum storage ray-triangle intersection"), or none; a segment in the triangle's plane crosses none.
+std::optional<double> segment_triangle_crossing(const Vec3& a, const Vec3& d, const Vec3& p, const Vec3& q,
+                                                const Vec3& r) {
+  const Vec3 e1 = q - p, e2 = r - p;
+  const Vec3 s = d.cross(e2);
+  const double det = e1.dot(s);
+  if (det == 0.0) return std::nullopt;
+  const Vec3 offset = a - p;
+  const double u = offset.dot(s) / det;
+  if (u < 0.0 || u > 1.0) return std::nullopt;
+  const Vec3 w = offset.cross(e1);
+  const double v = d.dot(w) / det;
+  if (v < 0.0 || u + v > 1.0) return std::nullopt;
+  const double t = e2.dot(w) / det;
+  // A start on the face to round-off (where a contact put the vertex) crosses it at t = 0, as the box's slabs say.
+  if (t < -kOnMeshRelative || t > 1.0) return std::nullopt;
+  return std::max(t, 0.0);
+}
+
 }  // namespace
+
+bool mesh_segment_entry_local(const ColliderMesh& m, const Vec3& a, const Vec3& b, Vec3& point, Vec3& normal) {
+  const Vec3 d = b - a;
+  const Vec3 pad = Vec3::Constant(m.half_thickness_m);
+  double best_t = std::numeric_limits<double>::infinity();
+  int best = -1;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const ColliderMesh::Node& node = m.nodes[static_cast<std::size_t>(stack[--top])];
+    const std::optional<double> reach = segment_box_entry(node.lo - pad, node.hi + pad, a, d);
+    if (!reach || *reach > best_t) continue;
+    if (node.count < 0) {
+      stack[top++] = node.first;
+      stack[top++] = -node.count;
+      continue;
+    }
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const int t = m.order[static_cast<std::size_t>(i)];
+      const auto ti = static_cast<std::size_t>(t);
+      if (m.closed && m.face_normals[ti].dot(d) >= 0.0) continue;  // leaving a solid or along its face
+      const softbody::Triangle& tri = m.triangles[ti];
+      const std::optional<double> crossing = segment_triangle_crossing(
+          a, d, m.vertices_m[static_cast<std::size_t>(tri[0])], m.vertices_m[static_cast<std::size_t>(tri[1])],
+          m.vertices_m[static_cast<std::size_t>(tri[2])]);
+      // The earliest crossing; of equal ones (an edge or a vertex shared) the lowest triangle, on every run.
+      if (crossing && (*crossing < best_t || (*crossing == best_t && t < best))) {
+        best_t = *crossing;
+        best = t;
+      }
+    }
+  }
+  if (best < 0) return false;
+  const Vec3& face = m.face_normals[static_cast<std::size_t>(best)];
+  normal = face.dot(d) < 0.0 ? face : Vec3(-face);
+  point = a + best_t * d + m.half_thickness_m * normal;
+  return true;
+}
 
 std::shared_ptr<const ColliderMesh> make_collider_mesh(std::vector<Vec3> vertices_m,
                                                        std::vector<softbody::Triangle> triangles, double thickness_m) {
@@ -266,8 +346,13 @@ SurfacePoint mesh_nearest_local(const ColliderMesh& m, const Vec3& q) {
     const Vec3 normal = length > 0.0 ? Vec3(out / length) : face;
     return {length - m.half_thickness_m, normal, Vec3(h.hit.point + m.half_thickness_m * normal)};
   }
-  const double side = out.dot(pseudo_normal(m, h)) < 0.0 ? -1.0 : 1.0;
-  const Vec3 normal = length > 0.0 ? Vec3(side * out / length) : face;
+  const Vec3 pseudo = pseudo_normal(m, h);
+  const double side = out.dot(pseudo) < 0.0 ? -1.0 : 1.0;
+  // Nearest to a face's inside, the normal is the face's; nearest to an edge or a corner, the direction to the point,
+  // unless the point is on the mesh to round-off (a vertex a contact just put there), where that direction is noise
+  // and the feature's pseudo-normal is taken instead.
+  const bool on_mesh = length <= kOnMeshRelative * (m.hi_m - m.lo_m).norm();
+  const Vec3 normal = h.hit.feature >= 6 ? face : on_mesh ? Vec3(pseudo.normalized()) : Vec3(side * out / length);
   return {side * length, normal, h.hit.point};
 }
 

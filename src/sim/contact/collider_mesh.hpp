@@ -45,4 +45,10 @@ SurfacePoint mesh_nearest_local(const ColliderMesh& mesh, const Vec3& q);
 // True when local point q is inside: the local box rejects most points before any triangle is looked at.
 bool mesh_inside_local(const ColliderMesh& mesh, const Vec3& q);
 
+// Where the local segment a → b first enters the mesh (continuous contact, sim/contact/collider_sweep.hpp): a closed
+// mesh where it first crosses a triangle from its outer side, a sheet where it first crosses a triangle, moved back
+// by half the thickness towards a. `point` and `normal` (unit, facing the side it came from) are local. False when
+// it crosses none.
+bool mesh_segment_entry_local(const ColliderMesh& mesh, const Vec3& a, const Vec3& b, Vec3& point, Vec3& normal);
+
 }  // namespace sim

@@ -11,6 +11,16 @@ void ColliderPotential::build(const Model& model) {
   lags_.assign(colliders_.size() * model.mass_kg.size(), ColliderLag{});
 }
 
+void ColliderPotential::begin_step(const Model& model, double end_time_s, double h) {
+  h_ = h;
+  std::size_t c = 0;
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact != FloorContact::Smooth) continue;
+    if (collider.motion.moving()) colliders_[c] = resolve_smooth_collider(collider, end_time_s);
+    ++c;
+  }
+}
+
 void ColliderPotential::lag(const Model& model, std::span<const Vec3> x) {
   const std::size_t n = x.size();
   for (std::size_t c = 0; c < colliders_.size(); ++c) {

@@ -18,7 +18,8 @@ class ColliderPotential {
   // Active when a collider has the smooth contact; otherwise every call adds nothing.
   void build(const Model& model);
   bool active() const { return !colliders_.empty(); }
-  void begin_step(double h) { h_ = h; }
+  // A step of h that ends at end_time_s: the keyframed colliders take their pose then (backward Euler's x_{n+1}).
+  void begin_step(const Model& model, double end_time_s, double h);
   // Takes every vertex's lagged normal, dashpot weight and friction normal force at x (world vertices).
   void lag(const Model& model, std::span<const Vec3> x);
   // Σ (U + D_n + D_t) at x, with x_n = start [J]; `scale` += the magnitudes of its terms.

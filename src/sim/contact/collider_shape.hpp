@@ -23,6 +23,15 @@ enum class ColliderShape {
 
 struct ColliderMesh;  // sim/contact/collider_mesh.hpp
 
+// How a collider's points move at one time (sim/contact/collider_motion.hpp): a point at x moves at
+// u(x) = v + ω × (x − c) + (ṡ/s) (x − c) [m/s], c the collider's position. All zero for a static collider.
+struct ColliderVelocity {
+  bool moving = false;                    // false: u = 0 everywhere (and the contact models skip it)
+  Vec3 linear_m_per_s = Vec3::Zero();     // v, of the position c
+  Vec3 angular_rad_per_s = Vec3::Zero();  // ω, world frame
+  double expansion_per_s = 0.0;           // ṡ/s, the scale's relative rate
+};
+
 // A shape and where it is: local coordinates q map to world ones as x = position + rotation q.
 struct ColliderGeometry {
   ColliderShape shape = ColliderShape::Plane;
@@ -36,7 +45,16 @@ struct ColliderGeometry {
   // Half the sides of a world box that holds the shape [m]: is_inside() rejects a point beyond it at once. Infinite
   // (no quick rejection) until set from world_reach() once the shape's size and pose are final.
   Vec3 world_reach_m = Vec3::Constant(std::numeric_limits<double>::infinity());
+  ColliderVelocity velocity;  // of its points at the time of this pose (a keyframed collider's)
 };
+
+// The velocity of the collider's point at x, u(x) [m/s] (zero for a static collider).
+inline Vec3 surface_velocity(const ColliderGeometry& geometry, const Vec3& x) {
+  const ColliderVelocity& u = geometry.velocity;
+  if (!u.moving) return Vec3::Zero();
+  const Vec3 r = x - geometry.position_m;
+  return u.linear_m_per_s + u.angular_rad_per_s.cross(r) + u.expansion_per_s * r;
+}
 
 // Half the sides of the smallest world box that holds the shape at its pose [m] (a plane: infinite).
 Vec3 world_reach(const ColliderGeometry& geometry);

@@ -9,12 +9,18 @@ namespace {
 // The tangential part of a velocity for the unit normal n.
 Vec3 tangential_part(const Vec3& v, const Vec3& n) { return v - v.dot(n) * n; }
 
+// The travel Δx = x − start of a step of h relative to the surface's: Δx − h u(start) (Δx for a static collider).
+Vec3 relative_travel(const ColliderGeometry& g, const Vec3& x, const Vec3& start, double h) {
+  if (!g.velocity.moving) return x - start;
+  return x - start - h * surface_velocity(g, start);
+}
+
 }  // namespace
 
-SmoothCollider resolve_smooth_collider(const Collider& collider) {
+SmoothCollider resolve_smooth_collider(const Collider& collider, double time_s) {
   SmoothCollider resolved;
   static_cast<SmoothResponse&>(resolved) = resolve_smooth_response(collider.smooth, collider.material);
-  resolved.geometry = collider.geometry;
+  resolved.geometry = collider_at(collider, time_s);
   return resolved;
 }
 
@@ -27,12 +33,13 @@ void add_smooth_collider_forces(const SmoothCollider& c, std::span<const double>
     if (s.distance_m >= 0.0) continue;
     const double depth = -s.distance_m;
     const Vec3& n = s.normal;
-    const double normal_speed = v[i].dot(n);
+    const Vec3 relative = c.geometry.velocity.moving ? Vec3(v[i] - surface_velocity(c.geometry, x[i])) : v[i];
+    const double normal_speed = relative.dot(n);
     const double elastic = mass_kg[i] * smooth_elastic_per_mass(c, depth);                                 // [N]
     const double dashpot = -mass_kg[i] * c.damping_rate * normal_speed * smooth_dashpot_weight(c, depth);  // [N]
     force[i] += (elastic + dashpot) * n;
     if (c.friction == 0.0) continue;
-    const Vec3 slip = tangential_part(v[i], n);
+    const Vec3 slip = tangential_part(relative, n);
     force[i] -= (c.friction * elastic / std::sqrt(slip.squaredNorm() + eps2)) * slip;  // μ N v_t / √(v_t² + ε²)
   }
 }
@@ -60,7 +67,7 @@ double smooth_collider_terms(const SmoothCollider& c, const ColliderLag& lag, do
                              const Vec3& start, double h) {
   const double distance = is_inside(c.geometry, x) ? nearest_surface(c.geometry, x).distance_m : 0.0;
   double energy = distance < 0.0 ? m * smooth_energy_per_mass(c, -distance) : 0.0;  // U
-  const Vec3 dx = x - start;
+  const Vec3 dx = relative_travel(c.geometry, x, start, h);
   const double along = dx.dot(lag.normal);
   energy += lag.dashpot_kg_s * along * along / (2.0 * h);  // D_n
   if (lag.friction_N > 0.0) {
@@ -80,7 +87,7 @@ void add_smooth_collider_derivatives(const SmoothCollider& c, const ColliderLag&
   }
   if (lag.dashpot_kg_s == 0.0 && lag.friction_N == 0.0) return;
   const Vec3& n = lag.normal;
-  const Vec3 dx = x - start;
+  const Vec3 dx = relative_travel(c.geometry, x, start, h);
   gradient += (lag.dashpot_kg_s * dx.dot(n) / h) * n;  // m b w (Δx·n̄)/h n̄
   hessian += (lag.dashpot_kg_s / h) * (n * n.transpose());
   if (lag.friction_N > 0.0) {

@@ -25,7 +25,8 @@ struct SmoothCollider : SmoothResponse {
   ColliderGeometry geometry;
 };
 
-SmoothCollider resolve_smooth_collider(const Collider& collider);
+// The collider's constants and its shape at time t (a keyframed collider's pose, with its points' velocity u).
+SmoothCollider resolve_smooth_collider(const Collider& collider, double time_s = 0.0);
 
 // f_i += the contact force on every vertex inside the collider [N].
 void add_smooth_collider_forces(const SmoothCollider& collider, std::span<const double> mass_kg,

@@ -32,11 +32,11 @@ void Dynamics::floor_contact_forces(const Body& body, std::span<const Vec3> x, s
 }
 
 void Dynamics::collider_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
-                                       std::span<Vec3> f) const {
+                                       double time_s, std::span<Vec3> f) const {
   for (const Collider& collider : model_.colliders) {
     if (collider.contact != FloorContact::Smooth) continue;
     const softbody::ProfileScope profile(softbody::ProfilePhase::smooth_contact);
-    add_smooth_collider_forces(resolve_smooth_collider(collider), body.masses.kg, x, v, f);
+    add_smooth_collider_forces(resolve_smooth_collider(collider, time_s), body.masses.kg, x, v, f);
   }
 }
 
@@ -96,7 +96,7 @@ void Dynamics::visit_net_forces(const State& state, std::vector<Vec3>& partial, 
     const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     gravity_and_spring_forces(body, x, v, f);
     floor_contact_forces(body, x, v, f);
-    collider_contact_forces(body, x, v, f);
+    collider_contact_forces(body, x, v, state.time_s, f);
     if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     const std::span<const Vec3> area_sums = per_area_sum == 0.0 ? std::span<const Vec3>() : scratch_.area_sums[b];
@@ -117,7 +117,7 @@ void Dynamics::visit_body_forces_in_parallel(std::size_t b, const State& state, 
     if (part == 0) {
       gravity_and_spring_forces(body, x, v, f);
       floor_contact_forces(body, x, v, f);
-      collider_contact_forces(body, x, v, f);
+      collider_contact_forces(body, x, v, state.time_s, f);
       if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     } else {
       per_area_sum = gas_face_pass(b, x);
@@ -149,7 +149,7 @@ void Dynamics::gravity_and_gas_forces(const State& state, std::vector<Vec3>& for
     const std::span<const Vec3> x = Model::of(body, state.x), v = Model::of(body, state.v);
     start_with_gravity(body.masses.kg, model_.gravity_m_per_s2, f);
     floor_contact_forces(body, x, v, f);  // a smooth contact is a force like gravity here (none otherwise)
-    collider_contact_forces(body, x, v, f);
+    collider_contact_forces(body, x, v, state.time_s, f);
     if (body_contact) add_contact_forces(Model::of(body, scratch_.contact_force), f);
     const double per_area_sum = gas_face_pass(b, x);
     if (per_area_sum == 0.0) continue;

@@ -89,8 +89,9 @@ class Dynamics {
   void floor_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
                             std::span<Vec3> f) const;
   // The smooth colliders' contact forces added to f (only for colliders whose contact is smooth; the others are
-  // projections after the step). Nothing without colliders.
-  void collider_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v,
+  // projections after the step), each collider at its pose at time_s (the state's: a step's start). Nothing
+  // without colliders.
+  void collider_contact_forces(const Body& body, std::span<const Vec3> x, std::span<const Vec3> v, double time_s,
                                std::span<Vec3> f) const;
   // Body b's gas: its area sums into scratch_.area_sums[b]; returns the gas force per area sum (nRT / V / 6),
   // 0 without gas.

@@ -81,7 +81,7 @@ void IncrementalPotential::begin_step(const Model& model, const State& start, do
   }
   floor_.begin_step(h);
   floor_.lag(model, predicted_x_);
-  colliders_.begin_step(h);
+  colliders_.begin_step(model, start.time_s + h, h);
   colliders_.lag(model, predicted_x_);
   contact_.begin_step(h);
   contact_.lag(model, predicted_x_);

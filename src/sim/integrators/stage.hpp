@@ -20,13 +20,17 @@ inline void evaluate_slope(Dynamics& dynamics, const State& y, Slope& k) {
   dynamics.accelerations(y, k.dv);
 }
 
-// out = y0 + h Σ_j w[j] k[j]: a stage state, or the step's result when w are the weights b.
+// out = y0 + h Σ_j w[j] k[j]: a stage state, or the step's result when w are the weights b. Its time is
+// t0 + h Σ_j w[j] (the stage's c_i = Σ_j a_ij; 1 for the result): a keyframed collider's pose at the stage.
 template <std::size_t N>
 void combine(const State& y0, double h, const std::array<double, N>& w, const std::array<const Slope*, N>& k,
              State& out) {
   const std::size_t n = y0.x.size();
   out.x.resize(n);
   out.v.resize(n);
+  double c = 0.0;
+  for (const double weight : w) c += weight;
+  out.time_s = y0.time_s + h * c;
   for (std::size_t i = 0; i < n; ++i) {
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
     for (std::size_t j = 0; j < N; ++j) {

@@ -12,6 +12,7 @@ void VelocityVerlet::step(Dynamics& dynamics, State& state, double dt) {
   const std::size_t n = state.x.size();
   predicted_.x.resize(n);
   predicted_.v.resize(n);
+  predicted_.time_s = state.time_s + dt;  // the end of the step (a keyframed collider's pose)
   const double half = 0.5 * dt;
   for (std::size_t i = 0; i < n; ++i) {
     state.v[i] += half * a[i];      // first kick: v½

@@ -60,6 +60,15 @@ void VertexBlockDescent::prepare_once(const Model& model) {
   lags_.colliders.resize(smooth_colliders_.size());
 }
 
+void VertexBlockDescent::pose_smooth_colliders(const Model& model, double time_s) {
+  std::size_t c = 0;
+  for (const Collider& collider : model.colliders) {
+    if (collider.contact != FloorContact::Smooth) continue;
+    if (collider.motion.moving()) smooth_colliders_[c] = resolve_smooth_collider(collider, time_s);
+    ++c;
+  }
+}
+
 double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, double ratio,
                                        const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous) {
   const std::size_t n = state.x.size();
@@ -220,10 +229,14 @@ void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);
   const long long whole = 1LL << kDeepestLevel;  // dt in ticks of dt / 2^kDeepestLevel
+  const double tick = std::ldexp(dt, -kDeepestLevel);
   for (long long done = 0; done < whole;) {
+    pose_smooth_colliders(model, state.time_s + static_cast<double>(done) * tick);  // the step's start: its impacts
     level = next_level(model, state, dt, level, done);
+    const long long ticks = 1LL << (kDeepestLevel - level);
+    pose_smooth_colliders(model, state.time_s + static_cast<double>(done + ticks) * tick);  // its end: its solve
     take_step(model, state, std::ldexp(dt, -level));
-    done += 1LL << (kDeepestLevel - level);
+    done += ticks;
   }
 }
 

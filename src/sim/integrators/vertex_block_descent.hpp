@@ -57,6 +57,8 @@ class VertexBlockDescent final : public Integrator {
  private:
   // The bodies' layouts, on the first step (again for a model with other bodies).
   void prepare_once(const Model& model);
+  // The keyframed smooth colliders at their pose at time t (the static ones stay as prepare_once made them).
+  void pose_smooth_colliders(const Model& model, double time_s);
   // The level of the next step (its size is dt / 2^level) after `done` ticks of dt / 2^kDeepestLevel: deeper for
   // an impact on a smooth contact, one up where the two steps before allow it (then BDF2 takes its history from two
   // steps back, so every BDF2 step has a step ratio of at most 1).

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "sim/contact/collider_motion.hpp"
 #include "sim/contact/collider_shape.hpp"
 
 namespace sim {
@@ -110,14 +111,23 @@ struct Floor {
   SmoothContact smooth;      // the smooth contact's constants
 };
 
-// A shape that moves bodies and is not moved by them (static), with a floor's contact model and constants
-// (sim/contact/collider_contact.hpp, smooth_collider.hpp): a plane collider acts as a floor does.
+// A shape that moves bodies and is not moved by them (static or keyframed), with a floor's contact model and
+// constants (sim/contact/collider_contact.hpp, smooth_collider.hpp): a plane collider acts as a floor does.
 struct Collider {
-  ColliderGeometry geometry;
+  ColliderGeometry geometry;  // static: its pose; keyframed: its sizes at scale 1 (the pose comes from `motion`)
   FloorContact contact = FloorContact::Paper;
   ContactMaterial material;
   SmoothContact smooth;
+  ColliderMotion motion;  // no keys: static
+  // The continuous check of every step (sim/contact/collider_sweep.hpp); tests switch it off to show what the
+  // discrete test alone lets through.
+  bool continuous = true;
 };
+
+// The collider's shape at time t, with the velocity of its points.
+inline ColliderGeometry collider_at(const Collider& collider, double time_s) {
+  return geometry_at(collider.geometry, collider.motion, time_s);
+}
 
 // How bodies touch each other.
 enum class BodyContactModel {

@@ -21,6 +21,10 @@ struct Workspace {
   std::unique_ptr<Integrator> integrator;
   BodyCollider collider;
   State saved;  // the state before a step that may be rejected (solver.retry, adaptive integrators)
+  // With colliders: every vertex at the start of the step being taken, and that time [s], for the colliders'
+  // continuous contact (sim/contact/collider_sweep.hpp). Empty without colliders.
+  std::vector<Vec3> step_start_x;
+  double step_start_time_s = 0.0;
 
   // What the contact phases found during the last step() (all its substeps) or advance_to() (all its steps
   // and attempts), for checks and benchmarks: how deep a vertex got into the floor before it was put back [m].

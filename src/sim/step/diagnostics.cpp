@@ -37,7 +37,8 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
   }
   for (const Collider& collider : model.colliders) {
     if (collider.contact != FloorContact::Smooth) continue;
-    d.contact_J += smooth_collider_energy(resolve_smooth_collider(collider), body.masses.kg, model.of(body, state.x));
+    d.contact_J += smooth_collider_energy(resolve_smooth_collider(collider, state.time_s), body.masses.kg,
+                                          model.of(body, state.x));
   }
   if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
     BodyCollider collider;  // a search per call: diagnostics run per frame, not per step

@@ -77,8 +77,9 @@ double fall_height(const Model& model, const Vec3& com) {
   if (model.colliders.empty() || g == 0.0) return height;
   const Vec3 down = model.gravity_m_per_s2 / g;
   for (const Collider& collider : model.colliders) {
-    Vec3 lowest = collider.geometry.position_m, lo, hi;
-    if (world_bounds(collider.geometry, lo, hi)) {
+    const ColliderGeometry geometry = collider_at(collider, 0.0);  // a keyframed one: where it starts
+    Vec3 lowest = geometry.position_m, lo, hi;
+    if (world_bounds(geometry, lo, hi)) {
       for (int k = 0; k < 3; ++k) lowest[k] = down[k] > 0.0 ? hi[k] : lo[k];
     }
     height = std::max(height, (lowest - com).dot(down));
@@ -103,7 +104,13 @@ double energy_budget(const Model& model, const Body& body, std::span<const Vec3>
   const double fall = body.masses.total_kg * gravity_m_per_s2 * height;  // M |g| h
   // A body at rest with no stored energy still gets a small allowance: 1 cm/s for every kilogram.
   const double allowance = 0.5 * body.masses.total_kg * 1e-4;
-  return kinetic + spring + gas + fall + allowance;
+  // A moving collider gives energy: a body hit by its fastest point u may leave at up to 2u, ½ M (2u)².
+  double pushed = 0.0;
+  for (const Collider& collider : model.colliders) {
+    const double u = fastest_point_speed(collider.motion, collider.geometry.world_reach_m);
+    pushed += 2.0 * body.masses.total_kg * u * u;
+  }
+  return kinetic + spring + gas + fall + allowance + pushed;
 }
 
 }  // namespace

@@ -291,7 +291,8 @@ std::optional<double> lowest_contact_height(const Model& model) {
   std::optional<double> lowest;
   for (const Collider& collider : model.colliders) {
     Vec3 lo, hi;
-    const double height = world_bounds(collider.geometry, lo, hi) ? lo.y() : collider.geometry.position_m.y();
+    const ColliderGeometry geometry = collider_at(collider, 0.0);  // a keyframed one: where it starts
+    const double height = world_bounds(geometry, lo, hi) ? lo.y() : geometry.position_m.y();
     lowest = lowest ? std::min(*lowest, height) : height;
   }
   return lowest;
@@ -308,10 +309,15 @@ StabilityEstimate estimate_stability(const Model& model, const State& state) {
     return estimate;
   }
   const double g = model.gravity_m_per_s2.norm();
+  // A keyframed collider's fastest point meets a vertex at up to its speed more.
+  double collider_speed = 0.0;
+  for (const Collider& collider : model.colliders) {
+    collider_speed = std::max(collider_speed, fastest_point_speed(collider.motion, collider.geometry.world_reach_m));
+  }
   for (const Body& body : model.bodies) {
     const auto x = model.of(body, state.x);
     const auto v = model.of(body, state.v);
-    double speed = 0.0, height = 0.0;
+    double speed = collider_speed, height = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       speed = std::max(speed, v[i].norm());
       height = std::max(height, x[i].y() - *ground);
@@ -451,7 +457,10 @@ double xpbd_carried_dt(double omega_max) {
 
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s) {
-  const bool projected_floor = model.floor && model.floor->contact != FloorContact::Smooth;
+  bool projected_floor = model.floor && model.floor->contact != FloorContact::Smooth;
+  for (const Collider& collider : model.colliders) {  // a keyframed collider's projection: the same travel limit
+    projected_floor = projected_floor || (collider.motion.moving() && collider.contact != FloorContact::Smooth);
+  }
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
   if (integrator == IntegratorKind::Vbd && !projected_floor) h = std::min(frame_interval_s, kVbdLongestAutoStep);
   const bool xpbd = integrator == IntegratorKind::Xpbd;

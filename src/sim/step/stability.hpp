@@ -81,8 +81,9 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x);
 double stable_dt(IntegratorKind integrator, const ModeBounds& bounds);
 
 // A contact limit for every integrator when there is a floor: no vertex may travel more than a tenth of
-// the body's shortest edge in one step, at its speed now plus what a fall to the floor adds, √(2 |g| h);
-// so the floor projection sees a fast body (50 m/s) at once and never crushes it in a single step.
+// the body's shortest edge in one step, at its speed now plus what a fall to the floor adds, √(2 |g| h), plus a
+// keyframed collider's fastest point's speed (sim::fastest_point_speed); so the floor projection sees a fast
+// body (50 m/s) at once and never crushes it in a single step.
 constexpr double kTravelFraction = 0.1;
 
 // Forward Euler's damper limit h < c/k is sharp: at h = c/k every underdamped mode has |g|² = 1 + hλ(hk − c) = 1

@@ -22,6 +22,10 @@ constexpr int kMostRetrySubsteps = 1024;  // solver.retry gives up past this man
 // error estimate (<= 1: within the tolerance), fixed-step ones 0.
 double integrate(const Model& model, State& state, Workspace& workspace, double h, bool with_error) {
   const softbody::ProfileScope profile(softbody::ProfilePhase::integrate);
+  if (!model.colliders.empty()) {  // the colliders' continuous contact sweeps from here
+    workspace.step_start_x = state.x;
+    workspace.step_start_time_s = state.time_s;
+  }
   Dynamics dynamics(model, workspace.forces);
   workspace.integrator->prepare(dynamics, state);
   if (with_error) return workspace.integrator->adaptive()->attempt(dynamics, state, h);
@@ -68,27 +72,32 @@ int resolve_floor(const Model& model, State& state, Workspace& workspace, double
   return found.below;
 }
 
-// Phase 3b: each collider's contact model, as the floor's (phase 3) against its surface. The paper's model appends
-// the vertices it reversed to state.coasting (cleared here when the floor's paper model has not just filled it).
+// Phase 3b: each collider's contact model, as the floor's (phase 3) against its surface at its pose at the step's
+// end, and, unless switched off, its continuous check from the step's start (sim/contact/collider_sweep.hpp). The
+// paper's model appends the vertices it reversed to state.coasting (cleared here when the floor's paper model has
+// not just filled it).
 int resolve_colliders(const Model& model, State& state, Workspace& workspace, double h) {
   if (model.colliders.empty()) return 0;
   const softbody::ProfileScope profile(softbody::ProfilePhase::floor_contact);
   const bool floor_filled_coasting = model.floor && model.floor->contact == FloorContact::Paper;
   if (!floor_filled_coasting) state.coasting.clear();
   const bool position_based = integrator_info(model.solver.integrator).position_based;
+  const double start_s = workspace.step_start_time_s;
   int touched = 0;
   for (const Collider& collider : model.colliders) {
+    const ColliderGeometry begin = collider_at(collider, start_s), end = collider_at(collider, start_s + h);
+    const ColliderStepStart step_start{&begin, workspace.step_start_x};
+    const ColliderStepStart* sweep = collider.continuous ? &step_start : nullptr;
     FloorContactFound found;
     switch (collider.contact) {
-      case FloorContact::Paper:
-        found = resolve_collider_paper(collider.geometry, state.x, state.v, state.coasting);
-        break;
+      case FloorContact::Paper: found = resolve_collider_paper(end, state.x, state.v, state.coasting, sweep); break;
       case FloorContact::Friction:
-        found = position_based ? resolve_collider_positional(collider.geometry, collider.material, h, state.x, state.v)
-                               : resolve_collider_friction(collider.geometry, collider.material, state.x, state.v);
+        found = position_based ? resolve_collider_positional(end, collider.material, h, state.x, state.v, sweep)
+                               : resolve_collider_friction(end, collider.material, state.x, state.v, sweep);
         break;
-      case FloorContact::Smooth:  // a force inside the dynamics: only the depth to report
-        found.deepest_m = deepest_inside_collider(collider.geometry, state.x);
+      case FloorContact::Smooth:  // a force inside the dynamics: only tunnelling to undo, and the depth to report
+        if (sweep) found = resolve_collider_tunnelling(end, *sweep, state.x, state.v);
+        found.deepest_m = std::max(found.deepest_m, deepest_inside_collider(end, state.x));
         break;
     }
     workspace.deepest_collider_penetration_m = std::max(workspace.deepest_collider_penetration_m, found.deepest_m);
@@ -129,12 +138,17 @@ std::optional<Divergence> fixed_step_phases(const Model& model, State& state, Wo
   return guard(model, state, /*full=*/model.solver.retry);
 }
 
-// A step of dt as state.retry_substeps substeps, each checked: the first problem found.
+// A step of dt as state.retry_substeps substeps, each checked: the first problem found. Each substep sees its own
+// start time (a moving collider's pose); the step's caller then advances state.time_s by dt.
 std::optional<Divergence> run_retry_substeps(const Model& model, State& state, Workspace& workspace, double dt) {
-  for (int s = 0; s < state.retry_substeps; ++s) {
-    if (auto found = fixed_step_phases(model, state, workspace, dt / state.retry_substeps)) return found;
+  const double start_s = state.time_s;
+  std::optional<Divergence> found;
+  for (int s = 0; s < state.retry_substeps && !found; ++s) {
+    if (s > 0) state.time_s = start_s + s * (dt / state.retry_substeps);
+    found = fixed_step_phases(model, state, workspace, dt / state.retry_substeps);
   }
-  return std::nullopt;
+  state.time_s = start_s;
+  return found;
 }
 
 // The stable-dt estimate at the model's initial state (the diverged state says nothing about it).
