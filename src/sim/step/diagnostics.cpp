@@ -39,7 +39,7 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
     if (collider.contact != FloorContact::Smooth) continue;
     d.contact_J += smooth_collider_energy(resolve_smooth_collider(collider), body.masses.kg, model.of(body, state.x));
   }
-  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+  if (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Smooth) {
     BodyCollider collider;  // a search per call: diagnostics run per frame, not per step
     const SmoothResponse contact = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
     d.contact_J += collider.smooth_energy(model.bodies, model.mass_kg, state.x, contact, index);
