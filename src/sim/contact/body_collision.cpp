@@ -193,6 +193,10 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 template <class Visit>
 void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search,
                                     Visit visit) {
+  if (moving_index_ == surface_index_) {
+    for_each_nearest_self(surface, x, search, visit);
+    return;
+  }
   const double edge = surface.rest.mean_edge_m;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
   // holds the surface triangles there, and only moving vertices there are tested.
@@ -202,15 +206,10 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
                    moving_box.hi.cwiseMin(surface_box.hi) + Vec3::Constant(search)};
   build_grid(surface, x, region, search, std::max(2 * search, kCellFraction * edge));
   const std::span<const Vec3> x_surface = Model::of(surface, x);
-  const SelfExclusion* exclusion = moving_index_ == surface_index_ ? &self_exclusion(surface_index_, surface) : nullptr;
   for (int i = 0; i < moving.vertex_count; ++i) {
     const int vertex = moving.first_vertex + i;
     const Vec3 p = x[vertex];
     if ((p.array() < region.lo.array()).any() || (p.array() > region.hi.array()).any()) continue;
-    // Self-collision: the vertex's own neighbourhood counts as already tested.
-    if (exclusion != nullptr) {
-      for (const int f : exclusion->of(i)) tested_by_[static_cast<std::size_t>(f)] = i;
-    }
     // Nearest triangle among those in the grid cells that the search sphere's box touches.
     double best_distance = search;
     Nearest best;
@@ -250,6 +249,90 @@ double BodyCollider::side_at_step_start(int vertex, int first, const Triangle& t
   Vec3 start = x[vertex] - push.step_s * step_velocity_[vertex];
   for (int k = 0; k < 3; ++k) start -= weights[k] * (x[first + t[k]] - push.step_s * step_velocity_[first + t[k]]);
   return start.dot(normal) < 0.0 ? -1.0 : 1.0;
+}
+
+template <class Visit>
+void BodyCollider::for_each_nearest_self(const Body& body, std::span<const Vec3> x, double search, Visit visit) {
+  const SelfCandidates& candidates = self_candidates(body, x, search);
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  for (int i = 0; i < body.vertex_count; ++i) {
+    const auto first = static_cast<std::size_t>(candidates.start[static_cast<std::size_t>(i)]);
+    const auto last = static_cast<std::size_t>(candidates.start[static_cast<std::size_t>(i) + 1]);
+    if (first == last) continue;
+    const int vertex = body.first_vertex + i;
+    const Vec3 p = x[vertex];
+    double best_distance = search;
+    Nearest best;
+    for (std::size_t k = first; k < last; ++k) {  // ascending triangle index: ties go to the lowest, as in the grid
+      const int f = candidates.triangles[k];
+      const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
+      const ClosestPoint q = closest_point_on_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]);
+      const double distance = (p - q.point).norm();
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = Nearest{f, q.point, q.weights};
+      }
+    }
+    if (best.triangle >= 0) visit(vertex, best);
+  }
+}
+
+const BodyCollider::SelfCandidates& BodyCollider::self_candidates(const Body& body, std::span<const Vec3> x,
+                                                                  double search) {
+  if (self_candidates_.size() <= surface_index_) self_candidates_.resize(surface_index_ + 1);
+  SelfCandidates& c = self_candidates_[surface_index_];
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  const double margin = kSelfMarginFraction * search;
+  if (c.reference.size() == x_body.size() && c.search_m == search) {
+    // A pair's distance changes by at most the vertex's and the farthest corner's displacements relative to any
+    // common one u (a translation changes no distance): u = the mean displacement.
+    Vec3 u = Vec3::Zero();
+    for (std::size_t i = 0; i < x_body.size(); ++i) u += x_body[i] - c.reference[i];
+    u /= static_cast<double>(x_body.size());
+    double largest2 = 0.0;
+    for (std::size_t i = 0; i < x_body.size(); ++i)
+      largest2 = std::max(largest2, (x_body[i] - c.reference[i] - u).squaredNorm());
+    if (2.0 * std::sqrt(largest2) <= kSelfMarginUse * margin) return c;
+  }
+  collect_self_candidates(body, x, search + margin, c);
+  c.reference.assign(x_body.begin(), x_body.end());
+  c.search_m = search;
+  return c;
+}
+
+void BodyCollider::collect_self_candidates(const Body& body, std::span<const Vec3> x, double reach, SelfCandidates& c) {
+  const Box& box = boxes_[surface_index_];
+  const Box region{box.lo - Vec3::Constant(reach), box.hi + Vec3::Constant(reach)};
+  build_grid(body, x, region, reach, std::max(2 * reach, kCellFraction * body.rest.mean_edge_m));
+  const SelfExclusion& exclusion = self_exclusion(surface_index_, body);
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  c.start.assign(1, 0);
+  c.triangles.clear();
+  for (int i = 0; i < body.vertex_count; ++i) {
+    const Vec3 p = x_body[static_cast<std::size_t>(i)];
+    for (const int f : exclusion.of(i)) tested_by_[static_cast<std::size_t>(f)] = i;  // its neighbourhood: skipped
+    const std::size_t first = c.triangles.size();
+    const Eigen::Vector3i lo = cell_of(p - Vec3::Constant(reach));
+    const Eigen::Vector3i hi = cell_of(p + Vec3::Constant(reach)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
+    for (int cx = lo.x(); cx <= hi.x(); ++cx) {
+      for (int cy = lo.y(); cy <= hi.y(); ++cy) {
+        for (int cz = lo.z(); cz <= hi.z(); ++cz) {
+          const auto cell = static_cast<std::size_t>(cell_index(cx, cy, cz));
+          for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+            const int f = cell_triangles_[static_cast<std::size_t>(k)];
+            if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
+            tested_by_[static_cast<std::size_t>(f)] = i;
+            const Box& b = triangle_boxes_[static_cast<std::size_t>(f)];
+            if ((p - p.cwiseMax(b.lo).cwiseMin(b.hi)).squaredNorm() > reach * reach) continue;
+            const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
+            if (distance_to_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]) <= reach) c.triangles.push_back(f);
+          }
+        }
+      }
+    }
+    std::sort(c.triangles.begin() + static_cast<std::ptrdiff_t>(first), c.triangles.end());
+    c.start.push_back(static_cast<int>(c.triangles.size()));
+  }
 }
 
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,

@@ -48,6 +48,10 @@ double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 // A self-colliding body's exclusion radius over its mean rest edge: twice the contact's search (half an edge), so
 // that a neighbour squeezed to half its rest distance is still outside the search.
 inline constexpr double kSelfExclusionFraction = 1.0;
+// The self search's candidate margin over the search, and the share of it the displacements may use before the
+// candidates are rebuilt (the rest is slack for the impulse pass's own pushes within one call).
+inline constexpr double kSelfMarginFraction = 1.0;
+inline constexpr double kSelfMarginUse = 0.5;
 
 class BodyCollider {
  public:
@@ -136,6 +140,22 @@ class BodyCollider {
   // Per self-colliding body (built on first use): the triangles each of its vertices skips.
   const SelfExclusion& self_exclusion(std::size_t body_index, const Body& body);
   std::vector<SelfExclusion> self_exclusions_;
+  // Per self-colliding body: every vertex's triangles (outside its exclusion) within the search plus a margin at the
+  // reference positions, ascending (a Verlet list). While no vertex has moved more than half the margin relative to
+  // the body's mean displacement since, every triangle within the search of a vertex is among them, so the nearest
+  // is found among them alone: the body's search costs a pass over its candidates instead of a grid per call.
+  struct SelfCandidates {
+    std::vector<Vec3> reference;  // the body's positions when the list was built
+    double search_m = 0.0;
+    std::vector<int> start, triangles;  // compressed rows per vertex (local index)
+  };
+  std::vector<SelfCandidates> self_candidates_;
+  // The self pair's for_each_nearest (the body at surface_index_), from its candidates.
+  template <class Visit>
+  void for_each_nearest_self(const Body& body, std::span<const Vec3> x, double search, Visit visit);
+  // The candidates of the body at surface_index_ for `search`, rebuilt when the positions have moved too far.
+  const SelfCandidates& self_candidates(const Body& body, std::span<const Vec3> x, double search);
+  void collect_self_candidates(const Body& body, std::span<const Vec3> x, double reach, SelfCandidates& c);
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                              std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                              std::span<Vec3> force);
