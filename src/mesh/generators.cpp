@@ -1,4 +1,4 @@
-// Built-in mesh generators: icosphere, subdivided cube, torus, capsule.
+// Built-in mesh generators: icosphere, subdivided cube, torus, capsule, tube.
 #include "mesh/generators.hpp"
 
 #include <cmath>
@@ -36,6 +36,10 @@ const std::vector<Generator>& generators() {
        "capsule:N with N (segments around) an integer in 4..256",
        {{4, 256}},
        [](const std::vector<int>& a) { return capsule(a[0]); }},
+      {"tube",
+       "tube:N,L with N (segments around) in 4..256 and L (the cylinder's length in m) in 1..100",
+       {{4, 256}, {1, 100}},
+       [](const std::vector<int>& a) { return tube(a[0], a[1]); }},
   };
   return table;
 }
@@ -84,7 +88,7 @@ bool names_generator(const std::string& spec) {
 std::string generator_spec_error(const std::string& spec) {
   const Generator* generator = find_generator(spec);
   if (generator == nullptr || spec.find(':') == std::string::npos) {
-    return "expected a generator (icosphere:L, cube:N, torus:M,N, capsule:N), got \"" + spec + "\"";
+    return "expected a generator (icosphere:L, cube:N, torus:M,N, capsule:N, tube:N,L), got \"" + spec + "\"";
   }
   if (!parse_arguments(*generator, spec)) return std::string("expected ") + generator->usage + ", got \"" + spec + "\"";
   return "";
@@ -191,20 +195,24 @@ TriMesh torus(int ring_segments, int tube_segments) {
   return mesh;
 }
 
-TriMesh capsule(int segments) {
-  // Radius 0.5, a cylinder of length 1 along y between two hemispheres: 2 m tall, centred at the origin.
-  constexpr double kRadius = 0.5, kHalfLength = 0.5;
+namespace {
+
+// Radius 0.5, a cylinder of length 2 half_length along y between two hemispheres, centred at the origin, with
+// `inner_rings` evenly spaced rings along the cylinder between the hemispheres' equators.
+TriMesh capsule_along_y(int segments, double half_length, int inner_rings) {
+  constexpr double kRadius = 0.5;
   const int latitude_steps = std::max(2, segments / 4);  // per hemisphere, pole excluded
   TriMesh mesh;
-  mesh.vertices.emplace_back(0.0, kHalfLength + kRadius, 0.0);  // top pole
+  mesh.vertices.emplace_back(0.0, half_length + kRadius, 0.0);  // top pole
   std::vector<std::pair<double, double>> rings;                 // (y, ring radius) from top to bottom
   for (int k = 1; k <= latitude_steps; ++k) {
     const double polar = 0.5 * std::numbers::pi * k / latitude_steps;
-    rings.emplace_back(kHalfLength + kRadius * std::cos(polar), kRadius * std::sin(polar));
+    rings.emplace_back(half_length + kRadius * std::cos(polar), kRadius * std::sin(polar));
   }
+  for (int k = 1; k <= inner_rings; ++k) rings.emplace_back(half_length * (1.0 - 2.0 * k / (inner_rings + 1)), kRadius);
   for (int k = latitude_steps; k >= 1; --k) {
     const double polar = 0.5 * std::numbers::pi * k / latitude_steps;
-    rings.emplace_back(-kHalfLength - kRadius * std::cos(polar), kRadius * std::sin(polar));
+    rings.emplace_back(-half_length - kRadius * std::cos(polar), kRadius * std::sin(polar));
   }
   for (const auto& [y, radius] : rings) {
     for (int j = 0; j < segments; ++j) {
@@ -214,7 +222,7 @@ TriMesh capsule(int segments) {
   }
   const int ring_count = static_cast<int>(rings.size());
   const int bottom = static_cast<int>(mesh.vertices.size());
-  mesh.vertices.emplace_back(0.0, -kHalfLength - kRadius, 0.0);  // bottom pole
+  mesh.vertices.emplace_back(0.0, -half_length - kRadius, 0.0);  // bottom pole
   auto ring = [&](int i, int j) { return 1 + ring_vertex(i, j, segments); };
   for (int j = 0; j < segments; ++j) mesh.triangles.push_back({0, ring(0, j), ring(0, j + 1)});
   for (int i = 0; i + 1 < ring_count; ++i) {
@@ -226,6 +234,17 @@ TriMesh capsule(int segments) {
   for (int j = 0; j < segments; ++j)
     mesh.triangles.push_back({bottom, ring(ring_count - 1, j + 1), ring(ring_count - 1, j)});
   return mesh;
+}
+
+}  // namespace
+
+TriMesh capsule(int segments) { return capsule_along_y(segments, 0.5, 0); }
+
+TriMesh tube(int segments, int length) {
+  // Rings along the cylinder about as far apart as the vertices around it (2π r / N): near-square quads.
+  const double spacing = std::numbers::pi / segments;
+  const int inner_rings = std::max(0, static_cast<int>(std::lround(length / spacing)) - 1);
+  return capsule_along_y(segments, 0.5 * length, inner_rings);
 }
 
 }  // namespace mesh

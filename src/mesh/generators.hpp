@@ -1,5 +1,6 @@
 // Built-in closed meshes: "icosphere:L" (unit sphere), "cube:N" (unit cube, N×N quads a side),
-// "torus:M,N" (ring radius 1, tube radius 0.4), "capsule:N" (radius 0.5, 2 m tall along y).
+// "torus:M,N" (ring radius 1, tube radius 0.4), "capsule:N" (radius 0.5, 2 m tall along y), "tube:N,L" (radius 0.5,
+// a cylinder of L m along y between two hemispheres).
 #pragma once
 
 #include <string>
@@ -29,5 +30,9 @@ TriMesh torus(int ring_segments, int tube_segments);
 
 // Capsule along y: two hemispheres of radius 0.5 joined by a cylinder of length 1; `segments` around.
 TriMesh capsule(int segments);
+
+// A long capsule along y: radius 0.5, a cylinder of `length` m between the hemispheres, with rings along it about
+// as far apart as its vertices around (so that it bends smoothly); `segments` around.
+TriMesh tube(int segments, int length);
 
 }  // namespace mesh

@@ -35,6 +35,7 @@ struct Body {
   double pressure_J = 50.0;           // nRT of the enclosed gas (Pa·m³); 0 switches the gas off
   double bending_N_per_m = 0.0;       // "bending": k_b of the bending links (sim/forces/bending.hpp) [N/m]; 0: none
   bool split = false;                 // "split": each separate closed part of the mesh becomes its own body
+  bool self_collision = false;        // "self_collision": its vertices touch its own triangles (sim::Body)
   mesh::RepairOptions repair;         // "repair": true or {"holes": ..., "parts": ...}: fix the mesh before validation
   // "resolution": N simulates the body on an isotropic remesh of its mesh with about N vertices (the proxy),
   // or {"edge_length": L} on one with edges of about L [m, placed]; the mesh itself follows the proxy for

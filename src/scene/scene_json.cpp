@@ -591,6 +591,7 @@ Body read_body(const json& node, const std::string& path, const fs::path& file, 
   read_pressure(r, body);
   read_bending(r, body);
   body.split = r.boolean("split");
+  body.self_collision = r.boolean("self_collision");
   read_repair(r, body);
   read_resolution(r, body);
   body.color = r.color("color");

@@ -336,6 +336,10 @@ struct Table {
             "k_b of the bending links across each edge (0: none), or {\"ratio\": r}.", 0.0),
         key("split", {of_kind(FormKind::Boolean)}, "", "Each separate closed part of the mesh becomes its own body.",
             false),
+        key("self_collision", {of_kind(FormKind::Boolean)}, "",
+            "Its vertices also collide with its own triangles (outside each vertex's rest neighbourhood), with the "
+            "collisions' contact model.",
+            false),
         key("repair", {of_kind(FormKind::Boolean), object(repair)}, "",
             "Repair the mesh before it is checked: true (every step) or an object of steps.", false),
         key_without_default("resolution", {of_kind(FormKind::Null), integer(20, 1000000), object(resolution)}, "",

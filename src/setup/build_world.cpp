@@ -151,6 +151,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       check_body_quantities(body, spec, scene.source.string(), key);
       for (const double m : body.masses.kg) heaviest_vertex_kg = std::max(heaviest_vertex_kg, m);
       if (body.params.bending_N_per_m > 0.0) sim::add_bending_links(body, x0);  // none: no links, no cost
+      body.self_collision = spec.self_collision;
       phase_done("resolving the parameters of " + key);
       if (proxied) {
         const int index = static_cast<int>(model.bodies.size());

@@ -61,6 +61,14 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 
 }  // namespace
 
+bool searches_body_contact(const std::vector<Body>& bodies) {
+  return bodies.size() > 1 || std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.self_collision; });
+}
+
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  return (p - closest_point_on_triangle(p, a, b, c).point).norm();
+}
+
 // Cell k along an axis holds [origin + k·size, origin + (k + 1)·size): k = ⌊(p − origin) / size⌋ clamped to
 // [0, kMaxGridCells - 1]; for s = (p − origin) / size ≥ 0 the floor is the truncation, and s < 0 gives 0.
 inline Eigen::Vector3i BodyCollider::cell_of(const Vec3& p) const {
@@ -185,6 +193,10 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 template <class Visit>
 void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search,
                                     Visit visit) {
+  if (moving_index_ == surface_index_) {
+    for_each_nearest_self(surface, x, search, visit);
+    return;
+  }
   const double edge = surface.rest.mean_edge_m;
   // Only the overlap of the two bodies' boxes (grown by the search distance) can hold contacts: the grid
   // holds the surface triangles there, and only moving vertices there are tested.
@@ -231,6 +243,98 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
   }
 }
 
+double BodyCollider::side_at_step_start(int vertex, int first, const Triangle& t, const Vec3& weights,
+                                        const Vec3& normal, std::span<const Vec3> x, const PushLimit& push) const {
+  // The relative position r = x_p − Σ w_k x_k taken back along the step's velocities: r − h (v_p − Σ w_k v_k).
+  Vec3 start = x[vertex] - push.step_s * step_velocity_[vertex];
+  for (int k = 0; k < 3; ++k) start -= weights[k] * (x[first + t[k]] - push.step_s * step_velocity_[first + t[k]]);
+  return start.dot(normal) < 0.0 ? -1.0 : 1.0;
+}
+
+template <class Visit>
+void BodyCollider::for_each_nearest_self(const Body& body, std::span<const Vec3> x, double search, Visit visit) {
+  const SelfCandidates& candidates = self_candidates(body, x, search);
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  for (int i = 0; i < body.vertex_count; ++i) {
+    const auto first = static_cast<std::size_t>(candidates.start[static_cast<std::size_t>(i)]);
+    const auto last = static_cast<std::size_t>(candidates.start[static_cast<std::size_t>(i) + 1]);
+    if (first == last) continue;
+    const int vertex = body.first_vertex + i;
+    const Vec3 p = x[vertex];
+    double best_distance = search;
+    Nearest best;
+    for (std::size_t k = first; k < last; ++k) {  // ascending triangle index: ties go to the lowest, as in the grid
+      const int f = candidates.triangles[k];
+      const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
+      const ClosestPoint q = closest_point_on_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]);
+      const double distance = (p - q.point).norm();
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = Nearest{f, q.point, q.weights};
+      }
+    }
+    if (best.triangle >= 0) visit(vertex, best);
+  }
+}
+
+const BodyCollider::SelfCandidates& BodyCollider::self_candidates(const Body& body, std::span<const Vec3> x,
+                                                                  double search) {
+  if (self_candidates_.size() <= surface_index_) self_candidates_.resize(surface_index_ + 1);
+  SelfCandidates& c = self_candidates_[surface_index_];
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  const double margin = kSelfMarginFraction * search;
+  if (c.reference.size() == x_body.size() && c.search_m == search) {
+    // A pair's distance changes by at most the vertex's and the farthest corner's displacements relative to any
+    // common one u (a translation changes no distance): u = the mean displacement.
+    Vec3 u = Vec3::Zero();
+    for (std::size_t i = 0; i < x_body.size(); ++i) u += x_body[i] - c.reference[i];
+    u /= static_cast<double>(x_body.size());
+    double largest2 = 0.0;
+    for (std::size_t i = 0; i < x_body.size(); ++i)
+      largest2 = std::max(largest2, (x_body[i] - c.reference[i] - u).squaredNorm());
+    if (2.0 * std::sqrt(largest2) <= kSelfMarginUse * margin) return c;
+  }
+  collect_self_candidates(body, x, search + margin, c);
+  c.reference.assign(x_body.begin(), x_body.end());
+  c.search_m = search;
+  return c;
+}
+
+void BodyCollider::collect_self_candidates(const Body& body, std::span<const Vec3> x, double reach, SelfCandidates& c) {
+  const Box& box = boxes_[surface_index_];
+  const Box region{box.lo - Vec3::Constant(reach), box.hi + Vec3::Constant(reach)};
+  build_grid(body, x, region, reach, std::max(2 * reach, kCellFraction * body.rest.mean_edge_m));
+  const SelfExclusion& exclusion = self_exclusion(surface_index_, body);
+  const std::span<const Vec3> x_body = Model::of(body, x);
+  c.start.assign(1, 0);
+  c.triangles.clear();
+  for (int i = 0; i < body.vertex_count; ++i) {
+    const Vec3 p = x_body[static_cast<std::size_t>(i)];
+    for (const int f : exclusion.of(i)) tested_by_[static_cast<std::size_t>(f)] = i;  // its neighbourhood: skipped
+    const std::size_t first = c.triangles.size();
+    const Eigen::Vector3i lo = cell_of(p - Vec3::Constant(reach));
+    const Eigen::Vector3i hi = cell_of(p + Vec3::Constant(reach)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
+    for (int cx = lo.x(); cx <= hi.x(); ++cx) {
+      for (int cy = lo.y(); cy <= hi.y(); ++cy) {
+        for (int cz = lo.z(); cz <= hi.z(); ++cz) {
+          const auto cell = static_cast<std::size_t>(cell_index(cx, cy, cz));
+          for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+            const int f = cell_triangles_[static_cast<std::size_t>(k)];
+            if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
+            tested_by_[static_cast<std::size_t>(f)] = i;
+            const Box& b = triangle_boxes_[static_cast<std::size_t>(f)];
+            if ((p - p.cwiseMax(b.lo).cwiseMin(b.hi)).squaredNorm() > reach * reach) continue;
+            const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
+            if (distance_to_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]) <= reach) c.triangles.push_back(f);
+          }
+        }
+      }
+    }
+    std::sort(c.triangles.begin() + static_cast<std::ptrdiff_t>(first), c.triangles.end());
+    c.start.push_back(static_cast<int>(c.triangles.size()));
+  }
+}
+
 int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const Body& surface,
                                                      std::span<const double> inverse_mass, State& state,
                                                      const ContactMaterial& material, const PushLimit& push) {
@@ -250,6 +354,12 @@ int BodyCollider::resolve_vertices_against_triangles(const Body& moving, const B
       const SmoothFrame frame = contact_frame(surface, state.x, vertex, best, search);
       height = frame.signed_distance_m;
       normal = frame.direction;
+    }
+    if (moving_index_ == surface_index_) {
+      // Self-contact: the vertex keeps the side of its own triangle that it was on when the step began.
+      const double side = side_at_step_start(vertex, surface.first_vertex, t, best.weights, normal, state.x, push);
+      height *= side;
+      normal *= side;
     }
     if (height >= thickness) return;
     const Contact contact{vertex,
@@ -301,6 +411,16 @@ const BodyCollider::Adjacency& BodyCollider::adjacency(std::size_t body_index, c
   return a;
 }
 
+const SelfExclusion& BodyCollider::self_exclusion(std::size_t body_index, const Body& body) {
+  if (self_exclusions_.size() <= body_index) self_exclusions_.resize(body_index + 1);
+  SelfExclusion& exclusion = self_exclusions_[body_index];
+  if (exclusion.start.size() == static_cast<std::size_t>(body.vertex_count) + 1) return exclusion;
+  const Adjacency& a = adjacency(body_index, body);
+  exclusion = build_self_exclusion(body.topology.faces, a.across, a.vertex_face_start, a.vertex_faces,
+                                   body.rest.position_m, kSelfExclusionFraction * body.rest.mean_edge_m);
+  return exclusion;
+}
+
 Vec3 BodyCollider::surface_pseudonormal(const Body& surface, std::span<const Vec3> x_surface, int face,
                                         const Vec3& weights) {
   const std::vector<Triangle>& faces = surface.topology.faces;
@@ -333,8 +453,11 @@ BodyCollider::SmoothFrame BodyCollider::contact_frame(const Body& surface, std::
   const Triangle& t = surface.topology.faces[best.triangle];
   const Vec3 offset = x[vertex] - best.point;
   const double distance = offset.norm();
-  const Vec3 pseudonormal = surface_pseudonormal(surface, x_surface, best.triangle, best.weights);
-  const double side = offset.dot(pseudonormal) < 0.0 ? -1.0 : 1.0;  // −1: inside the surface body
+  // −1: inside the surface body. A body's own surface is two-sided to its vertices (a vertex may face its own
+  // triangle from within the body, as the two walls of a flattened tube face each other): the side it is on.
+  const bool self = moving_index_ == surface_index_;
+  const double side =
+      !self && offset.dot(surface_pseudonormal(surface, x_surface, best.triangle, best.weights)) < 0.0 ? -1.0 : 1.0;
   SmoothFrame frame;
   frame.vertex = vertex;
   frame.corners = {surface.first_vertex + t[0], surface.first_vertex + t[1], surface.first_vertex + t[2]};
@@ -393,7 +516,7 @@ int BodyCollider::for_each_touching_pair(const std::vector<Body>& bodies, Visit 
   int contacts = 0;
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (a == b) continue;
+      if (a == b && !bodies[a].self_collision) continue;
       const double margin = kSearchFraction * bodies[b].rest.mean_edge_m;
       if (!boxes_overlap(boxes_[a].lo, boxes_[a].hi, boxes_[b].lo, boxes_[b].hi, margin)) continue;
       moving_index_ = a;
@@ -406,7 +529,7 @@ int BodyCollider::for_each_touching_pair(const std::vector<Body>& bodies, Visit 
 
 int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const double> inverse_mass, State& state,
                           const ContactMaterial& material, const PushLimit& push) {
-  if (bodies.size() < 2) return 0;
+  if (!searches_body_contact(bodies)) return 0;
   compute_boxes(bodies, state.x);
   step_velocity_ = state.v;
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
@@ -417,7 +540,7 @@ int BodyCollider::resolve(const std::vector<Body>& bodies, std::span<const doubl
 int BodyCollider::add_smooth_forces(const std::vector<Body>& bodies, std::span<const double> mass_kg,
                                     std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                                     std::span<Vec3> force) {
-  if (bodies.size() < 2) return 0;
+  if (!searches_body_contact(bodies)) return 0;
   compute_boxes(bodies, x);
   return for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
     return add_smooth_pair_forces(moving, surface, mass_kg, x, v, contact, force);
@@ -426,7 +549,7 @@ int BodyCollider::add_smooth_forces(const std::vector<Body>& bodies, std::span<c
 
 double BodyCollider::smooth_energy(const std::vector<Body>& bodies, std::span<const double> mass_kg,
                                    std::span<const Vec3> x, const SmoothResponse& contact, std::size_t moving) {
-  if (bodies.size() < 2) return 0.0;
+  if (!searches_body_contact(bodies)) return 0.0;
   compute_boxes(bodies, x);
   double energy = 0.0;
   for_each_touching_pair(bodies, [&](const Body& moving_body, const Body& surface) {
@@ -444,7 +567,7 @@ double BodyCollider::smooth_energy(const std::vector<Body>& bodies, std::span<co
 void BodyCollider::find_smooth_frames(const std::vector<Body>& bodies, std::span<const Vec3> x,
                                       std::vector<SmoothFrame>& frames) {
   frames.clear();
-  if (bodies.size() < 2) return;
+  if (!searches_body_contact(bodies)) return;
   compute_boxes(bodies, x);
   for_each_touching_pair(bodies, [&](const Body& moving, const Body& surface) {
     const double search = kSearchFraction * surface.rest.mean_edge_m;

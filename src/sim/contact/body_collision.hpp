@@ -5,6 +5,9 @@
 // angle-weighted pseudonormal at that point (surface_pseudonormal).
 // The impulse model is applied after each step, like the floor; the smooth model adds penalty forces inside
 // the force evaluation (sim::Dynamics). A single body costs nothing (no search at all).
+// Self-collision (Body::self_collision): the body is also its own surface body, each vertex against its own
+// triangles outside its rest neighbourhood (sim/contact/self_exclusion.hpp), with the same search, models and
+// momentum balance.
 #pragma once
 
 #include <array>
@@ -12,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "sim/contact/self_exclusion.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/model/body.hpp"
 #include "sim/model/settings.hpp"
@@ -34,6 +38,20 @@ struct PushLimit {
   double push_speed_m_per_s = 0.0;
   bool edge_capped = true;
 };
+
+// True when the bodies need a contact search: there are several, or one collides with itself.
+bool searches_body_contact(const std::vector<Body>& bodies);
+
+// The distance from p to triangle (a, b, c) [m].
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+// A self-colliding body's exclusion radius over its mean rest edge: twice the contact's search (half an edge), so
+// that a neighbour squeezed to half its rest distance is still outside the search.
+inline constexpr double kSelfExclusionFraction = 1.0;
+// The self search's candidate margin over the search, and the share of it the displacements may use before the
+// candidates are rebuilt (the rest is slack for the impulse pass's own pushes within one call).
+inline constexpr double kSelfMarginFraction = 1.0;
+inline constexpr double kSelfMarginUse = 0.5;
 
 class BodyCollider {
  public:
@@ -92,6 +110,11 @@ class BodyCollider {
   // `surface` within `search`, in vertex order. `x` may change under it (the vertex visited only).
   template <class Visit>
   void for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search, Visit visit);
+  // Self-contact's side for the impulse model: +1 when `vertex` was on the side of triangle `t` (corners at
+  // first + t[k], closest point's `weights`) that `normal` points to at the step's start (x − h v, the velocities
+  // before this call's impulses), −1 when on the other.
+  double side_at_step_start(int vertex, int first, const Triangle& t, const Vec3& weights, const Vec3& normal,
+                            std::span<const Vec3> x, const PushLimit& push) const;
   int resolve_vertices_against_triangles(const Body& moving, const Body& surface, std::span<const double> inverse_mass,
                                          State& state, const ContactMaterial& material, const PushLimit& push);
   // The frame of `vertex` against its nearest triangle `best` of `surface` (the body at surface_index_), its side
@@ -114,6 +137,25 @@ class BodyCollider {
   };
   const Adjacency& adjacency(std::size_t body_index, const Body& body);
   std::vector<Adjacency> adjacency_;
+  // Per self-colliding body (built on first use): the triangles each of its vertices skips.
+  const SelfExclusion& self_exclusion(std::size_t body_index, const Body& body);
+  std::vector<SelfExclusion> self_exclusions_;
+  // Per self-colliding body: every vertex's triangles (outside its exclusion) within the search plus a margin at the
+  // reference positions, ascending (a Verlet list). While no vertex has moved more than half the margin relative to
+  // the body's mean displacement since, every triangle within the search of a vertex is among them, so the nearest
+  // is found among them alone: the body's search costs a pass over its candidates instead of a grid per call.
+  struct SelfCandidates {
+    std::vector<Vec3> reference;  // the body's positions when the list was built
+    double search_m = 0.0;
+    std::vector<int> start, triangles;  // compressed rows per vertex (local index)
+  };
+  std::vector<SelfCandidates> self_candidates_;
+  // The self pair's for_each_nearest (the body at surface_index_), from its candidates.
+  template <class Visit>
+  void for_each_nearest_self(const Body& body, std::span<const Vec3> x, double search, Visit visit);
+  // The candidates of the body at surface_index_ for `search`, rebuilt when the positions have moved too far.
+  const SelfCandidates& self_candidates(const Body& body, std::span<const Vec3> x, double search);
+  void collect_self_candidates(const Body& body, std::span<const Vec3> x, double reach, SelfCandidates& c);
   int add_smooth_pair_forces(const Body& moving, const Body& surface, std::span<const double> mass_kg,
                              std::span<const Vec3> x, std::span<const Vec3> v, const SmoothResponse& contact,
                              std::span<Vec3> force);

@@ -6,7 +6,7 @@
 namespace sim {
 
 void BodyContactPotential::build(const Model& model) {
-  active_ = model.body_contact.contact == BodyContactModel::Smooth && model.bodies.size() > 1;
+  active_ = model.body_contact.contact == BodyContactModel::Smooth && searches_body_contact(model.bodies);
   if (active_) response_ = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
   frames_.clear();
   lagged_.clear();

@@ -10,7 +10,7 @@ namespace sim {
 
 Dynamics::Dynamics(const Model& model, ForceScratch& scratch) : model_(model), scratch_(scratch) {
   if (model.floor && model.floor->contact == FloorContact::Smooth) smooth_floor_ = resolve_smooth_floor(*model.floor);
-  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+  if (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Smooth) {
     smooth_bodies_ = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
   }
 }

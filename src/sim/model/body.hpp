@@ -68,6 +68,7 @@ struct Body {
   DistanceConstraints constraints;  // from the above, by add_body()
   int first_vertex = 0;             // where this body's vertices start in the state's arrays (State::x, v)
   int vertex_count = 0;
+  bool self_collision = false;  // its vertices also touch its own triangles (sim/contact/body_collision.hpp)
 };
 
 // Lumped vertex masses: each triangle gives a third of its area share of `total_mass` to each corner.

@@ -40,7 +40,7 @@ BodyDiagnostics diagnose(const Model& model, const State& state, std::size_t ind
     d.contact_J += smooth_collider_energy(resolve_smooth_collider(collider, state.time_s), body.masses.kg,
                                           model.of(body, state.x));
   }
-  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+  if (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Smooth) {
     BodyCollider collider;  // a search per call: diagnostics run per frame, not per step
     const SmoothResponse contact = resolve_smooth_response(model.body_contact.smooth, model.body_contact.material);
     d.contact_J += collider.smooth_energy(model.bodies, model.mass_kg, state.x, contact, index);

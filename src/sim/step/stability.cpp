@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/errors.hpp"
+#include "sim/contact/body_collision.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/forces/forces.hpp"
 
@@ -409,7 +410,7 @@ void scale_for_collider_contacts(StabilityEstimate& estimate, const Model& model
 void scale_for_contacts(StabilityEstimate& estimate, const Model& model) {
   if (model.floor) scale_for_floor_contact(estimate, *model.floor);
   scale_for_collider_contacts(estimate, model);
-  if (model.bodies.size() > 1 && model.body_contact.contact == BodyContactModel::Smooth) {
+  if (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Smooth) {
     add_smooth_contact(estimate, resolve_smooth_response(model.body_contact.smooth, model.body_contact.material));
   }
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/profile.hpp"
+#include "sim/contact/body_collision.hpp"
 #include "sim/contact/collider_contact.hpp"
 #include "sim/contact/contact.hpp"
 #include "sim/step/diverged.hpp"
@@ -36,7 +37,8 @@ double integrate(const Model& model, State& state, Workspace& workspace, double 
 // Phase 2: impulses between bodies after a step of h (a single body does no search; the smooth contact is a
 // force inside phase 1). Returns the contacts resolved.
 int resolve_body_contacts(const Model& model, State& state, Workspace& workspace, double h) {
-  if (model.bodies.size() < 2 || model.body_contact.contact == BodyContactModel::Smooth) return 0;  // smooth: a force
+  if (!searches_body_contact(model.bodies) || model.body_contact.contact == BodyContactModel::Smooth)
+    return 0;  // smooth: a force
   const softbody::ProfileScope profile(softbody::ProfilePhase::body_contact);
   const PushLimit push{h, model.body_contact.push_speed_m_per_s,
                        !integrator_info(model.solver.integrator).position_based};

@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 
+#include "sim/contact/body_collision.hpp"
 #include "sim/step/stability.hpp"
 
 namespace sim {
@@ -10,7 +11,7 @@ namespace sim {
 StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const std::string& context,
                       const softbody::AfterPhase& after_phase) {
   Solver& solver = model.solver;
-  if (solver.integrator == IntegratorKind::Vbd && model.bodies.size() > 1 &&
+  if (solver.integrator == IntegratorKind::Vbd && searches_body_contact(model.bodies) &&
       model.body_contact.contact == BodyContactModel::Smooth) {  // not yet a term of vbd's energy
     throw softbody::InputError(context +
                                ": collisions.contact \"smooth\" does not work with solver.integrator vbd yet; "
