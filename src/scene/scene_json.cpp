@@ -242,6 +242,7 @@ sim::Solver read_solver(const ObjectReader& top) {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
   solver.iterations = r.integer("iterations");
+  solver.coarse_space = r.integer("coarse_space");
   solver.retry = r.boolean("retry");
   solver.tolerance = r.number("tolerance");
   solver.threads = r.integer("threads");

@@ -194,6 +194,10 @@ struct Table {
             "friction floor, that floor's contact travel limit).",
             "none: dt decides"),
         key("iterations", {integer(1, 10000)}, "", "vbd: Gauss-Seidel sweeps over the vertices per step.", 4),
+        key("coarse_space", {integer(0, 512)}, "",
+            "vbd: cells per body of a coarse level (smooth displacement fields; one Newton step on them before each "
+            "sweep) for meshes of thousands of vertices, where the sweeps alone converge slowly; 0: none.",
+            0),
         key("retry", {of_kind(FormKind::Boolean)}, "",
             "A step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024).", false),
         key("tolerance", {positive()}, "m",

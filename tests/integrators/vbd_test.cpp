@@ -20,11 +20,13 @@ namespace {
 using integrator_tests::kDust;
 using softbody::Vec3;
 
-// The world of `json_text` integrated by vbd with `sweeps` sweeps per step.
-sim::World vbd_world(const std::string& json_text, int sweeps) {
+// The world of `json_text` integrated by vbd with `sweeps` sweeps per step (and `coarse_cells` cells of its coarse
+// level).
+sim::World vbd_world(const std::string& json_text, int sweeps, int coarse_cells = 0) {
   sim::Solver solver;
   solver.integrator = sim::IntegratorKind::Vbd;
   solver.iterations = sweeps;
+  solver.coarse_space = coarse_cells;
   return integrator_tests::make_world(json_text, solver);
 }
 
@@ -155,11 +157,12 @@ TEST(Vbd, ConvergedStepsAreSecondOrder) {
 
 // The total energy of an unforced body (no gravity, no floor) never grows: BDF2 damps, and every accepted vertex move
 // lowers the step's energy, whatever h, the stiffness or the sweeps. `scale`: the start's size against the rest shape.
-double worst_energy_growth(double stiffness, double scale, int steps_per_second, int sweeps, double duration_s) {
+double worst_energy_growth(double stiffness, double scale, int steps_per_second, int sweeps, double duration_s,
+                           int coarse_cells = 0) {
   const std::string scene = R"({ "gravity": [0, 0, 0], "bodies": [ { "mesh": "icosphere:2", "mass": 1.0,
       "damping": 0.1, "pressure": 50.0, "stiffness": )" +
                             std::to_string(stiffness) + " } ] }";
-  sim::World world = vbd_world(scene, sweeps);
+  sim::World world = vbd_world(scene, sweeps, coarse_cells);
   const Vec3 centre = sim::diagnose(world.model, world.state, 0).com_m;
   for (Vec3& x : world.state.x) x = centre + scale * (x - centre);
   world.state.forget_carry();
@@ -180,6 +183,18 @@ TEST(Vbd, CompressedStartsStayStableAtEveryStepAndSweepCount) {
     for (const int rate : {60, 240, 960}) {
       for (const int sweeps : {1, 4, 16}) {
         const double growth = worst_energy_growth(1000.0, scale, rate, sweeps, 0.5);
+        EXPECT_LT(growth, 1e-9) << "scale " << scale << ", " << rate << " steps/s, " << sweeps << " sweeps";
+      }
+    }
+  }
+}
+
+// The same with the coarse level (32 cells of the 162 vertices): its corrections lower E too.
+TEST(Vbd, CompressedStartsStayStableWithTheCoarseLevel) {
+  for (const double scale : {0.9, 0.98}) {
+    for (const int rate : {60, 960}) {
+      for (const int sweeps : {1, 4}) {
+        const double growth = worst_energy_growth(1000.0, scale, rate, sweeps, 0.5, 32);
         EXPECT_LT(growth, 1e-9) << "scale " << scale << ", " << rate << " steps/s, " << sweeps << " sweeps";
       }
     }

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "sim/integrators/motion_search.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/model/body.hpp"
 
@@ -14,13 +15,11 @@ namespace sim {
 // floor takes from the whole body, the gas's breathing, a squash). The coarse space is every affine motion of the
 // body, δx_i = A (x_i − c) + t (A 3×3, t 3: q, 12 unknowns; c its centroid), δx = B q. The step solves
 // (Bᵀ H B) q = −Bᵀ ∇E with the sweeps' clamped, lagged H (Bᵀ H B is positive definite: its inertia part alone is),
-// then searches α on E's change along B q as a vertex does.
+// then searches α on E's change along B q as a vertex does (sim/integrators/motion_search.hpp).
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct AffineScratch {
-  std::vector<Vec3> motion;                // B q per vertex [m]
-  std::vector<Vec3> area_sums;             // the gas's per-vertex sums, then the line search's trial positions
-  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
-  std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
+  std::vector<Vec3> area_sums;  // the gas's per-vertex sums
+  MotionScratch search;         // B q per vertex [m], and the line search's buffers
 };
 
 // One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved.

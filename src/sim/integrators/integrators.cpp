@@ -23,7 +23,7 @@ std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
     case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
     case IntegratorKind::Newton: return std::make_unique<NewtonEuler>();
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
-    case IntegratorKind::Vbd: return std::make_unique<VertexBlockDescent>(solver.iterations);
+    case IntegratorKind::Vbd: return std::make_unique<VertexBlockDescent>(solver.iterations, true, solver.coarse_space);
   }
   return nullptr;
 }

@@ -45,10 +45,12 @@ bool has_history(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double 
 void VertexBlockDescent::prepare_once(const Model& model) {
   if (blocks_.size() == model.bodies.size()) return;
   blocks_.clear();
+  coarse_spaces_.clear();
   int most_constraints = 0;
   for (const Body& body : model.bodies) {
     blocks_.push_back(vertex_blocks(body));
     most_constraints = std::max(most_constraints, blocks_.back().most_constraints);
+    if (aggregates_ > 0) coarse_spaces_.push_back(smooth_coarse_space(blocks_.back(), aggregates_));
   }
   lags_.resize(static_cast<std::size_t>(most_constraints));
   smooth_floor_.reset();
@@ -110,6 +112,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
     if (coarse_) affine_correction(body, s, x, coarse_scratch_);
+    if (aggregates_ > 0) coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0, coarse_level_scratch_);
     double volume = s.gas ? enclosed_volume(body.topology.faces, x) : 0.0;  // afresh each sweep: no drift
     for (const int i : blocks.colouring.vertices) visit_vertex(s, i, x, volume);
   }

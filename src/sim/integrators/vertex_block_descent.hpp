@@ -7,6 +7,7 @@
 #include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/affine_correction.hpp"
+#include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
 #include "sim/integrators/vertex_energy.hpp"
@@ -34,6 +35,10 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // curvature is clamped at zero, so H_i is positive definite and Δ a descent direction. A backtracking line search
 // on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers E: no setting can make a sweep add
 // energy, whatever h. Then v' = (x' − x̃)/ĥ.
+// Before each sweep, corrections on coarse spaces carry what a sweep, which moves information by one ring of vertices,
+// cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
+// is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
+// and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
 // The smooth floor and the smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
 // smooth_collider.hpp); the paper's and the
 // friction floor and the impulse contact between bodies stay projections after the step (sim::step).
@@ -50,7 +55,10 @@ class VertexBlockDescent final : public Integrator {
     long long refused_moves = 0;  // local steps no halving made lower E: the vertex stayed
   };
 
-  explicit VertexBlockDescent(int sweeps, bool coarse = true) : sweeps_(sweeps), coarse_(coarse) {}
+  // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
+  // (sim/integrators/coarse_space.hpp), 0 for none.
+  explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0)
+      : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates) {}
   void step(Dynamics& dynamics, State& state, double dt) override;
   const Statistics& statistics() const { return statistics_; }
 
@@ -82,6 +90,9 @@ class VertexBlockDescent final : public Integrator {
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;
+  int aggregates_ = 0;                      // the coarse level's cells per body (0: no coarse level)
+  std::vector<CoarseSpace> coarse_spaces_;  // per body, where aggregates_ > 0
+  CoarseScratch coarse_level_scratch_;
   std::vector<VertexBlocks> blocks_;              // per body
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth

@@ -163,6 +163,7 @@ struct Solver {
   int substeps = 0;
   bool substeps_auto = false;
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
+  int coarse_space = 0;     // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
   bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024;
                             // State::retry_substeps)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]

@@ -1,0 +1,258 @@
+// vbd's coarse level: the smoothed aggregates of a body's vertices, and one Galerkin Newton step on them.
+#include "sim/integrators/coarse_space.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <utility>
+
+#include "sim/forces/forces.hpp"
+
+namespace sim {
+namespace {
+
+constexpr double kSmoothingWeight = 2.0 / 3.0;  // ω of a smoothing pass (damped Jacobi on the graph's Laplacian)
+
+// Vertex i's neighbours over the constraint graph are blocks.other_end[constraint_start[i] .. constraint_start[i+1]).
+std::span<const int> neighbours(const VertexBlocks& blocks, std::size_t i) {
+  const auto begin = static_cast<std::size_t>(blocks.constraint_start[i]);
+  const auto end = static_cast<std::size_t>(blocks.constraint_start[i + 1]);
+  return std::span<const int>(blocks.other_end).subspan(begin, end - begin);
+}
+
+// The cell of each vertex: seeds by farthest-point sampling in hops (the first at vertex 0, each next one the lowest
+// index farthest from all before), each vertex in the cell of its nearest seed (the earlier seed on a tie).
+std::vector<int> aggregate_cells(const VertexBlocks& blocks, int seeds, int& cells) {
+  const std::size_t n = blocks.constraint_start.size() - 1;
+  std::vector<int> hops(n, INT_MAX), cell(n, -1), queue;
+  queue.reserve(n);
+  std::size_t seed = 0;
+  cells = 0;
+  while (cells < seeds && hops[seed] > 0) {
+    hops[seed] = 0;
+    cell[seed] = cells;
+    queue.assign(1, static_cast<int>(seed));
+    for (std::size_t head = 0; head < queue.size(); ++head) {  // breadth first, only where strictly nearer
+      const auto v = static_cast<std::size_t>(queue[head]);
+      for (const int u : neighbours(blocks, v)) {
+        const auto vu = static_cast<std::size_t>(u);
+        if (hops[v] + 1 < hops[vu]) {
+          hops[vu] = hops[v] + 1;
+          cell[vu] = cells;
+          queue.push_back(u);
+        }
+      }
+    }
+    ++cells;
+    seed = static_cast<std::size_t>(std::max_element(hops.begin(), hops.end()) - hops.begin());
+  }
+  return cell;
+}
+
+using Weights = std::vector<std::pair<int, double>>;  // (aggregate, weight), aggregates ascending
+
+// Sorts by aggregate and merges repeated aggregates.
+void merge_repeats(Weights& w) {
+  std::sort(w.begin(), w.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    if (kept > 0 && w[kept - 1].first == w[k].first) {
+      w[kept - 1].second += w[k].second;
+    } else {
+      w[kept++] = w[k];
+    }
+  }
+  w.resize(kept);
+}
+
+// += scale × block into K's block (a, b) (3×3, all nine entries).
+void add_block(Eigen::MatrixXd& K, int a, int b, double scale, const Block3& h) {
+  const double entries[3][3] = {{h.xx, h.xy, h.xz}, {h.xy, h.yy, h.yz}, {h.xz, h.yz, h.zz}};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) K(3 * a + r, 3 * b + c) += scale * entries[r][c];
+  }
+}
+
+// += Σ over pairs a ≥ b of the sparse weights (aggregates ascending) of w_a w_b × block: the lower triangle of
+// wᵀ ⊗ block ⊗ w, which is all that the Cholesky factorisation reads.
+void add_outer_blocks(Eigen::MatrixXd& K, std::span<const int> aggregates, std::span<const double> weights,
+                      const Block3& h) {
+  for (std::size_t p = 0; p < aggregates.size(); ++p) {
+    for (std::size_t r = 0; r <= p; ++r) add_block(K, aggregates[p], aggregates[r], weights[p] * weights[r], h);
+  }
+}
+
+}  // namespace
+
+CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing) {
+  const std::size_t n = blocks.constraint_start.size() - 1;
+  CoarseSpace space;
+  const std::vector<int> cell = aggregate_cells(blocks, std::max(1, aggregates), space.aggregates);
+  std::vector<Weights> weights(n), smoothed(n);
+  for (std::size_t i = 0; i < n; ++i) weights[i] = {{cell[i], 1.0}};
+  for (int pass = 0; pass < smoothing; ++pass) {
+    for (std::size_t i = 0; i < n; ++i) {
+      Weights& w = smoothed[i];
+      w.clear();
+      for (const auto& [a, value] : weights[i]) w.emplace_back(a, (1.0 - kSmoothingWeight) * value);
+      const std::span<const int> around = neighbours(blocks, i);
+      const double share = around.empty() ? 0.0 : kSmoothingWeight / static_cast<double>(around.size());
+      if (around.empty()) w[0].second += kSmoothingWeight;
+      for (const int j : around) {
+        for (const auto& [a, value] : weights[static_cast<std::size_t>(j)]) w.emplace_back(a, share * value);
+      }
+      merge_repeats(w);
+    }
+    weights.swap(smoothed);
+  }
+  space.weight_start.assign(1, 0);
+  for (const Weights& w : weights) {
+    for (const auto& [a, value] : w) {
+      space.aggregate.push_back(a);
+      space.weight.push_back(value);
+    }
+    space.weight_start.push_back(static_cast<int>(space.aggregate.size()));
+  }
+  return space;
+}
+
+namespace {
+
+// Vertex i's weights: its aggregates (ascending) and their weights.
+std::pair<std::span<const int>, std::span<const double>> weights_of(const CoarseSpace& space, std::size_t i) {
+  const auto begin = static_cast<std::size_t>(space.weight_start[i]);
+  const auto count = static_cast<std::size_t>(space.weight_start[i + 1]) - begin;
+  return {std::span<const int>(space.aggregate).subspan(begin, count),
+          std::span<const double>(space.weight).subspan(begin, count)};
+}
+
+// w_i − w_j of a constraint's two ends, merged over the two ascending lists, without its zero entries (where both ends
+// have the same weight).
+void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, CoarseScratch& scratch) {
+  const auto [ai, wi] = weights_of(space, i);
+  const auto [aj, wj] = weights_of(space, j);
+  scratch.difference_aggregate.clear();
+  scratch.difference_weight.clear();
+  std::size_t p = 0, r = 0;
+  while (p < ai.size() || r < aj.size()) {
+    int a = 0;
+    double value = 0.0;
+    if (r == aj.size() || (p < ai.size() && ai[p] < aj[r])) {
+      a = ai[p];
+      value = wi[p++];
+    } else if (p == ai.size() || aj[r] < ai[p]) {
+      a = aj[r];
+      value = -wj[r++];
+    } else {
+      a = ai[p];
+      value = wi[p++] - wj[r++];
+    }
+    if (value != 0.0) {
+      scratch.difference_aggregate.push_back(a);
+      scratch.difference_weight.push_back(value);
+    }
+  }
+}
+
+// ∇E per vertex at x into scratch.gradient (inertia, floor, colliders, springs and dampers, gas); with `matrix`, also
+// Pᵀ H P's lower triangle into scratch.matrix. Returns V(x) (0 without gas).
+double gradient_and_matrix(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                           bool matrix, CoarseScratch& scratch) {
+  const std::size_t n = x.size();
+  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
+  Eigen::MatrixXd& K = scratch.matrix;
+  if (matrix) K.setZero(unknowns, unknowns);
+  std::vector<Vec3>& gradient = scratch.gradient;
+  gradient.resize(n);
+  // Vertices: inertia, floor and colliders.
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m = s.mass_kg[i];
+    gradient[i] = (m * s.inverse_h2) * (x[i] - s.target[i]);
+    Block3 hessian;
+    hessian.add_diagonal(m * s.inverse_h2);
+    if (s.floor && x[i].y() < s.floor->height_m) {
+      add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient[i], hessian);
+    }
+    for (const SmoothCollider& collider : s.colliders) {
+      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient[i], hessian);
+    }
+    if (matrix) {
+      const auto [aggregates, weights] = weights_of(space, i);
+      add_outer_blocks(K, aggregates, weights, hessian);
+    }
+  }
+  // Constraints: H_e = T I + (k + c/ĥ − T) n̂n̂ᵀ on (w_i − w_j) ⊗ (w_i − w_j).
+  const DistanceConstraints& constraints = body.constraints;
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const auto [i, j] = constraints.ends[e];
+    const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+    const Vec3 d = x[vi] - x[vj];
+    const double length = d.norm();
+    if (length == 0.0) continue;
+    const Vec3 axis = d / length;
+    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] / s.h_hat;
+    const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis);
+    const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
+    gradient[vi] += f;
+    gradient[vj] -= f;
+    if (!matrix) continue;
+    weight_difference(space, vi, vj, scratch);
+    if (scratch.difference_aggregate.empty()) continue;
+    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] / length);
+    Block3 hessian;
+    hessian.add_diagonal(transverse);
+    hessian.add_outer(k + c_over_h - transverse, axis);
+    add_outer_blocks(K, scratch.difference_aggregate, scratch.difference_weight, hessian);
+  }
+  // Gas: ∇_i E = −P ∂V/∂x_i, and the rank-one part of its curvature, nRT/V² (Pᵀ∇V)(Pᵀ∇V)ᵀ.
+  if (!s.gas) return 0.0;
+  const double volume = volume_and_area_sums(body.topology.faces, x, scratch.area_sums);
+  const double pressure = s.gas->pressure(volume);
+  Eigen::VectorXd& u = scratch.volume_gradient;
+  if (matrix) u.setZero(unknowns);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 g = scratch.area_sums[i] / 6.0;
+    gradient[i] -= pressure * g;
+    if (!matrix) continue;
+    const auto [aggregates, weights] = weights_of(space, i);
+    for (std::size_t p = 0; p < aggregates.size(); ++p) u.segment<3>(3 * aggregates[p]) += weights[p] * g;
+  }
+  if (matrix) K.selfadjointView<Eigen::Lower>().rankUpdate(u, s.gas->stiffness(volume));
+  return volume;
+}
+
+}  // namespace
+
+bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<Vec3> x,
+                       bool refresh_matrix, CoarseScratch& scratch) {
+  const std::size_t n = x.size();
+  const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
+  const double volume = gradient_and_matrix(body, s, space, x, matrix, scratch);
+  if (matrix) {
+    scratch.factor.compute(scratch.matrix);
+    scratch.factored = scratch.factor.info() == Eigen::Success;
+  }
+  if (!scratch.factored) return false;
+  Eigen::VectorXd& q = scratch.solution;  // −Pᵀ ∇E, then q
+  q.setZero(3 * space.aggregates);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [aggregates, weights] = weights_of(space, i);
+    for (std::size_t p = 0; p < aggregates.size(); ++p) {
+      q.segment<3>(3 * aggregates[p]) -= weights[p] * scratch.gradient[i];
+    }
+  }
+  scratch.rhs = q;
+  scratch.factor.solveInPlace(q);
+  const double descent = -scratch.rhs.dot(q);  // ∇E·P q = −(−Pᵀ∇E)·q < 0
+  if (!(descent < 0.0)) return false;
+  std::vector<Vec3>& motion = scratch.search.motion;
+  motion.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [aggregates, weights] = weights_of(space, i);
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t p = 0; p < aggregates.size(); ++p) sum += weights[p] * q.segment<3>(3 * aggregates[p]);
+    motion[i] = sum;
+  }
+  return search_along_motion(body, s, x, volume, descent, scratch.search);
+}
+
+}  // namespace sim

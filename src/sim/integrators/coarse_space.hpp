@@ -1,0 +1,62 @@
+// A coarse level for vbd's sweeps (sim/integrators/vertex_block_descent.hpp): smooth displacement fields spanned by a
+// few hundred aggregates of vertices, and one Galerkin Newton step of the body's step energy restricted to them.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "sim/integrators/motion_search.hpp"
+#include "sim/integrators/vertex_blocks.hpp"
+#include "sim/integrators/vertex_energy.hpp"
+#include "sim/model/body.hpp"
+
+namespace sim {
+
+// The coarse space: δx_i = Σ_a w_ia t_a, one translation t_a per aggregate a (3 unknowns each), with weights that are
+// a partition of unity (Σ_a w_ia = 1, so it holds every translation of the body) and smooth over the mesh.
+// Built by smoothed aggregation (Vaněk, Mandel & Brezina, Computing 56, 1996): the aggregates are the Voronoi cells
+// of seeds spread by farthest-point sampling in hops over the constraint graph; each vertex starts with weight 1 on its
+// own cell, and each smoothing pass replaces a vertex's weights by (1 − ω) its own + ω the mean of its neighbours'
+// (ω = 2/3), which keeps the partition of unity and turns the cells' steps into ramps a few rings wide.
+struct CoarseSpace {
+  int aggregates = 0;
+  // Vertex i's weights are entries [weight_start[i], weight_start[i + 1]), aggregates ascending.
+  std::vector<int> weight_start;
+  std::vector<int> aggregate;
+  std::vector<double> weight;
+};
+
+// Smoothing passes: ramps about this many rings wide between the cells. Measured on one step at icosphere:5
+// (docs/notes/2026-12-05-vbd-coarse.md): after 16 sweeps with 256 cells the residual is 0.090 of its start with 0
+// passes, 0.047 with 4 and 0.039 with 8, whose assembly costs about twice as much.
+inline constexpr int kCoarseSmoothingPasses = 4;
+
+// The coarse space of a body laid out as `blocks` with `aggregates` cells (at most its vertex count) and `smoothing`
+// passes.
+CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing = kCoarseSmoothingPasses);
+
+// The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
+struct CoarseScratch {
+  std::vector<Vec3> gradient;             // ∇_i E per vertex [N]
+  std::vector<Vec3> area_sums;            // the gas's per-vertex sums 6 ∂V/∂x_i [m²]
+  std::vector<int> difference_aggregate;  // one constraint's w_i − w_j, sparse
+  std::vector<double> difference_weight;
+  Eigen::MatrixXd matrix;                            // Pᵀ H P [N/m], its lower triangle
+  Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> factor;  // of the matrix as last assembled
+  bool factored = false;
+  Eigen::VectorXd rhs, solution, volume_gradient;
+  MotionScratch search;  // P q per vertex [m], and the line search's buffers
+};
+
+// One coarse Newton step with its line search on body `body`'s positions x: (Pᵀ H P) q = −Pᵀ ∇E with the sweeps'
+// clamped, lagged H (positive definite: its inertia part alone is) and the gas's rank-one term, then a search on E's
+// change along P q. Pᵀ H P is assembled and factored at x where `refresh_matrix`, else the last one is reused (any
+// positive definite matrix gives a descent direction; the line search keeps the step). Returns whether it moved (it
+// never raises E).
+bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<Vec3> x,
+                       bool refresh_matrix, CoarseScratch& scratch);
+
+}  // namespace sim

@@ -1,0 +1,28 @@
+// The line search of vbd's coarse corrections (sim/integrators/affine_correction.hpp, coarse_space.hpp): the step
+// energy's change along a motion of a whole body, and the backtracking on it.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "sim/integrators/vertex_energy.hpp"
+#include "sim/model/body.hpp"
+
+namespace sim {
+
+// The buffers one search fills, kept between calls so that a step allocates nothing once sizes settle.
+struct MotionScratch {
+  std::vector<Vec3> motion;                // the motion per vertex, filled by the caller [m]
+  std::vector<Vec3> trial;                 // x + α motion, for the gas's volume [m]
+  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
+  std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
+};
+
+// Moves body `body`'s positions x by α scratch.motion with the largest α of 1, ½, ¼, … (down to 1e-3) whose change of
+// E is a sufficient decrease (Armijo, kArmijo α slope); `slope` = ∇E·motion < 0 [J], `volume` = V(x) [m³] (unused
+// without gas). The dampers' directions and the floor's and colliders' weights are lagged at x, as the vertices' own
+// line searches lag them. Returns whether it moved.
+bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
+                         MotionScratch& scratch);
+
+}  // namespace sim
