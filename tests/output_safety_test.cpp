@@ -173,6 +173,44 @@ TEST(OutputSafety, AFolderLockKeepsOtherRunsOut) {
   EXPECT_FALSE(refused("run B", FolderLock::Sharing::Exclusive));
 }
 
+// The chunk that wrote its pid into the lock file may end while other chunks of its run go on holding the folder:
+// another run is then refused at once, as when the writer still runs (it waited 5 s for a holder that had gone).
+TEST(OutputSafety, AnotherRunIsRefusedAtOnceWhileChunksWhoseFirstEndedHoldTheFolder) {
+  using output::FolderLock;
+  const fs::path dir = scratch_dir("folder_lock_first_chunk_ended");
+  int locked[2], joined[2];
+  ASSERT_EQ(::pipe(locked), 0);
+  ASSERT_EQ(::pipe(joined), 0);
+  const pid_t first = ::fork();
+  if (first == 0) {
+    const FolderLock chunk(dir, "run A", FolderLock::Sharing::SameRunOnly, "the first chunk");
+    char byte = 1;
+    if (::write(locked[1], &byte, 1) != 1 || ::read(joined[0], &byte, 1) != 1) ::_exit(1);
+    ::_exit(0);  // ends holding it: the kernel lets go of its lock, the file keeps naming it
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(locked[0], &byte, 1), 1);
+  const FolderLock second(dir, "run A", FolderLock::Sharing::SameRunOnly, "the second chunk");
+  ASSERT_EQ(::write(joined[1], &byte, 1), 1);
+  int status = -1;
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  for (const auto& [identity, sharing] :
+       {std::pair{"run B", FolderLock::Sharing::SameRunOnly}, std::pair{"run A", FolderLock::Sharing::Exclusive}}) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const FolderLock other(dir, identity, sharing, "another run");
+      ADD_FAILURE() << identity << " took the folder that a chunk of run A holds";
+    } catch (const softbody::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(dir.string() + ": another softbody run is writing into this folder"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << identity;
+  }
+  for (const int fd : {locked[0], locked[1], joined[0], joined[1]}) ::close(fd);
+}
+
 struct Interrupted {
   int exit_status = -1;
   std::string errors;
