@@ -575,6 +575,55 @@ TEST(HostileMesh, ReferencesMustBeRegularFilesInTheMeshFilesFolder) {
   }
 }
 
+// A symbolic link in the folder may lead anywhere: a reference is resolved (every link on its way followed) and
+// must still be inside the folder of the file that names it, or it is refused with its name. A glTF uri is a URI:
+// percent-decoded before it is checked (an encoded ".." cannot leave the folder) and opened by its decoded name.
+TEST(HostileMesh, ReferencesMayNotLeaveTheFolderThroughLinksOrPercentEncoding) {
+  const fs::path dir = scratch_dir("hostile_links");
+  const fs::path outside = scratch_dir("hostile_links_outside");
+  write_text(outside / "cube.bin", tetrahedron_bin());
+  write_text(outside / "materials.mtl", "newmtl a\n");
+  write_text(dir / "cube.bin", tetrahedron_bin());
+  fs::create_directories(dir / "sub");
+  write_text(dir / "sub" / "cube.bin", tetrahedron_bin());
+  fs::create_symlink(outside / "cube.bin", dir / "link.bin");
+  fs::create_symlink(outside, dir / "linked_folder");
+  fs::create_symlink(outside / "materials.mtl", dir / "link.mtl");
+  fs::create_symlink("cube.bin", dir / "inside.bin");  // stays in the folder: fine
+  const std::string expected = " (expected the name of a regular file in the mesh file's folder or below it)";
+  const std::string leads_out = ", a symbolic link that leads out of the mesh file's folder (to ";
+  for (const std::string uri : {"link.bin", "linked_folder/cube.bin"}) {
+    const std::string error = timed_load_error(write_text(dir / "linked.gltf", tetrahedron_gltf(uri)));
+    EXPECT_NE(error.find("is a glTF file whose buffers.0.uri \"" + uri + "\" names " + (dir / uri).string() +
+                         leads_out + (fs::canonical(outside) / "cube.bin").string() + ")" + expected),
+              std::string::npos)
+        << error;
+  }
+  const std::string error =
+      timed_load_error(write_text(dir / "linked.obj", std::string("mtllib link.mtl\n") + kTetrahedronObj));
+  EXPECT_NE(
+      error.find("is an OBJ file whose mtllib on line 1 \"link.mtl\" names " + (dir / "link.mtl").string() + leads_out),
+      std::string::npos)
+      << error;
+  EXPECT_EQ(load_error(write_text(dir / "inside.gltf", tetrahedron_gltf("inside.bin"))), "");
+  // Percent-encoded names load as their decoded names; an encoded ".." or '/' is checked as one.
+  for (const std::string uri : {"cube%2Ebin", "cube%2ebin", "sub%2Fcube.bin"})
+    EXPECT_EQ(load_error(write_text(dir / "encoded.gltf", tetrahedron_gltf(uri))), "") << uri;
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"..%2Fhostile_links_outside%2Fcube.bin",
+       " (decoded: \"../hostile_links_outside/cube.bin\") leaves the mesh file's folder" + expected},
+      {"%2E%2E/x.bin", " (decoded: \"../x.bin\") leaves the mesh file's folder" + expected},
+      {"%2Fetc%2Fpasswd", " (decoded: \"/etc/passwd\") is an absolute path" + expected},
+      {"link%2Ebin", " (decoded: \"link.bin\") names " + (dir / "link.bin").string() + leads_out},
+      {"cube%2", " has a '%' at character 5 that is not a percent-encoded byte"},
+      {"cube%zz.bin", " has a '%' at character 5 that is not a percent-encoded byte"},
+      {"cube.bin%00.txt", " has a '%' at character 9 that is not a percent-encoded byte"}};
+  for (const auto& [uri, words] : refused) {
+    const std::string message = timed_load_error(write_text(dir / "encoded.gltf", tetrahedron_gltf(uri)));
+    EXPECT_NE(message.find("is a glTF file whose buffers.0.uri \"" + uri + "\"" + words), std::string::npos) << message;
+  }
+}
+
 // A file name with a line break (or another control character) still gives a message of one line.
 TEST(HostileMesh, ControlCharactersInFileNamesAreEscaped) {
   const fs::path dir = scratch_dir("hostile_names");

@@ -119,7 +119,7 @@ void check_buffer_files(const json& document, const std::filesystem::path& folde
     if (!uri.is_string()) throw InputError(where + " is not a string");
     const std::string& name = uri.get_ref<const std::string&>();
     if (name.rfind("data:", 0) == 0) continue;
-    check_referenced_file(name, folder, where);
+    check_referenced_uri(name, folder, where);
   }
 }
 

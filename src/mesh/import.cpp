@@ -25,6 +25,7 @@
 #include "mesh/fbx_check.hpp"
 #include "mesh/file_references.hpp"
 #include "mesh/gltf_check.hpp"
+#include "mesh/gltf_uri_io.hpp"
 #include "mesh/mesh_formats.hpp"
 #include "mesh/off_faces.hpp"
 #include "mesh/ply_header.hpp"
@@ -203,6 +204,9 @@ AssimpRead read_with_assimp(const std::filesystem::path& file, std::string bytes
   // kept per corner (assimp splits a vertex on a UV seam into one per side, and the weld joins them again).
   state->importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   state->bytes = std::move(bytes_for_assimp);
+  // A glTF buffer's uri is opened by its percent-decoded name, the one check_gltf_document checked.
+  const std::string extension = lower_case_extension(file);
+  if (extension == ".gltf" || extension == ".glb") state->importer.SetIOHandler(new GltfUriIoSystem(file.string()));
   std::future<const aiScene*> done = state->scene.get_future();
   std::thread reader([state, path = file.string()] {
     // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps
