@@ -106,6 +106,11 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_glb: an indexed line loop whose indices lie far past its 36 vertices: assimp 5.2's glTF 2
         // reader reads them unchecked (SEGV; the same primitive as triangles is refused by assimp itself).
         HostileMesh{"glb_indexed_line_loop_out_of_range.glb", "meshes.0.primitives.0 is an indexed line loop (mode 2)"},
+        // found by fuzz_mesh_mtl after 8 executions: an OBJ's material library with a texture statement (map_Bump)
+        // before its first newmtl: assimp 5.2 sets the texture of a null material (SIGSEGV, also without sanitizers).
+        HostileMesh{"obj_mtl_texture_before_newmtl.obj",
+                    "obj_mtl_texture_before_newmtl.mtl, which has a statement \"map_Bump\" on line 2 before its first "
+                    "material (expected comments only before the first 'newmtl NAME'"},
         // found by fuzz_mesh_fbx: an ASCII FBX with the connection C: "OO", 1000003, 1000003 (an object its own
         // parent): assimp 5.2's FBX converter recursed until the stack overflowed (SIGSEGV without sanitizers too).
         HostileMesh{"fbx_object_connected_to_itself.fbx",
