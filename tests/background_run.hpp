@@ -34,6 +34,8 @@ class BackgroundRun {
   double seconds_to_exit() const;
   // What it has written to standard error so far.
   std::string errors() const;
+  // Its process id (to look at it under /proc).
+  pid_t pid() const { return pid_; }
 
  private:
   bool exited();

@@ -106,6 +106,16 @@ INSTANTIATE_TEST_SUITE_P(
         // found by fuzz_mesh_glb: an indexed line loop whose indices lie far past its 36 vertices: assimp 5.2's glTF 2
         // reader reads them unchecked (SEGV; the same primitive as triangles is refused by assimp itself).
         HostileMesh{"glb_indexed_line_loop_out_of_range.glb", "meshes.0.primitives.0 is an indexed line loop (mode 2)"},
+        // found by fuzz_mesh_gltf1 after 11,203 executions: a glTF 1.0 cube whose index buffer view lost its
+        // byteLength: assimp 5.2's glTF 1 reader read its accessor past the view's end (ai_assert abort). glTF 1.0 is
+        // refused, and assimp's glTF 1 reader switched off.
+        HostileMesh{"gltf1_accessor_past_its_buffer_view.gltf",
+                    "is a glTF 1.0 file (asset.version \"1.0\"), which softbody does not read (expected glTF 2.0"},
+        // found by fuzz_mesh_mtl after 8 executions: an OBJ's material library with a texture statement (map_Bump)
+        // before its first newmtl: assimp 5.2 sets the texture of a null material (SIGSEGV, also without sanitizers).
+        HostileMesh{"obj_mtl_texture_before_newmtl.obj",
+                    "obj_mtl_texture_before_newmtl.mtl, which has a statement \"map_Bump\" on line 2 before its first "
+                    "material (expected comments only before the first 'newmtl NAME'"},
         // found by fuzz_mesh_fbx: an ASCII FBX with the connection C: "OO", 1000003, 1000003 (an object its own
         // parent): assimp 5.2's FBX converter recursed until the stack overflowed (SIGSEGV without sanitizers too).
         HostileMesh{"fbx_object_connected_to_itself.fbx",
@@ -230,8 +240,12 @@ TEST(HostileMesh, GltfReferencesMustResolve) {
             std::string::npos);
   EXPECT_NE(refusal("[1, 2]").find("is not an object"), std::string::npos);
   EXPECT_NE(refusal("{\"asset\": ").find("does not parse"), std::string::npos);
-  // glTF 1.0 keeps its keyed objects: not this check's business (assimp's glTF 1 reader takes it).
-  EXPECT_NO_THROW(mesh::check_gltf_document(R"({"asset":{"version":"1.0"},"accessors":{"a":{}}})", "."));
+  // glTF 1.0 is not read (assimp's glTF 1 reader trusts its sizes): its version as a string or a number.
+  for (const char* version : {R"("1.0")", "1", "1.5"}) {
+    EXPECT_THROW(mesh::check_gltf_document(R"({"asset":{"version":)" + std::string(version) + "}}", "."),
+                 softbody::InputError)
+        << version;
+  }
 }
 
 // An ASCII FBX of nothing but properties and connections (what the check reads).
@@ -572,6 +586,55 @@ TEST(HostileMesh, ReferencesMustBeRegularFilesInTheMeshFilesFolder) {
         timed_load_error(write_text(dir / "refused.obj", std::string(kTetrahedronObj) + "mtllib " + library + "\r\n"));
     EXPECT_NE(error.find("is an OBJ file whose mtllib on line 9 \"" + library + "\""), std::string::npos) << error;
     EXPECT_NE(error.find(words), std::string::npos) << error;
+  }
+}
+
+// A symbolic link in the folder may lead anywhere: a reference is resolved (every link on its way followed) and
+// must still be inside the folder of the file that names it, or it is refused with its name. A glTF uri is a URI:
+// percent-decoded before it is checked (an encoded ".." cannot leave the folder) and opened by its decoded name.
+TEST(HostileMesh, ReferencesMayNotLeaveTheFolderThroughLinksOrPercentEncoding) {
+  const fs::path dir = scratch_dir("hostile_links");
+  const fs::path outside = scratch_dir("hostile_links_outside");
+  write_text(outside / "cube.bin", tetrahedron_bin());
+  write_text(outside / "materials.mtl", "newmtl a\n");
+  write_text(dir / "cube.bin", tetrahedron_bin());
+  fs::create_directories(dir / "sub");
+  write_text(dir / "sub" / "cube.bin", tetrahedron_bin());
+  fs::create_symlink(outside / "cube.bin", dir / "link.bin");
+  fs::create_symlink(outside, dir / "linked_folder");
+  fs::create_symlink(outside / "materials.mtl", dir / "link.mtl");
+  fs::create_symlink("cube.bin", dir / "inside.bin");  // stays in the folder: fine
+  const std::string expected = " (expected the name of a regular file in the mesh file's folder or below it)";
+  const std::string leads_out = ", a symbolic link that leads out of the mesh file's folder (to ";
+  for (const std::string uri : {"link.bin", "linked_folder/cube.bin"}) {
+    const std::string error = timed_load_error(write_text(dir / "linked.gltf", tetrahedron_gltf(uri)));
+    EXPECT_NE(error.find("is a glTF file whose buffers.0.uri \"" + uri + "\" names " + (dir / uri).string() +
+                         leads_out + (fs::canonical(outside) / "cube.bin").string() + ")" + expected),
+              std::string::npos)
+        << error;
+  }
+  const std::string error =
+      timed_load_error(write_text(dir / "linked.obj", std::string("mtllib link.mtl\n") + kTetrahedronObj));
+  EXPECT_NE(
+      error.find("is an OBJ file whose mtllib on line 1 \"link.mtl\" names " + (dir / "link.mtl").string() + leads_out),
+      std::string::npos)
+      << error;
+  EXPECT_EQ(load_error(write_text(dir / "inside.gltf", tetrahedron_gltf("inside.bin"))), "");
+  // Percent-encoded names load as their decoded names; an encoded ".." or '/' is checked as one.
+  for (const std::string uri : {"cube%2Ebin", "cube%2ebin", "sub%2Fcube.bin"})
+    EXPECT_EQ(load_error(write_text(dir / "encoded.gltf", tetrahedron_gltf(uri))), "") << uri;
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"..%2Fhostile_links_outside%2Fcube.bin",
+       " (decoded: \"../hostile_links_outside/cube.bin\") leaves the mesh file's folder" + expected},
+      {"%2E%2E/x.bin", " (decoded: \"../x.bin\") leaves the mesh file's folder" + expected},
+      {"%2Fetc%2Fpasswd", " (decoded: \"/etc/passwd\") is an absolute path" + expected},
+      {"link%2Ebin", " (decoded: \"link.bin\") names " + (dir / "link.bin").string() + leads_out},
+      {"cube%2", " has a '%' at character 5 that is not a percent-encoded byte"},
+      {"cube%zz.bin", " has a '%' at character 5 that is not a percent-encoded byte"},
+      {"cube.bin%00.txt", " has a '%' at character 9 that is not a percent-encoded byte"}};
+  for (const auto& [uri, words] : refused) {
+    const std::string message = timed_load_error(write_text(dir / "encoded.gltf", tetrahedron_gltf(uri)));
+    EXPECT_NE(message.find("is a glTF file whose buffers.0.uri \"" + uri + "\"" + words), std::string::npos) << message;
   }
 }
 

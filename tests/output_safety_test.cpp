@@ -3,6 +3,7 @@
 // frame (the CSV's rows included) with exit 128 + the signal.
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -69,6 +70,74 @@ TEST(OutputSafety, CsvDashGoesToStandardOutput) {
   EXPECT_EQ(result.output.rfind(std::string(output::kCsvHeader) + "\n", 0), 0u) << result.output.substr(0, 200);
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1 + 4) << "header and frames 0..3";
   EXPECT_FALSE(fs::exists(fs::path(SOFTBODY_SOURCE_DIR) / "-"));
+}
+
+// Whether process `pid`'s main thread is inside open() or openat() (a FIFO's open waits there for a reader).
+bool opening_a_file(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/syscall");
+  long number = -1;
+  in >> number;
+#ifdef SYS_open
+  if (number == SYS_open) return true;
+#endif
+  return number == SYS_openat;
+}
+
+// A CSV FIFO that no process reads: SIGTERM while simulate waits to open it, or during the run (after which it
+// does not wait at all), ends the run with the stop request's status, 143, naming the FIFO, which stays a FIFO.
+TEST(OutputSafety, SigtermWhileACsvFifoHasNoReaderExits143) {
+  const fs::path dir = scratch_dir("csv_fifo_sigterm");
+  const fs::path fifo = dir / "rows.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string words = "interrupted: SIGTERM: stopped while " + fifo.string() +
+                            " (a FIFO or device) waited for its reader; it was not written whole";
+  {
+    testing_support::BackgroundRun run(
+        {"simulate", "scenes/bounce.json", "--set", "duration=0.1", "--csv", fifo.string()}, dir);
+    // Still opening 200 ms later: the FIFO, not a file read during setup.
+    const auto waiting_for_a_reader = [&] {
+      if (!opening_a_file(run.pid())) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      return opening_a_file(run.pid());
+    };
+    ASSERT_TRUE(run.wait_until(waiting_for_a_reader, std::chrono::seconds(60))) << run.errors();
+    run.signal(SIGTERM);
+    EXPECT_EQ(run.wait_for_exit(std::chrono::seconds(20)), std::optional<int>(143)) << run.errors();
+    EXPECT_NE(run.errors().find(words), std::string::npos) << run.errors();
+  }
+  {
+    testing_support::BackgroundRun run(
+        {"simulate", "scenes/bounce.json", "--set", "duration=10000", "--csv", fifo.string()}, dir);
+    std::this_thread::sleep_for(std::chrono::milliseconds(3000));
+    run.signal(SIGTERM);
+    EXPECT_EQ(run.wait_for_exit(std::chrono::seconds(20)), std::optional<int>(143)) << run.errors();
+    EXPECT_NE(run.errors().find(words), std::string::npos) << run.errors();
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+// `--csv - | head -c 100`: like other Unix tools, simulate ends by SIGPIPE when its reader has gone, silently
+// (a shell reports 141); where SIGPIPE is ignored, the write fails with one line and exit status 1.
+TEST(OutputSafety, CsvToAPipeWhoseReaderLeftEndsLikeAUnixTool) {
+  const fs::path dir = scratch_dir("csv_sigpipe");
+  const std::string simulate = "cd " SOFTBODY_SOURCE_DIR " && " SOFTBODY_EXE
+                               " simulate scenes/bounce.json --set fps=1000 --set duration=1 --set "
+                               "bodies.0.mesh=icosphere:1 --csv - 2>" +
+                               (dir / "errors.txt").string() + " | head -c 100 >/dev/null; echo ${PIPESTATUS[0]}";
+  struct sigaction before {};
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigemptyset(&action.sa_mask);
+  ASSERT_EQ(::sigaction(SIGPIPE, &action, &before), 0);  // what a shell gives the programs it starts
+  const auto killed = run_shell("bash -c '" + simulate + "'");
+  EXPECT_EQ(killed.output, "141\n");
+  EXPECT_EQ(read_text(dir / "errors.txt"), "");
+  action.sa_handler = SIG_IGN;  // inherited by the shell and softbody
+  ASSERT_EQ(::sigaction(SIGPIPE, &action, nullptr), 0);
+  const auto failed = run_shell("bash -c '" + simulate + "'");
+  ASSERT_EQ(::sigaction(SIGPIPE, &before, nullptr), 0);
+  EXPECT_EQ(failed.output, "1\n");
+  EXPECT_EQ(read_text(dir / "errors.txt"), "error: standard output: write failed (Broken pipe)\n");
 }
 
 TEST(OutputSafety, StaleTemporariesOfKilledRunsAreRemovedByTheNextRun) {
@@ -171,6 +240,44 @@ TEST(OutputSafety, AFolderLockKeepsOtherRunsOut) {
   }
   EXPECT_FALSE(fs::exists(dir / output::kFolderLockName));
   EXPECT_FALSE(refused("run B", FolderLock::Sharing::Exclusive));
+}
+
+// The chunk that wrote its pid into the lock file may end while other chunks of its run go on holding the folder:
+// another run is then refused at once, as when the writer still runs (it waited 5 s for a holder that had gone).
+TEST(OutputSafety, AnotherRunIsRefusedAtOnceWhileChunksWhoseFirstEndedHoldTheFolder) {
+  using output::FolderLock;
+  const fs::path dir = scratch_dir("folder_lock_first_chunk_ended");
+  int locked[2], joined[2];
+  ASSERT_EQ(::pipe(locked), 0);
+  ASSERT_EQ(::pipe(joined), 0);
+  const pid_t first = ::fork();
+  if (first == 0) {
+    const FolderLock chunk(dir, "run A", FolderLock::Sharing::SameRunOnly, "the first chunk");
+    char byte = 1;
+    if (::write(locked[1], &byte, 1) != 1 || ::read(joined[0], &byte, 1) != 1) ::_exit(1);
+    ::_exit(0);  // ends holding it: the kernel lets go of its lock, the file keeps naming it
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(locked[0], &byte, 1), 1);
+  const FolderLock second(dir, "run A", FolderLock::Sharing::SameRunOnly, "the second chunk");
+  ASSERT_EQ(::write(joined[1], &byte, 1), 1);
+  int status = -1;
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  for (const auto& [identity, sharing] :
+       {std::pair{"run B", FolderLock::Sharing::SameRunOnly}, std::pair{"run A", FolderLock::Sharing::Exclusive}}) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const FolderLock other(dir, identity, sharing, "another run");
+      ADD_FAILURE() << identity << " took the folder that a chunk of run A holds";
+    } catch (const softbody::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(dir.string() + ": another softbody run is writing into this folder"),
+                std::string::npos)
+          << e.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << identity;
+  }
+  for (const int fd : {locked[0], locked[1], joined[0], joined[1]}) ::close(fd);
 }
 
 struct Interrupted {

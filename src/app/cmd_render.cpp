@@ -25,6 +25,7 @@
 #include "output/motion_track.hpp"
 #include "output/png_codec.hpp"
 #include "output/run_manifest.hpp"
+#include "output/video_record.hpp"
 #include "render/gl_context.hpp"
 #include "render/render_sink.hpp"
 #include "render/renderer.hpp"
@@ -107,8 +108,10 @@ bool decodes_at_size(const std::filesystem::path& path, int width, int height) {
 }
 
 // A whole new run: the earlier run's frames (whatever their numbers), figure and video go first, so that a run
-// that fails (diverges, is interrupted) leaves only its own frames, never a mix of two runs. A resumed run
-// keeps its frames (`keep_frames`): its figure and video are made at the end. Says what went.
+// that fails (diverges, is interrupted) leaves only its own frames, never a mix of two runs. The earlier video
+// is this run's --video file, and the one the earlier run recorded in the folder (output/video_record.hpp)
+// whatever its name. A resumed run keeps its frames (`keep_frames`): its figure and video are made at the end.
+// Says what went.
 void remove_earlier_outputs(const render::RenderOutputs& outputs, bool keep_frames = false) {
   std::vector<std::string> removed;
   const int frames =
@@ -116,6 +119,7 @@ void remove_earlier_outputs(const render::RenderOutputs& outputs, bool keep_fram
   if (frames > 0) removed.push_back(std::to_string(frames) + " frame files");
   std::error_code ec;
   if (std::filesystem::remove(outputs.dir / "figure.png", ec)) removed.emplace_back("figure.png");
+  if (const std::string video = output::remove_recorded_video(outputs.dir); !video.empty()) removed.push_back(video);
   if (outputs.video && !output::is_written_through(*outputs.video) && std::filesystem::remove(*outputs.video, ec))
     removed.push_back(outputs.video->string());
   std::string words;
@@ -230,6 +234,8 @@ int run_render(const RenderOptions& options) {
   }
   progress.clear();
   if (resumable) resumable->remove_store();
+  // The next whole run into the folder removes this video, whatever video it makes itself.
+  if (outputs.video && chosen.everything()) output::record_video(outputs.dir, *outputs.video);
   print_summary(scene, renderer, stats, sink.timings(), backend_words(*context, backend));
   print_written(outputs, sink, stats.frames);
   return 0;

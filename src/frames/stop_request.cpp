@@ -68,6 +68,11 @@ Interrupted Interrupted::during_setup(int signal, const std::string& phase_done)
                      signal_name(signal) + ": stopped during setup, after " + phase_done + "; nothing was written");
 }
 
+Interrupted Interrupted::while_writing(int signal, const std::string& output) {
+  return Interrupted(signal, signal_name(signal) + ": stopped while " + output +
+                                 " (a FIFO or device) waited for its reader; it was not written whole");
+}
+
 void throw_if_stop_requested(int complete_frames) {
   if (const int signal = stop_signal(); signal != 0) throw Interrupted(signal, complete_frames);
 }

@@ -25,6 +25,8 @@ class Interrupted : public std::runtime_error {
   Interrupted(int signal, int complete_frames);
   // Setup stopped after the phase `phase_done` ("repairing meshes/bunny.obj"): no frame, no output.
   static Interrupted during_setup(int signal, const std::string& phase_done);
+  // A write through a FIFO or device (`output`) that waited for its reader was stopped: not written whole.
+  static Interrupted while_writing(int signal, const std::string& output);
   int signal() const { return signal_; }
   int complete_frames() const { return complete_frames_; }
 

@@ -107,6 +107,22 @@ void check_json_nesting(std::string_view json_text) {
   }
 }
 
+// glTF 1.0 (2015, superseded by 2.0 in 2017) is not read: assimp 5.2's glTF 1 reader trusts the sizes a document
+// gives (found by fuzz_mesh_gltf1 after 11,203 executions: an accessor past its buffer view's end aborted it on an
+// ai_assert), and its reader is switched off (keep_only_accepted_readers). Its version may be a string or, for that
+// reader, a number.
+void refuse_gltf_1(const json& document) {
+  const auto asset = document.find("asset");
+  if (asset == document.end() || !asset->is_object() || !asset->contains("version")) return;
+  const json& version = (*asset)["version"];
+  const bool one = version.is_string() ? version.get_ref<const std::string&>().rfind('1', 0) == 0
+                                       : version.is_number() && version.get<double>() >= 1 && version.get<double>() < 2;
+  if (one) {
+    throw InputError("is a glTF 1.0 file (asset.version " + version.dump().substr(0, 40) +
+                     "), which softbody does not read (expected glTF 2.0: export the mesh again as glTF 2.0)");
+  }
+}
+
 // Every buffer's uri (glTF 2: an array; glTF 1: an object of buffers) is embedded data ("data:") or a file in
 // the document's folder; a buffer without a uri is a GLB file's binary chunk.
 void check_buffer_files(const json& document, const std::filesystem::path& folder) {
@@ -119,7 +135,7 @@ void check_buffer_files(const json& document, const std::filesystem::path& folde
     if (!uri.is_string()) throw InputError(where + " is not a string");
     const std::string& name = uri.get_ref<const std::string&>();
     if (name.rfind("data:", 0) == 0) continue;
-    check_referenced_file(name, folder, where);
+    check_referenced_uri(name, folder, where);
   }
 }
 
@@ -198,12 +214,7 @@ void check_gltf_document(std::string_view json_text, const std::filesystem::path
   if (!document.is_object()) throw InputError("is a glTF file whose JSON is not an object");
   check_buffer_files(document, folder);
   check_node_hierarchy(document);
-  // glTF 1.0 (keyed objects instead of arrays) is left to assimp's glTF 1 reader as before.
-  if (const auto asset = document.find("asset"); asset != document.end() && asset->is_object() &&
-                                                 asset->contains("version") && (*asset)["version"].is_string() &&
-                                                 (*asset)["version"].get<std::string>().rfind("1.", 0) == 0) {
-    return;
-  }
+  refuse_gltf_1(document);
   check_accessors(document);
   const std::size_t accessors = count_of(document, "accessors");
   for (std::size_t m = 0; m < count_of(document, "meshes"); ++m) {

@@ -22,10 +22,13 @@
 
 #include "core/errors.hpp"
 #include "core/file_kind.hpp"
+#include "core/one_line.hpp"
 #include "mesh/fbx_check.hpp"
 #include "mesh/file_references.hpp"
 #include "mesh/gltf_check.hpp"
+#include "mesh/gltf_uri_io.hpp"
 #include "mesh/mesh_formats.hpp"
+#include "mesh/mtl_check.hpp"
 #include "mesh/off_faces.hpp"
 #include "mesh/ply_header.hpp"
 #include "mesh/ply_strips.hpp"
@@ -76,8 +79,9 @@ void check_glb_header(std::string_view head, std::uintmax_t file_bytes) {
 // fuzz_mesh_obj: tests/data/hostile/obj_face_only_line.obj).
 // Every material library (mtllib) must be a regular file in the OBJ's folder: assimp opens it (a FIFO blocked it
 // for ever), and one that does not open makes it open NAME.mtl beside the OBJ instead. Its name is the rest of the
-// line after the blanks (and line ends: assimp skips those too) that follow the keyword.
-void check_obj_file(std::string_view text, const std::filesystem::path& folder) {
+// line after the blanks (and line ends: assimp skips those too) that follow the keyword. assimp parses the library
+// too, so it is checked as well (within the mesh file size limit).
+void check_obj_file(std::string_view text, const std::filesystem::path& folder, const MeshLimits& limits) {
   bool vertex_seen = false;
   std::size_t line_number = 1;
   for (std::size_t at = 0; at < text.size();) {
@@ -94,8 +98,19 @@ void check_obj_file(std::string_view text, const std::filesystem::path& folder) 
       std::size_t name = at + 6;
       while (name < text.size() && std::isspace(static_cast<unsigned char>(text[name]))) ++name;
       const std::size_t name_end = std::min(text.find_first_of(std::string_view("\r\n\f\0", 4), name), text.size());
-      check_referenced_file(text.substr(name, name_end - name), folder,
-                            "is an OBJ file whose mtllib on line " + std::to_string(line_number));
+      const std::string_view library = text.substr(name, name_end - name);
+      const std::string where = "is an OBJ file whose mtllib on line " + std::to_string(line_number);
+      check_referenced_file(library, folder, where);
+      const std::filesystem::path library_file = folder / std::string(library);
+      std::error_code ec;
+      const std::uintmax_t bytes = std::filesystem::file_size(library_file, ec);
+      if (ec || bytes > limits.max_file_bytes) {
+        throw InputError(where + " names " + softbody::one_line(library_file.string()) + ", which has " +
+                         (ec ? "an unknown number of" : std::to_string(bytes)) + " bytes, more than the limit of " +
+                         std::to_string(limits.max_file_bytes) + " (raise it with the scene key limits.max_file_mb)");
+      }
+      check_material_library(head_of(library_file, bytes),
+                             where + " names " + softbody::one_line(library_file.string()) + ", which");
     }
     at = end + 1;
     ++line_number;
@@ -149,7 +164,7 @@ std::string check_before_reading(const std::filesystem::path& file, const MeshLi
     check_gltf_document(head_of(file, std::uintmax_t{20} + read_u32_le(head, 12)).substr(20), folder);
   }
   if (extension == ".gltf") check_gltf_document(head_of(file, bytes), folder);
-  if (extension == ".obj") check_obj_file(head_of(file, bytes), folder);
+  if (extension == ".obj") check_obj_file(head_of(file, bytes), folder, limits);
   if (extension == ".fbx" || looks_like_binary_fbx(head) || head.find("FBXHeaderExtension") != std::string::npos) {
     check_fbx_file(head_of(file, bytes));
   }
@@ -203,6 +218,9 @@ AssimpRead read_with_assimp(const std::filesystem::path& file, std::string bytes
   // kept per corner (assimp splits a vertex on a UV seam into one per side, and the weld joins them again).
   state->importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   state->bytes = std::move(bytes_for_assimp);
+  // A glTF buffer's uri is opened by its percent-decoded name, the one check_gltf_document checked.
+  const std::string extension = lower_case_extension(file);
+  if (extension == ".gltf" || extension == ".glb") state->importer.SetIOHandler(new GltfUriIoSystem(file.string()));
   std::future<const aiScene*> done = state->scene.get_future();
   std::thread reader([state, path = file.string()] {
     // ValidateDataStructure runs first and refuses face indices past a mesh's vertices before the other steps

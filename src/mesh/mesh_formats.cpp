@@ -18,6 +18,9 @@ namespace {
 // The extensions of the documented formats (docs/guide/meshes.md), without their dot.
 constexpr std::array<std::string_view, 7> kAcceptedExtensions{"obj", "ply", "stl", "gltf", "glb", "off", "fbx"};
 
+// assimp's name for its glTF 1.0 reader (its glTF 2.0 reader is "glTF2 Importer").
+constexpr std::string_view kGltf1ReaderName{"glTF Importer"};
+
 constexpr std::string_view kAcceptedWords{
     "OBJ, PLY, STL, glTF, OFF or FBX: a name ending in .obj, .ply, .stl, .gltf, .glb, .off or .fbx"};
 
@@ -54,6 +57,9 @@ void keep_only_accepted_readers(Assimp::Importer& importer) {
     bool accepted = false;
     std::istringstream extensions(description != nullptr ? description->mFileExtensions : "");
     for (std::string extension; extensions >> extension;) accepted = accepted || is_accepted(lower(extension));
+    // glTF 1.0 shares .gltf with glTF 2.0 but is not read (mesh/gltf_check.cpp says why).
+    if (accepted && description != nullptr && std::string_view(description->mName) == kGltf1ReaderName)
+      accepted = false;
     if (accepted) continue;
     Assimp::BaseImporter* reader = importer.GetImporter(i);
     // UnregisterLoader only takes the reader off the list; the importer would otherwise leak it.

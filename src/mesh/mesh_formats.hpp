@@ -20,7 +20,7 @@ std::string lower_case_extension(const std::filesystem::path& file);
 void check_format_is_accepted(const std::filesystem::path& file);
 
 // Unregisters (and deletes) every reader of `importer` except those of the accepted formats, so that assimp's
-// detection by content can never hand a file to another reader.
+// detection by content can never hand a file to another reader; the glTF 1.0 reader goes too (glTF 2.0 only).
 void keep_only_accepted_readers(Assimp::Importer& importer);
 
 }  // namespace mesh

@@ -1,14 +1,19 @@
 // Atomic file writes.
 #include "output/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
+
+#include "core/one_line.hpp"
+#include "frames/stop_request.hpp"
 
 namespace output {
 
@@ -50,16 +55,41 @@ int remove_stale_temporaries(const std::filesystem::path& dir) {
 
 namespace {
 
+[[noreturn]] void throw_stopped_while_writing(const std::string& output) {
+  throw frames::Interrupted::while_writing(frames::stop_signal(), softbody::one_line(output));
+}
+
+// Opens an existing device or FIFO for writing (null on failure, errno set). Opening a FIFO waits for a reader:
+// a stop request (SIGINT, SIGTERM) ends the wait, and once one was made it does not wait at all (a FIFO without
+// a reader gets nothing); both throw frames::Interrupted, so that the run ends with 128 + the signal.
+std::FILE* open_to_write_through(const std::filesystem::path& path) {
+  for (;;) {
+    const bool stopping = frames::stop_requested();
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | (stopping ? O_NONBLOCK : 0));
+    if (fd >= 0) {
+      if (stopping) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // writes wait for the reader again
+      std::FILE* file = ::fdopen(fd, "wb");
+      if (file == nullptr) ::close(fd);
+      return file;
+    }
+    if (frames::stop_requested() && (errno == EINTR || errno == ENXIO)) throw_stopped_while_writing(path.string());
+    if (errno != EINTR) return nullptr;
+  }
+}
+
 // Standard output or an existing non-regular file (a device, a FIFO): written in place, never renamed onto.
 void write_through(const std::filesystem::path& path, std::string_view bytes) {
   const bool to_stdout = path == "-";
-  std::FILE* out = to_stdout ? stdout : std::fopen(path.c_str(), "wb");
+  const std::string name = to_stdout ? std::string("standard output") : path.string();
+  std::FILE* out = to_stdout ? stdout : open_to_write_through(path);
   if (out == nullptr) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
   const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
   const bool flushed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
-  if (!written || !flushed)
-    throw std::runtime_error((to_stdout ? std::string("standard output") : path.string()) + ": write failed (" +
-                             std::strerror(errno) + ")");
+  if (!written || !flushed) {
+    const int error = errno;
+    if (frames::stop_requested()) throw_stopped_while_writing(name);  // a write waiting for the reader, ended
+    throw std::runtime_error(name + ": write failed (" + std::strerror(error) + ")");
+  }
 }
 
 }  // namespace
@@ -80,7 +110,13 @@ void move_into_place(const std::filesystem::path& temporary, const std::filesyst
     throw std::runtime_error(path.string() + ": cannot rename into place (" + ec.message() + ")");
   }
   std::ifstream in(temporary, std::ios::binary);
-  std::FILE* out = std::fopen(path.c_str(), "wb");
+  std::FILE* out = nullptr;
+  try {
+    out = open_to_write_through(path);
+  } catch (const frames::Interrupted&) {
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
   bool written = in && out != nullptr;
   const int open_errno = errno;
   std::vector<char> chunk(1 << 20);
@@ -92,6 +128,7 @@ void move_into_place(const std::filesystem::path& temporary, const std::filesyst
   const bool closed = out != nullptr && std::fclose(out) == 0;
   const int write_errno = out == nullptr ? open_errno : errno;
   std::filesystem::remove(temporary, ec);
+  if ((!written || !closed) && frames::stop_requested()) throw_stopped_while_writing(path.string());
   if (!written || !closed)
     throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(write_errno) + ")");
 }

@@ -45,6 +45,18 @@ bool set_lock(int fd, short type, off_t byte, bool wait) {
   return true;
 }
 
+// The type of a lock that another open file holds on `byte` and that a write lock would conflict with (F_RDLCK,
+// F_WRLCK), or F_UNLCK when there is none.
+short conflicting_lock(int fd, off_t byte) {
+  struct flock lock {};
+  lock.l_type = F_WRLCK;
+  lock.l_whence = SEEK_SET;
+  lock.l_start = byte;
+  lock.l_len = 1;
+  if (::fcntl(fd, F_OFD_GETLK, &lock) != 0) throw std::system_error(errno, std::generic_category());
+  return lock.l_type;
+}
+
 std::string contents(int fd) {
   std::string text(4096, '\0');
   const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
@@ -104,11 +116,14 @@ FolderLock::FolderLock(const std::filesystem::path& dir, const std::string& run_
 bool FolderLock::take_folder_byte() const {
   // A run that was killed (SIGKILL) a moment ago may still hold the lock: the kernel releases a dead process's
   // files shortly after its parent saw it end. While the pid the file names no longer runs, try again for a
-  // while; a holder that runs is answered at once.
+  // while; a holder that runs is answered at once. A shared hold is the chunks of another run (a whole run holds
+  // the folder alone): the chunk that wrote its pid may have ended while the others go on, so they are answered at
+  // once too.
   constexpr int kTries = 100;
   constexpr auto kPause = std::chrono::milliseconds(50);
   for (int attempt = 1;; ++attempt) {
     if (set_lock(fd_, F_WRLCK, kFolderByte, /*wait=*/false)) return true;
+    if (conflicting_lock(fd_, kFolderByte) == F_RDLCK) return false;
     const std::string text = contents(fd_);
     const std::size_t pid_at = text.find("\npid ");
     const long pid = pid_at == std::string::npos ? 0 : std::atol(text.c_str() + pid_at + 5);

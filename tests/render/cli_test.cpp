@@ -334,7 +334,7 @@ TEST(RenderCommand, AFailedRerunAfterALongerRunLeavesOnlyItsOwnFrames) {
   const std::string video = "--video " + quoted(out / "v.mp4");
   ASSERT_EQ(run_shell(render_command(out, video)).exit_status, 0);
   ASSERT_EQ(count_frame_files(out), 11);
-  ASSERT_EQ(other_files(out), (std::vector<std::string>{"figure.png", "v.mp4"}));
+  ASSERT_EQ(other_files(out), (std::vector<std::string>{".softbody-video", "figure.png", "v.mp4"}));
   const CommandResult failed =
       run_shell(render_command(out, "--set duration=0.5 --set solver.dt=0.01 --set bodies.0.stiffness=1e6 " + video));
   ASSERT_EQ(failed.exit_status, 3) << failed.output;
@@ -347,6 +347,32 @@ TEST(RenderCommand, AFailedRerunAfterALongerRunLeavesOnlyItsOwnFrames) {
   for (int i = 0; i < frames; ++i)
     EXPECT_NO_THROW(output::read_png(out / output::frame_file_name("frame_%04d.png", i)));
   EXPECT_EQ(other_files(out), std::vector<std::string>{});
+}
+
+// The earlier run's video goes with its frames even when the rerun makes no video or another one: a whole run
+// records the video it wrote into its folder (.softbody-video), and the next whole run removes it, saying so,
+// if it still holds the bytes recorded. A video the user has replaced since, or one outside the folder, stays.
+TEST(RenderCommand, ARerunRemovesTheEarlierRunsVideoOfAnotherName) {
+  const std::filesystem::path out = render_test::fresh_output_dir("cli_rerun_other_video");
+  const std::filesystem::path elsewhere = render_test::fresh_output_dir("cli_rerun_other_video_elsewhere");
+  const std::string fails = "--set duration=0.5 --set solver.dt=0.01 --set bodies.0.stiffness=1e6";
+  ASSERT_EQ(run_shell(render_command(out, "--video " + quoted(out / "v.mp4"))).exit_status, 0);
+  const CommandResult failed = run_shell(render_command(out, fails));
+  ASSERT_EQ(failed.exit_status, 3) << failed.output;
+  EXPECT_NE(failed.output.find("removed an earlier run's outputs before writing: 11 frame files, figure.png, " +
+                               (out / "v.mp4").string()),
+            std::string::npos)
+      << failed.output;
+  EXPECT_EQ(other_files(out), std::vector<std::string>{});
+  // Replaced by the user after the run: not the recorded video any more.
+  ASSERT_EQ(run_shell(render_command(out, "--video " + quoted(out / "w.mp4"))).exit_status, 0);
+  std::ofstream(out / "w.mp4") << "the user's own file";
+  ASSERT_EQ(run_shell(render_command(out, fails)).exit_status, 3);
+  EXPECT_EQ(other_files(out), std::vector<std::string>{"w.mp4"});
+  // Outside the folder: not this folder's output.
+  ASSERT_EQ(run_shell(render_command(out, "--video " + quoted(elsewhere / "x.mp4"))).exit_status, 0);
+  ASSERT_EQ(run_shell(render_command(out, fails)).exit_status, 3);
+  EXPECT_TRUE(std::filesystem::exists(elsewhere / "x.mp4"));
 }
 
 // SIGINT during a rerun into the folder of an earlier run with a video (61 frames): the earlier video and later
