@@ -38,7 +38,12 @@ bool has_parent_step(std::string_view reference) {
   return false;
 }
 
-std::string in_quotes(std::string_view text) { return "\"" + softbody::one_line(text.substr(0, 200)) + "\""; }
+std::string in_quotes(std::string_view text) {
+  std::string quoted = "\"";  // appended, not "\"" + std::string&&: g++ 12's -Wrestrict misfires on that
+  quoted += softbody::one_line(text.substr(0, 200));
+  quoted += '"';
+  return quoted;
+}
 
 // Where `target` really is (every symbolic link on its way followed) lies outside `folder`'s real place.
 bool leads_out_of(const std::filesystem::path& target, const std::filesystem::path& folder,
