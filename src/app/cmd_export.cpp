@@ -1,5 +1,6 @@
 // `softbody export SCENE [-o DIR] [--format obj|ply|pc2|mdd] [--set ...]`: the simulated mesh of every frame,
-// or per body one mesh and a point cache of its positions; and the colliders once (output/collider_export.hpp).
+// or per body one mesh and a point cache of its positions; and the colliders: a static one once
+// (output/collider_export.hpp), a keyframed one per frame or as a point cache (output/moving_collider_export.hpp).
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -20,6 +21,7 @@
 #include "output/folder_lock.hpp"
 #include "output/frame_pattern.hpp"
 #include "output/mesh_exporter.hpp"
+#include "output/moving_collider_export.hpp"
 #include "output/point_cache.hpp"
 #include "output/run_manifest.hpp"
 #include "setup/scene_hash.hpp"
@@ -76,6 +78,9 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
     output::refuse_output_onto_inputs(exporter.cache_path(body), inputs, "-o");
   }
   refuse_colliders_onto_inputs(dir, run.world.model.colliders.size(), ".obj", inputs);
+  output::ColliderCacheExporter collider_caches(dir, run.world.model.colliders, format);
+  for (const std::size_t collider : collider_caches.moving())
+    output::refuse_output_onto_inputs(collider_caches.cache_path(collider), inputs, "-o");
   // One run at a time writes into the folder; the files are written whole at the end, so chunks would replace
   // each other's: none share it.
   const output::FolderLock lock(
@@ -85,7 +90,7 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
       output::FolderLock::Sharing::Exclusive, "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);                            // a killed run's half-written cache
   output::write_colliders(dir, run.world.model.colliders, ".obj");  // static: once, before the frames
-  std::vector<frames::FrameSink*> sinks = {&exporter};
+  std::vector<frames::FrameSink*> sinks = {&exporter, &collider_caches};
   const frames::RunStats stats =
       frames::run_frames(run.world, run.clock, sinks, export_progress(options), planned.plan());
   print_run_summary(run, stats,
@@ -95,10 +100,12 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   return 0;
 }
 
-// A whole new run: an earlier run's meshes (whatever their numbers) go first, so that a run that fails or is
-// interrupted leaves only its own frames, never a mix of two runs. Says how many went.
-void remove_earlier_meshes(const std::filesystem::path& dir, const std::string& pattern) {
-  const int removed = output::remove_frame_files(dir, pattern);
+// A whole new run: an earlier run's meshes and collider frames (whatever their numbers) go first, so that a run
+// that fails or is interrupted leaves only its own frames, never a mix of two runs. Says how many went.
+void remove_earlier_meshes(const std::filesystem::path& dir, const std::string& pattern,
+                           const std::string& collider_extension) {
+  const int removed =
+      output::remove_frame_files(dir, pattern) + output::remove_collider_frames(dir, collider_extension);
   if (removed > 0)
     std::fprintf(stderr, "note: %s: removed an earlier run's outputs before writing: %d frame files\n", dir.c_str(),
                  removed);
@@ -123,6 +130,13 @@ int run_export(const ExportOptions& options) {
       "-o");
   const std::string collider_extension = mesh_format == output::MeshFormat::Obj ? ".obj" : ".ply";
   refuse_colliders_onto_inputs(dir, run.world.model.colliders.size(), collider_extension, scene_inputs(run.scene));
+  output::ColliderFrameExporter collider_frames(dir, run.world.model.colliders, collider_extension);
+  for (const std::size_t collider : output::moving_colliders(run.world.model.colliders)) {
+    const std::string pattern = output::collider_frame_pattern(collider, collider_extension);
+    output::refuse_numbered_outputs_onto_inputs(
+        dir, run.clock.frame_count, [&](int i) { return output::frame_file_name(pattern, i); }, scene_inputs(run.scene),
+        "-o");
+  }
   // One run at a time writes into the folder; the chunks of one export (--frames, same scene and format)
   // share it.
   const std::string format = mesh_format == output::MeshFormat::Obj ? "obj" : "ply";
@@ -131,11 +145,12 @@ int run_export(const ExportOptions& options) {
                                                                    : output::FolderLock::Sharing::SameRunOnly,
                                 "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);
-  if (!options.resume && planned.plan().frames.everything()) remove_earlier_meshes(dir, exporter.frame_pattern());
+  if (!options.resume && planned.plan().frames.everything())
+    remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension);
   output::write_colliders(dir, run.world.model.colliders, collider_extension);  // static: once, before the frames
   std::unique_ptr<ResumableRun> resumable;
   output::RunManifest manifest;
-  std::vector<frames::FrameSink*> sinks = {&exporter};
+  std::vector<frames::FrameSink*> sinks = {&exporter, &collider_frames};
   if (options.resume) {
     // The manifest of the run to continue vouches for the meshes it wrote (size and checksum); a mesh it does
     // not vouch for is made again with all after it.
@@ -146,17 +161,27 @@ int run_export(const ExportOptions& options) {
     if (manifest.intact() && std::filesystem::exists(store / "cache.json", ec))
       manifest.check_settings(export_output_settings(format));  // a run to continue: its format must be this
     const auto frame_done = [&](int frame) {
-      return manifest.vouches_for(dir, exporter.frame_path(frame).filename().string());
+      if (!manifest.vouches_for(dir, exporter.frame_path(frame).filename().string())) return false;
+      for (const std::filesystem::path& path : collider_frames.frame_paths(frame)) {
+        if (!manifest.vouches_for(dir, path.filename().string())) return false;
+      }
+      return true;
     };
     resumable = std::make_unique<ResumableRun>(run, store, frame_done, dir);
-    if (resumable->resumed_after() < 0) remove_earlier_meshes(dir, exporter.frame_pattern());  // a new run
+    if (resumable->resumed_after() < 0)
+      remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension);  // a new run
     std::vector<std::string> kept;
-    for (int frame = 0; frame <= resumable->resumed_after(); ++frame)
+    for (int frame = 0; frame <= resumable->resumed_after(); ++frame) {
       kept.push_back(exporter.frame_path(frame).filename().string());
+      for (const std::filesystem::path& path : collider_frames.frame_paths(frame))
+        kept.push_back(path.filename().string());
+    }
     manifest.start(manifest_path, scene_hash, export_output_settings(format), kept);
-    exporter.after_each_file([&manifest](const std::filesystem::path& path, std::string_view bytes) {
+    const auto add_to_manifest = [&manifest](const std::filesystem::path& path, std::string_view bytes) {
       manifest.add(path.filename().string(), bytes);
-    });
+    };
+    exporter.after_each_file(add_to_manifest);
+    collider_frames.after_each_file(add_to_manifest);
     sinks.push_back(&resumable->store_sink());
   }
   const frames::RunStats stats = frames::run_frames(run.world, run.clock, sinks, export_progress(options),
@@ -200,9 +225,12 @@ Action register_export(CLI::App& parent) {
       "  (big-endian, the simulated time of each frame) its positions, in the scene's units (m, y up).\n"
       "  The frames (all, or one --frames range) are kept in memory (12 bytes per vertex per frame) and the files\n"
       "  written whole at the end (also when the run diverges: the frames before it).\n"
-      "Colliders: DIR/collider_<N>.obj (.ply with --format ply), N the collider's index in the scene's \"colliders\",\n"
-      "  written once (they are static) in world coordinates: a mesh as its triangles, a box, sphere or capsule\n"
-      "  tessellated as rendered, a plane as a 20 m square around its point nearest the origin.");
+      "Colliders, N the collider's index in the scene's \"colliders\", in world coordinates: a mesh as its triangles,\n"
+      "  a box, sphere or capsule tessellated as rendered, a plane as a 20 m square around its point nearest the "
+      "origin.\n"
+      "  A static one: DIR/collider_<N>.obj (.ply with --format ply), written once.\n"
+      "  A keyframed one (\"keys\"): DIR/collider_<N>_%04d.obj (.ply) per frame, numbered like the frames; with\n"
+      "  --format pc2 | mdd, DIR/collider_<N>.obj (its surface at the first frame) and DIR/collider_<N>.pc2 (.mdd).");
   return [options] {
     const ProfiledRun profiled(options->profile);
     return run_export(*options);
