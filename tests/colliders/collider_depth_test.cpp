@@ -1,6 +1,6 @@
 // No vertex inside a collider deeper than its contact model allows, at any frame, for every integrator at the step
 // "auto" chooses: a soft ball dropped onto a box's edge, a sphere, a tilted capsule (so that it also slides off), the
-// box as a cube mesh and a tilted square sheet (an open mesh).
+// box as a cube mesh, a tilted square sheet (an open mesh) and a ring (a torus mesh).
 // The impulse models put every vertex back on the surface after each step: none inside. The smooth contact lets a
 // vertex sink until its spring has stopped it: about v τ for an impact at v (a spring m/τ² taking ½ m v²), plus the
 // smoothing depth δ over which the spring ramps up.
@@ -32,6 +32,8 @@ const char* const kShapes[] = {
     // The box as a closed mesh, and an open square sheet (1 cm thick) tilted as the box is.
     R"({"shape": "mesh", "mesh": "cube:1", "scale": 0.5, "position": [0.25, 0, 0], "rotation": [0, 0, 10]})",
     R"({"shape": "mesh", "mesh": "data/quad.obj", "scale": 0.4, "position": [0.25, 0.25, 0], "rotation": [0, 0, 10]})",
+    // The ring of scenes/ring.json (a torus, not convex), the ball landing on its tube's top off the middle.
+    R"({"shape": "mesh", "mesh": "torus:48,16", "scale": 0.6, "position": [0.5, 0, 0]})",
 };
 
 std::string ball_onto(const std::string& shape, const std::string& contact, const sim::IntegratorInfo& integrator) {
