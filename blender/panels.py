@@ -57,6 +57,7 @@ class SOFTBODY_PT_object(bpy.types.Panel):
         elif settings.resolution_mode == "EDGE_LENGTH":
             layout.prop(settings, "edge_length")
         layout.prop(settings, "repair")
+        layout.prop(settings, "self_collision")
         if cache.is_baked(context.object):
             layout.label(text="Baked: plays softbody's cache", icon="CHECKMARK")
         draw_bake_buttons(layout, context.scene)

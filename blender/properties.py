@@ -51,6 +51,9 @@ class SoftbodyObjectSettings(bpy.types.PropertyGroup):
     edge_length: FloatProperty(name="Proxy edge length", unit="LENGTH", default=0.1, min=0.0, soft_min=1e-4)
     repair: BoolProperty(name="Repair mesh", description="Repair the mesh before it is checked (bodies[].repair); "
                          "the cache is then attached to the repaired mesh", default=False)
+    self_collision: BoolProperty(name="Self-collision", description="Its vertices also collide with its own triangles, "
+                                 "so that it folds onto itself instead of through itself (bodies[].self_collision)",
+                                 default=False)
 
 
 class SoftbodySceneSettings(bpy.types.PropertyGroup):

@@ -117,6 +117,8 @@ def body_keys(settings, mesh_file, metres_per_unit=1.0):
         body["resolution"] = {"edge_length": number(settings.edge_length * metres_per_unit)}
     if settings.repair:
         body["repair"] = True
+    if settings.self_collision:
+        body["self_collision"] = True
     return body
 
 

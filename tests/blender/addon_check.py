@@ -5,6 +5,7 @@
 # softbody changes (an icosphere with a hole, repaired): the object must play the mesh softbody wrote, and Clear give
 # its own mesh back. The panels are drawn into a stand-in layout (no window in background mode).
 import itertools
+import json
 import os
 import subprocess
 import sys
@@ -69,6 +70,7 @@ def make_scene(bake_dir):
     ball.softbody_pressure.mass = 1.0
     ball.softbody_pressure.damping_mode = "RATIO"
     ball.softbody_pressure.damping_ratio = 0.2
+    ball.softbody_pressure.self_collision = True
     return ball
 
 
@@ -77,6 +79,15 @@ def bake():
     if result != {"FINISHED"}:
         fail("softbody.bake returned %s: %s" % (result, bpy.context.scene.softbody_pressure.last_message))
     print("blender addon: bake: " + bpy.context.scene.softbody_pressure.last_message)
+
+
+def check_scene_keys(bake_dir):
+    # The panel's switches reach the scene file the bake wrote (and so the CLI, which check_against_cli runs on it).
+    with open(os.path.join(bake_dir, "scene.json")) as f:
+        body = json.load(f)["bodies"][0]
+    if body.get("self_collision") is not True:
+        fail("the bake's scene file lacks the body's \"self_collision\": true: %s" % body)
+    print("blender addon: the scene file carries the body's self_collision switch")
 
 
 def check_start_frame(ball, before):
@@ -248,6 +259,7 @@ def main():
     before = evaluated_world(ball)
     matrix_before = [list(row) for row in ball.matrix_world]
     bake()
+    check_scene_keys(bake_dir)
     check_start_frame(ball, before)
     check_against_cli(ball, program, bake_dir, scratch, before)
     check_clear(ball, before, matrix_before)
