@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 
+#include "core/errors.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/step/diagnostics.hpp"
@@ -16,6 +17,15 @@ namespace testing_support {
 scene::Scene scene_from_text(const std::string& json_text) {
   const std::filesystem::path file = std::filesystem::path(SOFTBODY_SOURCE_DIR) / "tests" / "inline.json";
   return scene::scene_from_json(scene::parse_scene_text(json_text, file), file);
+}
+
+std::string scene_refusal(const std::string& json_text) {
+  try {
+    scene_from_text(json_text);
+  } catch (const softbody::InputError& error) {
+    return error.what();
+  }
+  return "";
 }
 
 sim::World world_from_text(const std::string& json_text) {

@@ -15,6 +15,9 @@ namespace testing_support {
 // A scene from JSON text (comments allowed), validated as if read from `tests/<name>.json`.
 scene::Scene scene_from_text(const std::string& json_text);
 
+// The message of the InputError that reading the scene `json_text` throws ("" when it reads).
+std::string scene_refusal(const std::string& json_text);
+
 // The world of a scene given as JSON text.
 sim::World world_from_text(const std::string& json_text);
 

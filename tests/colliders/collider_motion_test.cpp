@@ -13,6 +13,8 @@
 
 namespace {
 
+using testing_support::scene_refusal;
+
 using sim::ColliderKey;
 using sim::ColliderMotion;
 using sim::ColliderPose;
@@ -130,15 +132,6 @@ std::string with_keys(const std::string& collider_extra) {
          R"(} ], "bodies": [ { "mesh": "icosphere:1" } ] })";
 }
 
-std::string refusal(const std::string& text) {
-  try {
-    testing_support::scene_from_text(text);
-  } catch (const softbody::InputError& error) {
-    return error.what();
-  }
-  return "";
-}
-
 TEST(ColliderMotion, SceneKeysAreRead) {
   const scene::Scene s = testing_support::scene_from_text(with_keys(
       R"(, "interpolation": "smooth", "keys": [{"time": 0}, {"time": 1, "position": [2, 1, 0], "rotation": [0, 90, 0],
@@ -156,7 +149,7 @@ TEST(ColliderMotion, SceneKeysAreRead) {
 
 TEST(ColliderMotion, BadKeysAreRefusedWithTheirPath) {
   const auto refuses = [](const std::string& extra, const std::string& words) {
-    const std::string message = refusal(with_keys(extra));
+    const std::string message = scene_refusal(with_keys(extra));
     EXPECT_NE(message.find(words), std::string::npos) << extra << " gave: " << message;
   };
   refuses(R"(, "keys": [])", "colliders.0.keys: expected an array of at least one key");

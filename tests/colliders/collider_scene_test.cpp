@@ -10,18 +10,10 @@
 
 namespace {
 
+using testing_support::scene_refusal;
+
 std::string with_colliders(const std::string& floor, const std::string& colliders) {
   return R"({ )" + floor + R"( "colliders": )" + colliders + R"(, "bodies": [ { "mesh": "icosphere:1" } ] })";
-}
-
-// The message of the InputError reading `text` throws ("" when it reads).
-std::string refusal(const std::string& text) {
-  try {
-    testing_support::scene_from_text(text);
-  } catch (const softbody::InputError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(ColliderScene, ReadsShapesAndTakesTheFloorsContactKeys) {
@@ -55,24 +47,26 @@ TEST(ColliderScene, WithoutAFloorTheFloorsDefaultsApply) {
 }
 
 TEST(ColliderScene, RefusesMissingForeignAndUnsupportedKeys) {
-  EXPECT_NE(
-      refusal(with_colliders("", R"([{"shape": "sphere"}])")).find("colliders.0.radius: expected it for a sphere"),
-      std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "box", "size": [1, 1, 1], "radius": 1}])"))
+  EXPECT_NE(scene_refusal(with_colliders("", R"([{"shape": "sphere"}])"))
+                .find("colliders.0.radius: expected it for a sphere"),
+            std::string::npos);
+  EXPECT_NE(scene_refusal(with_colliders("", R"([{"shape": "box", "size": [1, 1, 1], "radius": 1}])"))
                 .find("colliders.0.radius: a box takes no \"radius\""),
             std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "box", "size": [1, 0, 1]}])")).find("colliders.0.size"),
+  EXPECT_NE(scene_refusal(with_colliders("", R"([{"shape": "box", "size": [1, 0, 1]}])")).find("colliders.0.size"),
             std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "plane", "normal": [0, 0, 0]}])")).find("colliders.0.normal"),
-            std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "mesh", "mesh": "no_such_file.obj"}])"))
+  EXPECT_NE(
+      scene_refusal(with_colliders("", R"([{"shape": "plane", "normal": [0, 0, 0]}])")).find("colliders.0.normal"),
+      std::string::npos);
+  EXPECT_NE(scene_refusal(with_colliders("", R"([{"shape": "mesh", "mesh": "no_such_file.obj"}])"))
                 .find("colliders.0.mesh: mesh file"),
             std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "mesh"}])")).find("colliders.0.mesh: expected it for a mesh"),
+  EXPECT_NE(
+      scene_refusal(with_colliders("", R"([{"shape": "mesh"}])")).find("colliders.0.mesh: expected it for a mesh"),
+      std::string::npos);
+  EXPECT_NE(scene_refusal(with_colliders("", "[]")).find("colliders: expected an array of at least one collider"),
             std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", "[]")).find("colliders: expected an array of at least one collider"),
-            std::string::npos);
-  EXPECT_NE(refusal(with_colliders("", R"([{"shape": "sphere", "radius": 1, "heigth": 2}])")).find("unknown key"),
+  EXPECT_NE(scene_refusal(with_colliders("", R"([{"shape": "sphere", "radius": 1, "heigth": 2}])")).find("unknown key"),
             std::string::npos);
 }
 
