@@ -9,11 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "frames/frame_clock.hpp"
 #include "setup/build_world.hpp"
 #include "sim/contact/body_collision.hpp"
 #include "sim/contact/smooth_contact.hpp"
-#include "sim/step/step_plan.hpp"
 #include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
@@ -66,20 +64,8 @@ void count_inside(const sim::World& world, Inside& inside) {
 
 // Runs the scene at its automatic step, counting the vertices inside at every frame.
 Inside run_fold(const std::string& text) {
-  const scene::Scene scene = testing_support::scene_from_text(text);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
-  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
   Inside inside;
-  for (int frame = 1; frame <= clock.frame_count; ++frame) {
-    if (world.adaptive()) {
-      world.advance_to(frame * clock.frame_interval_s);
-    } else {
-      testing_support::run_steps(world, clock.steps_per_frame, clock.dt_s);
-    }
-    count_inside(world, inside);
-  }
+  testing_support::run_scene_frames(text, [&](const sim::World& world) { count_inside(world, inside); });
   return inside;
 }
 

@@ -8,9 +8,11 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "frames/frame_clock.hpp"
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/step/diagnostics.hpp"
+#include "sim/step/step_plan.hpp"
 
 namespace testing_support {
 
@@ -31,6 +33,22 @@ std::string scene_refusal(const std::string& json_text) {
 sim::World world_from_text(const std::string& json_text) {
   std::vector<std::string> notes;
   return setup::build_world(scene_from_text(json_text), notes);
+}
+
+void run_scene_frames(const std::string& json_text, const std::function<void(const sim::World&)>& at_frame) {
+  const scene::Scene scene = scene_from_text(json_text);
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(scene, notes);
+  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
+  for (int frame = 1; frame <= clock.frame_count; ++frame) {
+    if (world.adaptive()) {
+      world.advance_to(frame * clock.frame_interval_s);
+    } else {
+      run_steps(world, clock.steps_per_frame, clock.dt_s);
+    }
+    at_frame(world);
+  }
 }
 
 softbody::Vec3 total_momentum(const sim::World& world) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ std::string scene_refusal(const std::string& json_text);
 
 // The world of a scene given as JSON text.
 sim::World world_from_text(const std::string& json_text);
+
+// Runs the scene given as JSON text frame by frame at the step its solver asks for ("auto" resolved as the program
+// resolves it), calling `at_frame(world)` after each frame.
+void run_scene_frames(const std::string& json_text, const std::function<void(const sim::World&)>& at_frame);
 
 // Σ over bodies of Σ m_i v_i [kg·m/s].
 softbody::Vec3 total_momentum(const sim::World& world);

@@ -10,10 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frames/frame_clock.hpp"
-#include "setup/build_world.hpp"
 #include "sim/contact/collider_shape.hpp"
-#include "sim/step/step_plan.hpp"
 #include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
@@ -49,21 +46,11 @@ std::string ball_onto(const std::string& shape, const std::string& contact, cons
 
 // The deepest any vertex is inside the collider at any frame [m].
 double deepest_at_frames(const std::string& text) {
-  const scene::Scene scene = testing_support::scene_from_text(text);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
-  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
-  const sim::ColliderGeometry& collider = world.model.colliders.at(0).geometry;
   double deepest = 0.0;
-  for (int frame = 1; frame <= clock.frame_count; ++frame) {
-    if (world.adaptive()) {
-      world.advance_to(frame * clock.frame_interval_s);
-    } else {
-      testing_support::run_steps(world, clock.steps_per_frame, clock.dt_s);
-    }
+  testing_support::run_scene_frames(text, [&](const sim::World& world) {
+    const sim::ColliderGeometry& collider = world.model.colliders.at(0).geometry;
     for (const Vec3& x : world.state.x) deepest = std::max(deepest, -sim::nearest_surface(collider, x).distance_m);
-  }
+  });
   return deepest;
 }
 
