@@ -65,7 +65,7 @@ void count_inside(const sim::World& world, Inside& inside) {
 // Runs the scene at its automatic step, counting the vertices inside at every frame.
 Inside run_fold(const std::string& text) {
   Inside inside;
-  testing_support::run_scene_frames(text, [&](const sim::World& world) { count_inside(world, inside); });
+  testing_support::run_scene_frames(text, [&](double, const sim::World& world) { count_inside(world, inside); });
   return inside;
 }
 

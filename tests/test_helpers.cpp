@@ -35,7 +35,8 @@ sim::World world_from_text(const std::string& json_text) {
   return setup::build_world(scene_from_text(json_text), notes);
 }
 
-void run_scene_frames(const std::string& json_text, const std::function<void(const sim::World&)>& at_frame) {
+sim::World run_scene_frames(const std::string& json_text,
+                            const std::function<void(double, const sim::World&)>& at_frame) {
   const scene::Scene scene = scene_from_text(json_text);
   std::vector<std::string> notes;
   sim::World world = setup::build_world(scene, notes);
@@ -47,8 +48,9 @@ void run_scene_frames(const std::string& json_text, const std::function<void(con
     } else {
       run_steps(world, clock.steps_per_frame, clock.dt_s);
     }
-    at_frame(world);
+    if (at_frame) at_frame(frame * clock.frame_interval_s, world);
   }
+  return world;
 }
 
 softbody::Vec3 total_momentum(const sim::World& world) {

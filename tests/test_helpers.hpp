@@ -23,8 +23,9 @@ std::string scene_refusal(const std::string& json_text);
 sim::World world_from_text(const std::string& json_text);
 
 // Runs the scene given as JSON text frame by frame at the step its solver asks for ("auto" resolved as the program
-// resolves it), calling `at_frame(world)` after each frame.
-void run_scene_frames(const std::string& json_text, const std::function<void(const sim::World&)>& at_frame);
+// resolves it), calling `at_frame(time_s, world)` after each frame (if given); returns the world at the end.
+sim::World run_scene_frames(const std::string& json_text,
+                            const std::function<void(double, const sim::World&)>& at_frame = nullptr);
 
 // Σ over bodies of Σ m_i v_i [kg·m/s].
 softbody::Vec3 total_momentum(const sim::World& world);

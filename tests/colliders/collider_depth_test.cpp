@@ -47,7 +47,7 @@ std::string ball_onto(const std::string& shape, const std::string& contact, cons
 // The deepest any vertex is inside the collider at any frame [m].
 double deepest_at_frames(const std::string& text) {
   double deepest = 0.0;
-  testing_support::run_scene_frames(text, [&](const sim::World& world) {
+  testing_support::run_scene_frames(text, [&](double, const sim::World& world) {
     const sim::ColliderGeometry& collider = world.model.colliders.at(0).geometry;
     for (const Vec3& x : world.state.x) deepest = std::max(deepest, -sim::nearest_surface(collider, x).distance_m);
   });

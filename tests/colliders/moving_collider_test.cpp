@@ -9,10 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "frames/frame_clock.hpp"
-#include "setup/build_world.hpp"
 #include "sim/step/diagnostics.hpp"
-#include "sim/step/step_plan.hpp"
 #include "sim/step/world.hpp"
 #include "test_helpers.hpp"
 
@@ -23,25 +20,6 @@ using softbody::Vec3;
 std::string step_keys(const sim::IntegratorInfo& integrator) {
   return std::string(R"("integrator": ")") + std::string(integrator.name) + R"(", )" +
          (integrator.frame_substeps ? R"("substeps": "auto")" : R"("dt": "auto")");
-}
-
-// Runs the scene to its end at its automatic step, calling at_frame(time, world) after each frame; returns the world.
-sim::World run_scene(const std::string& text,
-                     const std::function<void(double, const sim::World&)>& at_frame = nullptr) {
-  const scene::Scene scene = testing_support::scene_from_text(text);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
-  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
-  for (int frame = 1; frame <= clock.frame_count; ++frame) {
-    if (world.adaptive()) {
-      world.advance_to(frame * clock.frame_interval_s);
-    } else {
-      testing_support::run_steps(world, clock.steps_per_frame, clock.dt_s);
-    }
-    if (at_frame) at_frame(frame * clock.frame_interval_s, world);
-  }
-  return world;
 }
 
 constexpr double kPlatformSpeed_m_per_s = 0.5;
@@ -69,7 +47,7 @@ TEST(MovingCollider, PlatformCarriesABodyWithIt) {
       }
       // The mean velocity over the last half second (the soft cube rocks a little on its corners meanwhile).
       Vec3 com_at_1s = Vec3::Zero();
-      const sim::World world = run_scene(text, [&](double t, const sim::World& w) {
+      const sim::World world = testing_support::run_scene_frames(text, [&](double t, const sim::World& w) {
         if (std::abs(t - 1.0) < 1e-9) com_at_1s = sim::diagnose(w.model, w.state, 0).com_m;
       });
       const Vec3 v = (sim::diagnose(world.model, world.state, 0).com_m - com_at_1s) / 0.5;
@@ -86,7 +64,7 @@ TEST(MovingCollider, PlatformCarriesABodyWithIt) {
 TEST(MovingCollider, WithoutFrictionThePlatformSlidesAwayUnderTheBody) {
   std::string text = cube_on_platform("friction", sim::kIntegrators[1]);
   text.replace(text.find(R"("friction": 0.8)"), 15, R"("friction": 0.0)");
-  const sim::World world = run_scene(text);
+  const sim::World world = testing_support::run_scene_frames(text);
   EXPECT_LT(std::abs(sim::diagnose(world.model, world.state, 0).com_velocity_m_per_s.x()), 0.01);
 }
 
@@ -107,7 +85,7 @@ std::string paddle_hits_ball(const std::string& contact, const sim::IntegratorIn
 TEST(MovingCollider, PaddleGivesTheBallMomentumAlongItsMotion) {
   for (const char* contact : {"paper", "friction", "smooth"}) {
     for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
-      const sim::World world = run_scene(paddle_hits_ball(contact, integrator));
+      const sim::World world = testing_support::run_scene_frames(paddle_hits_ball(contact, integrator));
       const Vec3 p = testing_support::total_momentum(world);
       const double per_wall = p.x() / (kBallMass_kg * kPaddleSpeed_m_per_s);  // 1: moves at U, 2: rigid elastic
       std::printf("%-8s %-10s ball's momentum (%.4f, %.4f, %.4f) kg m/s = %.3f M U along x\n", contact,
