@@ -191,6 +191,27 @@ bool boxes_overlap(const Vec3& lo_a, const Vec3& hi_a, const Vec3& lo_b, const V
 }  // namespace
 
 template <class Visit>
+void BodyCollider::for_each_grid_triangle(const Vec3& p, double reach, int stamp, Visit&& visit) {
+  const Eigen::Vector3i lo = cell_of(p - Vec3::Constant(reach));
+  const Eigen::Vector3i hi = cell_of(p + Vec3::Constant(reach)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
+  for (int cx = lo.x(); cx <= hi.x(); ++cx) {
+    for (int cy = lo.y(); cy <= hi.y(); ++cy) {
+      for (int cz = lo.z(); cz <= hi.z(); ++cz) {
+        const auto cell = static_cast<std::size_t>(cell_index(cx, cy, cz));
+        for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+          const int f = cell_triangles_[static_cast<std::size_t>(k)];
+          // A triangle in several of these cells is visited once: a second test gives the same distance, which
+          // can neither beat the best nor tie it with a lower index.
+          if (tested_by_[static_cast<std::size_t>(f)] == stamp) continue;
+          tested_by_[static_cast<std::size_t>(f)] = stamp;
+          visit(f);
+        }
+      }
+    }
+  }
+}
+
+template <class Visit>
 void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std::span<const Vec3> x, double search,
                                     Visit visit) {
   if (moving_index_ == surface_index_) {
@@ -213,32 +234,17 @@ void BodyCollider::for_each_nearest(const Body& moving, const Body& surface, std
     // Nearest triangle among those in the grid cells that the search sphere's box touches.
     double best_distance = search;
     Nearest best;
-    const Eigen::Vector3i first = cell_of(p - Vec3::Constant(search));
-    const Eigen::Vector3i last = cell_of(p + Vec3::Constant(search)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
-    for (int cx = first.x(); cx <= last.x(); ++cx) {
-      for (int cy = first.y(); cy <= last.y(); ++cy) {
-        for (int cz = first.z(); cz <= last.z(); ++cz) {
-          const auto c = static_cast<std::size_t>(cell_index(cx, cy, cz));
-          for (int k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-            const int f = cell_triangles_[static_cast<std::size_t>(k)];
-            // A triangle in several of these cells is tested once: a second test gives the same distance,
-            // which can neither beat the best nor tie it with a lower index.
-            if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
-            tested_by_[static_cast<std::size_t>(f)] = i;
-            const Box& box =
-                triangle_boxes_[static_cast<std::size_t>(f)];  // cheap reject: the box is farther than the best
-            if ((p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm() > best_distance * best_distance) continue;
-            const Triangle& t = surface.topology.faces[static_cast<std::size_t>(f)];
-            const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
-            const double distance = (p - q.point).norm();
-            if (distance < best_distance || (distance == best_distance && f < best.triangle)) {
-              best_distance = distance;
-              best = Nearest{f, q.point, q.weights};
-            }
-          }
-        }
+    for_each_grid_triangle(p, search, i, [&](int f) {
+      const Box& box = triangle_boxes_[static_cast<std::size_t>(f)];  // cheap reject: the box is farther than the best
+      if ((p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm() > best_distance * best_distance) return;
+      const Triangle& t = surface.topology.faces[static_cast<std::size_t>(f)];
+      const ClosestPoint q = closest_point_on_triangle(p, x_surface[t[0]], x_surface[t[1]], x_surface[t[2]]);
+      const double distance = (p - q.point).norm();
+      if (distance < best_distance || (distance == best_distance && f < best.triangle)) {
+        best_distance = distance;
+        best = Nearest{f, q.point, q.weights};
       }
-    }
+    });
     if (best.triangle >= 0) visit(vertex, best);
   }
 }
@@ -312,24 +318,12 @@ void BodyCollider::collect_self_candidates(const Body& body, std::span<const Vec
     const Vec3 p = x_body[static_cast<std::size_t>(i)];
     for (const int f : exclusion.of(i)) tested_by_[static_cast<std::size_t>(f)] = i;  // its neighbourhood: skipped
     const std::size_t first = c.triangles.size();
-    const Eigen::Vector3i lo = cell_of(p - Vec3::Constant(reach));
-    const Eigen::Vector3i hi = cell_of(p + Vec3::Constant(reach)).cwiseMin(grid_cells_ - Eigen::Vector3i::Ones());
-    for (int cx = lo.x(); cx <= hi.x(); ++cx) {
-      for (int cy = lo.y(); cy <= hi.y(); ++cy) {
-        for (int cz = lo.z(); cz <= hi.z(); ++cz) {
-          const auto cell = static_cast<std::size_t>(cell_index(cx, cy, cz));
-          for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-            const int f = cell_triangles_[static_cast<std::size_t>(k)];
-            if (tested_by_[static_cast<std::size_t>(f)] == i) continue;
-            tested_by_[static_cast<std::size_t>(f)] = i;
-            const Box& b = triangle_boxes_[static_cast<std::size_t>(f)];
-            if ((p - p.cwiseMax(b.lo).cwiseMin(b.hi)).squaredNorm() > reach * reach) continue;
-            const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
-            if (distance_to_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]) <= reach) c.triangles.push_back(f);
-          }
-        }
-      }
-    }
+    for_each_grid_triangle(p, reach, i, [&](int f) {
+      const Box& b = triangle_boxes_[static_cast<std::size_t>(f)];
+      if ((p - p.cwiseMax(b.lo).cwiseMin(b.hi)).squaredNorm() > reach * reach) return;
+      const Triangle& t = body.topology.faces[static_cast<std::size_t>(f)];
+      if (distance_to_triangle(p, x_body[t[0]], x_body[t[1]], x_body[t[2]]) <= reach) c.triangles.push_back(f);
+    });
     std::sort(c.triangles.begin() + static_cast<std::ptrdiff_t>(first), c.triangles.end());
     c.start.push_back(static_cast<int>(c.triangles.size()));
   }

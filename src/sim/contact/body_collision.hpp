@@ -163,6 +163,10 @@ class BodyCollider {
   // The cell holding p, each index clamped to [0, kMaxGridCells - 1]: a table never has more cells along an axis,
   // and the clamp keeps a far point's index from overflowing an int.
   Eigen::Vector3i cell_of(const Vec3& p) const;
+  // Calls visit(f) once for each triangle f in the grid cells that the box of half side `reach` around p touches,
+  // skipping those already stamped with `stamp` in tested_by_ (and stamping the rest).
+  template <class Visit>
+  void for_each_grid_triangle(const Vec3& p, double reach, int stamp, Visit&& visit);
   int cell_index(int cx, int cy, int cz) const { return (cx * grid_cells_.y() + cy) * grid_cells_.z() + cz; }
 
   std::vector<Box> boxes_;           // per body, this step
