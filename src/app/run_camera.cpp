@@ -41,9 +41,13 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
 
 void frame_the_motion(render::RenderSettings& settings, const output::MotionTrack& motion) {
   if (motion.samples().empty()) return;
+  std::vector<double> frame_times_s;
+  for (const output::MotionSample& sample : motion.samples()) frame_times_s.push_back(sample.time_s);
+  const render::Bounds bodies{to_glm(motion.swept_min()), to_glm(motion.swept_max())};
+  const render::Bounds box = render::including_moving_colliders(render::including_colliders(bodies, settings.colliders),
+                                                                settings.moving_colliders, frame_times_s);
   settings.camera = render::frame_swept_box(
-      render::including_colliders({to_glm(motion.swept_min()), to_glm(motion.swept_max())}, settings.colliders),
-      static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
+      box, static_cast<float>(settings.width_px) / static_cast<float>(settings.height_px), settings.camera.fov_deg);
 }
 
 }  // namespace app

@@ -21,8 +21,8 @@ output::MotionTrack motion_of_the_run(PreparedRun& run, const frames::Checkpoint
                                       sim::StopQuery stop = frames::stop_requested);
 
 // `settings.camera` becomes the camera that frames the box every body sweeps in `motion` and the bounded colliders
-// take, at the settings' aspect and field of view (render/camera_framing.hpp); nothing changes when `motion` has no
-// frame.
+// take (a keyframed one over the frames' times), at the settings' aspect and field of view (render/camera_framing.hpp);
+// nothing changes when `motion` has no frame.
 void frame_the_motion(render::RenderSettings& settings, const output::MotionTrack& motion);
 
 }  // namespace app

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -20,6 +21,20 @@ Bounds including_colliders(const Bounds& swept, std::span<const sim::ColliderGeo
                        glm::vec3(static_cast<float>(hi.x()), static_cast<float>(hi.y()), static_cast<float>(hi.z())));
   }
   return box;
+}
+
+Bounds including_moving_colliders(const Bounds& swept, std::span<const sim::Collider> moving,
+                                  std::span<const double> frame_times_s) {
+  if (frame_times_s.empty()) return swept;
+  const auto [first, last] = std::minmax_element(frame_times_s.begin(), frame_times_s.end());
+  std::vector<sim::ColliderGeometry> poses;
+  for (const sim::Collider& collider : moving) {
+    for (const double time_s : frame_times_s) poses.push_back(sim::collider_at(collider, time_s));
+    for (const sim::ColliderKey& key : collider.motion.keys) {
+      if (key.time_s > *first && key.time_s < *last) poses.push_back(sim::collider_at(collider, key.time_s));
+    }
+  }
+  return including_colliders(swept, poses);
 }
 
 CameraSettings frame_swept_box(const Bounds& swept, float aspect, float fov_deg, float margin) {

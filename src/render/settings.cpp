@@ -29,7 +29,14 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
     settings.body_colors.push_back(to_glm(body.color));
     settings.body_patterns.push_back(static_cast<int>(body.pattern));
   }
-  for (const sim::Collider& collider : scene.colliders) {
+  use_world_colliders(settings, scene.colliders);
+  return settings;
+}
+
+void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders) {
+  settings.colliders.clear();
+  settings.moving_colliders.clear();
+  for (const sim::Collider& collider : colliders) {
     if (!collider.motion.moving()) {
       settings.colliders.push_back(collider.geometry);
       continue;
@@ -37,12 +44,6 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
     settings.colliders.push_back(sim::collider_at(collider, collider.motion.keys.front().time_s));
     settings.moving_colliders.push_back(collider);
   }
-  return settings;
-}
-
-void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders) {
-  settings.colliders.clear();
-  for (const sim::Collider& collider : colliders) settings.colliders.push_back(collider.geometry);
 }
 
 }  // namespace render

@@ -50,7 +50,7 @@ struct RenderSettings {
 RenderSettings settings_from_scene(const scene::Scene& scene);
 
 // Draws `colliders` (the world's) instead of the scene's: setup reads a mesh collider's triangles, which the scene
-// only names.
+// only names. A keyframed collider is drawn at its first key's pose and moved by each frame's time.
 void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders);
 
 }  // namespace render
