@@ -1,5 +1,6 @@
 // Exported colliders: a static one written once, a keyframed one per frame (or as a point cache) where its keys put
-// it at each frame's time, with no frames of an earlier run left beside a new run's.
+// it at each frame's time, with no files of an earlier run left beside a new run's (frames, nor a collider that was
+// static and is keyframed now, or the other way round), and nothing else removed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -122,6 +123,52 @@ TEST(ColliderExport, NewRunLeavesNoStaleColliderFrames) {
   export_scene(write_scene(dir, "short.json", 0.1, true), dir / "out", "--format ply");
   EXPECT_EQ(collider_files(dir / "out"),
             (std::vector<std::string>{"collider_0_0000.ply", "collider_0_0001.ply", "collider_1.ply"}));
+}
+
+// A collider that was static in the earlier export into the same folder and is keyframed now (and back): the new run
+// leaves no file of its earlier kind.
+TEST(ColliderExport, StaticThenKeyframedLeavesNoFileOfTheEarlierKind) {
+  const std::filesystem::path dir = testing_support::scratch_dir("collider_export_kind");
+  const std::filesystem::path still = write_scene(dir, "static.json", 0.2, false);
+  const std::filesystem::path moving = write_scene(dir, "moving.json", 0.2, true);
+  export_scene(still, dir / "out", "");
+  export_scene(moving, dir / "out", "");
+  EXPECT_EQ(collider_files(dir / "out"), (std::vector<std::string>{"collider_0_0000.obj", "collider_0_0001.obj",
+                                                                   "collider_0_0002.obj", "collider_1.obj"}));
+  export_scene(still, dir / "out", "");
+  EXPECT_EQ(collider_files(dir / "out"), (std::vector<std::string>{"collider_0.obj", "collider_1.obj"}));
+
+  // Point caches: the keyframed box's cache goes when the box is static (an import would move it by the cache).
+  export_scene(moving, dir / "cache", "--format pc2");
+  EXPECT_EQ(collider_files(dir / "cache"),
+            (std::vector<std::string>{"collider_0.obj", "collider_0.pc2", "collider_1.obj"}));
+  export_scene(still, dir / "cache", "--format mdd");
+  EXPECT_EQ(collider_files(dir / "cache"), (std::vector<std::string>{"collider_0.obj", "collider_1.obj"}));
+}
+
+// Only the files a run names so are removed: not a near name, not a folder, not one of the run's inputs (a body mesh
+// kept in the output folder under a collider's name).
+TEST(ColliderExport, ANewRunRemovesOnlyItsOwnNames) {
+  const std::filesystem::path dir = testing_support::scratch_dir("collider_export_names");
+  const std::filesystem::path out = dir / "out";
+  std::filesystem::create_directories(out / "collider_5.obj");  // a folder
+  std::filesystem::copy_file(testing_support::data_path("cube_quads.obj"), out / "collider_7.obj");
+  const std::vector<std::string> kept = {"collider_01.obj", "collider_2.obj.bak", "collider_x.obj",
+                                         "collider_3.stl",  "collider_-1.obj",    "Collider_4.obj"};
+  for (const std::string& name : kept) std::ofstream(out / name) << "# not softbody's\n";
+  std::ofstream(out / "collider_9.obj") << "# an earlier run's\n";
+  std::ofstream(dir / "scene.json") << R"({ "duration": 0.1, "fps": 10,
+    "colliders": [ { "shape": "sphere", "radius": 0.3, "position": [-3, 0.3, 0] } ],
+    "bodies": [ { "mesh": "out/collider_7.obj", "scale": 0.2, "position": [0, 0.3, 0] } ] })";
+  const testing_support::CommandResult result =
+      testing_support::run_softbody("export " + (dir / "scene.json").string() + " -o " + out.string());
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("removed an earlier run's outputs before writing: 1 collider files"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "collider_9.obj"));
+  EXPECT_TRUE(std::filesystem::is_directory(out / "collider_5.obj"));
+  EXPECT_EQ(file_bytes(out / "collider_7.obj"), file_bytes(testing_support::data_path("cube_quads.obj")));
+  for (const std::string& name : kept) EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
 }
 
 // export --resume vouches for a frame only when the manifest vouches for its collider files too: a collider frame

@@ -53,6 +53,16 @@ void refuse_colliders_onto_inputs(const std::filesystem::path& dir, std::size_t 
   }
 }
 
+// Says on standard error what an earlier run left that a new one removed, if anything.
+void note_removed(const std::filesystem::path& dir, int frame_files, int collider_files) {
+  std::string removed;
+  if (frame_files > 0) removed = std::to_string(frame_files) + " frame files";
+  if (collider_files > 0) removed += (removed.empty() ? "" : ", ") + std::to_string(collider_files) + " collider files";
+  if (!removed.empty())
+    std::fprintf(stderr, "note: %s: removed an earlier run's outputs before writing: %s\n", dir.c_str(),
+                 removed.c_str());
+}
+
 // --format pc2 | mdd: DIR/body<N>.obj and DIR/body<N>.pc2 (.mdd), written when the run ends.
 int run_point_cache_export(const ExportOptions& options, output::PointCacheFormat format) {
   if (options.resume) {
@@ -88,7 +98,9 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
       run_identity("export", run.scene,
                    export_output_settings(format == output::PointCacheFormat::Pc2 ? "pc2" : "mdd")),
       output::FolderLock::Sharing::Exclusive, "export " + run.scene.source.string());
-  output::remove_stale_temporaries(dir);                            // a killed run's half-written cache
+  output::remove_stale_temporaries(dir);  // a killed run's half-written cache
+  // An earlier run's colliders: a cache of one that is static now would move its mesh on import.
+  note_removed(dir, 0, output::remove_collider_files(dir, std::vector<std::string>{".obj", ".pc2", ".mdd"}, inputs));
   output::write_colliders(dir, run.world.model.colliders, ".obj");  // static: once, before the frames
   std::vector<frames::FrameSink*> sinks = {&exporter, &collider_caches};
   const frames::RunStats stats =
@@ -100,15 +112,14 @@ int run_point_cache_export(const ExportOptions& options, output::PointCacheForma
   return 0;
 }
 
-// A whole new run: an earlier run's meshes and collider frames (whatever their numbers) go first, so that a run
-// that fails or is interrupted leaves only its own frames, never a mix of two runs. Says how many went.
+// A whole new run: an earlier run's meshes, collider frames (whatever their numbers) and static colliders (whatever
+// their indices) go first, so that a run that fails or is interrupted leaves only its own files, never a mix of two
+// runs, and a collider that was static then and is keyframed now leaves no collider_<N> file behind (nor one the
+// scene no longer has). Says how many went.
 void remove_earlier_meshes(const std::filesystem::path& dir, const std::string& pattern,
-                           const std::string& collider_extension) {
-  const int removed =
-      output::remove_frame_files(dir, pattern) + output::remove_collider_frames(dir, collider_extension);
-  if (removed > 0)
-    std::fprintf(stderr, "note: %s: removed an earlier run's outputs before writing: %d frame files\n", dir.c_str(),
-                 removed);
+                           const std::string& collider_extension, const std::vector<output::InputFile>& inputs) {
+  const int frames = output::remove_frame_files(dir, pattern) + output::remove_collider_frames(dir, collider_extension);
+  note_removed(dir, frames, output::remove_collider_files(dir, std::vector<std::string>{collider_extension}, inputs));
 }
 
 int run_export(const ExportOptions& options) {
@@ -146,7 +157,7 @@ int run_export(const ExportOptions& options) {
                                 "export " + run.scene.source.string());
   output::remove_stale_temporaries(dir);
   if (!options.resume && planned.plan().frames.everything())
-    remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension);
+    remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension, scene_inputs(run.scene));
   output::write_colliders(dir, run.world.model.colliders, collider_extension);  // static: once, before the frames
   std::unique_ptr<ResumableRun> resumable;
   output::RunManifest manifest;
@@ -169,7 +180,7 @@ int run_export(const ExportOptions& options) {
     };
     resumable = std::make_unique<ResumableRun>(run, store, frame_done, dir);
     if (resumable->resumed_after() < 0)
-      remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension);  // a new run
+      remove_earlier_meshes(dir, exporter.frame_pattern(), collider_extension, scene_inputs(run.scene));  // a new run
     std::vector<std::string> kept;
     for (int frame = 0; frame <= resumable->resumed_after(); ++frame) {
       kept.push_back(exporter.frame_path(frame).filename().string());

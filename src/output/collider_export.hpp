@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh/trimesh.hpp"
+#include "output/input_guard.hpp"
 #include "sim/model/settings.hpp"
 
 namespace output {
@@ -20,6 +21,13 @@ std::filesystem::path collider_path(const std::filesystem::path& dir, std::size_
 // draws it, a mesh as its own vertices and triangles (placed), a plane as a square of side 2 plane_half_size_m
 // around its point nearest the origin. A shape's vertex count does not depend on its pose.
 mesh::TriMesh collider_surface(const sim::ColliderGeometry& geometry, double plane_half_size_m = 10.0);
+
+// Removes from `dir` an earlier run's whole-run collider files, collider_<N><extension> for each of `extensions`
+// (whatever N), before a whole new run writes its own, so that a collider that was static then and is keyframed now
+// (or had a point cache and is static now), or one the scene no longer has, leaves no file behind. Only regular files
+// named exactly so, and none of `inputs`. Returns how many.
+int remove_collider_files(const std::filesystem::path& dir, std::span<const std::string> extensions,
+                          const std::vector<InputFile>& inputs);
 
 // Writes every static collider (a keyframed one is left to the moving colliders' exporters). Returns the paths
 // written.

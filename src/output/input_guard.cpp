@@ -22,6 +22,13 @@ bool same_file(const fs::path& a, const fs::path& b) {
 
 }  // namespace
 
+bool is_input(const fs::path& file, const std::vector<InputFile>& inputs) {
+  for (const InputFile& input : inputs) {
+    if (same_file(file, input.path)) return true;
+  }
+  return false;
+}
+
 void refuse_output_onto_inputs(const fs::path& target, const std::vector<InputFile>& inputs,
                                const std::string& option) {
   for (const InputFile& input : inputs) {

@@ -21,6 +21,9 @@ struct InputFile {
 void refuse_output_onto_inputs(const std::filesystem::path& target, const std::vector<InputFile>& inputs,
                                const std::string& option);
 
+// True when `file` exists and is one of `inputs` (the same file, whatever the spelling).
+bool is_input(const std::filesystem::path& file, const std::vector<InputFile>& inputs);
+
 // The same for numbered outputs: the files `name_of(0)` .. `name_of(last)` in `dir` (a run's frames, which a
 // new run also removes first). Looks only at the inputs inside `dir`, and only at their own names' numbers.
 void refuse_numbered_outputs_onto_inputs(const std::filesystem::path& dir, int last,
