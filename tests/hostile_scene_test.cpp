@@ -119,7 +119,16 @@ INSTANTIATE_TEST_SUITE_P(
                      HOSTILE "many_icospheres.json: limits.max_total_vertices: the scene's bodies hold 49152600 "
                              "vertices (meshes and simulation proxies), more than the limit of"},
         HostileScene{"scenes/bounce.json --set limits.max_total_triangles=100",
-                     "limits.max_total_triangles: the scene's bodies hold 1280 triangles"}),
+                     "limits.max_total_triangles: the scene's bodies hold 1280 triangles"},
+        // Collider meshes count too: a generator's before it is built, a file's as it is read.
+        HostileScene{"scenes/stairs.json --set colliders.0.mesh=torus:512,256 --set limits.max_total_vertices=100000",
+                     "stairs.json: limits.max_total_vertices: the scene's bodies and collider meshes hold 131714 "
+                     "vertices (bodies 642, collider meshes 131072, the largest colliders.0.mesh with 131072), more "
+                     "than the limit of 100000: expected fewer or smaller bodies or collider meshes, or a larger "
+                     "limits.max_total_vertices"},
+        HostileScene{"scenes/stairs.json --set limits.max_total_vertices=650",
+                     "limits.max_total_vertices: the scene's bodies and collider meshes hold 674 vertices (bodies 642, "
+                     "collider meshes 32, the largest colliders.0.mesh with 32)"}),
     [](const auto& test) {
       std::string name = std::to_string(test.index) + "_" + test.param.arguments;
       if (name.rfind("tests/data/hostile/") != std::string::npos) name.erase(name.find("tests/data/hostile/"), 19);

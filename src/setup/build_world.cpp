@@ -111,10 +111,10 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   sim::Model model = sim::make_model(scene.gravity_m_per_s2, scene.floor, solver);
   model.body_contact = scene.collisions;
   model.colliders = scene.colliders;
-  load_collider_meshes(scene, model.colliders, notes);
-  sim::State state = sim::initial_state(model);
   SceneTotals totals(scene);
   totals.check();  // generators' sizes and proxies' counts are known before any mesh is built
+  load_collider_meshes(scene, model.colliders, notes, totals);
+  sim::State state = sim::initial_state(model);
   double heaviest_vertex_kg = 0.0;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];

@@ -25,16 +25,22 @@ mesh::TriMesh read_scaled(const scene::ColliderMeshSource& source, const mesh::M
 }  // namespace
 
 void load_collider_meshes(const scene::Scene& scene, std::vector<sim::Collider>& colliders,
-                          std::vector<std::string>& notes) {
-  for (const scene::ColliderMeshSource& source : scene.collider_meshes) {
+                          std::vector<std::string>& notes, SceneTotals& totals) {
+  for (std::size_t s = 0; s < scene.collider_meshes.size(); ++s) {
+    const scene::ColliderMeshSource& source = scene.collider_meshes[s];
     const std::string key = scene.source.string() + ": colliders." + std::to_string(source.collider) + ".mesh";
     const std::string what = softbody::one_line(source.mesh_file.empty() ? source.mesh : source.mesh_file.string());
     sim::ColliderGeometry& geometry = colliders.at(source.collider).geometry;
+    mesh::TriMesh m;
     try {
-      mesh::TriMesh m = read_scaled(source, scene.limits);
-      geometry.mesh = sim::make_collider_mesh(std::move(m.vertices), std::move(m.triangles), source.thickness_m);
+      m = read_scaled(source, scene.limits);
     } catch (const softbody::InputError& e) {
       throw softbody::InputError(key + ": mesh " + what + " " + e.what());
+    }
+    totals.count_collider(s, {static_cast<long long>(m.vertices.size()), static_cast<long long>(m.triangles.size())});
+    totals.check();  // as each mesh file is read
+    try {
+      geometry.mesh = sim::make_collider_mesh(std::move(m.vertices), std::move(m.triangles), source.thickness_m);
     } catch (const std::invalid_argument& e) {
       throw softbody::InputError(key + ": mesh " + what + ": " + e.what() + " (expected a triangle mesh)");
     }

@@ -16,6 +16,15 @@ std::vector<long long> arguments_of(const std::string& spec) {
   return arguments;
 }
 
+MeshSize sum(const std::vector<MeshSize>& sizes) {
+  MeshSize total;
+  for (const MeshSize& size : sizes) {
+    total.vertices += size.vertices;
+    total.triangles += size.triangles;
+  }
+  return total;
+}
+
 // A closed surface of genus 0 with T triangles has V = T/2 + 2 vertices (Euler: V − E + F = 2, E = 3F/2).
 MeshSize sphere_like(long long triangles) { return {triangles / 2 + 2, triangles}; }
 
@@ -41,26 +50,40 @@ SceneTotals::SceneTotals(const scene::Scene& scene) : scene_(scene) {
     known.triangles += 2 * body.resolution_vertices;  // and twice as many triangles
     bodies_.push_back(known);
   }
+  for (const scene::ColliderMeshSource& collider : scene.collider_meshes)
+    colliders_.push_back(collider.mesh_file.empty() ? generator_size(collider.mesh) : MeshSize{});
 }
 
 void SceneTotals::count(std::size_t index, MeshSize size) { bodies_.at(index) = size; }
 
+void SceneTotals::count_collider(std::size_t source, MeshSize size) { colliders_.at(source) = size; }
+
 void SceneTotals::check() const {
-  MeshSize total;
-  for (const MeshSize& body : bodies_) {
-    total.vertices += body.vertices;
-    total.triangles += body.triangles;
-  }
-  const auto refuse = [&](const char* what, long long count, long long limit, const char* key) {
-    throw softbody::InputError(scene_.source.string() + ": limits." + key + ": the scene's bodies hold " +
-                               std::to_string(count) + " " + what +
-                               " (meshes and simulation proxies), more than the limit of " + std::to_string(limit) +
-                               ": expected fewer or smaller bodies, or a larger limits." + key);
+  const MeshSize bodies = sum(bodies_), colliders = sum(colliders_);
+  // "the scene's bodies hold 1280 triangles (meshes and simulation proxies)", with the collider meshes' share and the
+  // largest of them where they hold any.
+  const auto held = [&](const char* what, long long MeshSize::*count) {
+    const long long total = bodies.*count + colliders.*count;
+    if (colliders.*count == 0)
+      return "the scene's bodies hold " + std::to_string(total) + " " + what + " (meshes and simulation proxies)";
+    std::size_t largest = 0;
+    for (std::size_t c = 1; c < colliders_.size(); ++c) {
+      if (colliders_[c].*count > colliders_[largest].*count) largest = c;
+    }
+    return "the scene's bodies and collider meshes hold " + std::to_string(total) + " " + what + " (bodies " +
+           std::to_string(bodies.*count) + ", collider meshes " + std::to_string(colliders.*count) +
+           ", the largest colliders." + std::to_string(scene_.collider_meshes.at(largest).collider) + ".mesh with " +
+           std::to_string(colliders_[largest].*count) + ")";
   };
-  if (total.vertices > scene_.totals.max_vertices)
-    refuse("vertices", total.vertices, scene_.totals.max_vertices, "max_total_vertices");
-  if (total.triangles > scene_.totals.max_triangles)
-    refuse("triangles", total.triangles, scene_.totals.max_triangles, "max_total_triangles");
+  const auto refuse = [&](const char* what, long long MeshSize::*count, long long limit, const char* key) {
+    throw softbody::InputError(scene_.source.string() + ": limits." + key + ": " + held(what, count) +
+                               ", more than the limit of " + std::to_string(limit) +
+                               ": expected fewer or smaller bodies or collider meshes, or a larger limits." + key);
+  };
+  if (bodies.vertices + colliders.vertices > scene_.totals.max_vertices)
+    refuse("vertices", &MeshSize::vertices, scene_.totals.max_vertices, "max_total_vertices");
+  if (bodies.triangles + colliders.triangles > scene_.totals.max_triangles)
+    refuse("triangles", &MeshSize::triangles, scene_.totals.max_triangles, "max_total_triangles");
 }
 
 }  // namespace setup
