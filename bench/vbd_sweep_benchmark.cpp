@@ -52,6 +52,8 @@ void BM_VbdSweep(benchmark::State& st) {
   st.counters["steps_per_call"] = static_cast<double>(vbd.statistics().steps) / static_cast<double>(st.iterations());
   st.counters["ns_per_vertex_sweep"] =
       benchmark::Counter(vertex_sweeps * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  st.counters["sure_fraction"] =
+      static_cast<double>(vbd.statistics().sure_steps) / static_cast<double>(vbd.statistics().vertex_solves);
   st.counters["halvings_per_solve"] =
       static_cast<double>(vbd.statistics().halvings) / static_cast<double>(vbd.statistics().vertex_solves);
 }

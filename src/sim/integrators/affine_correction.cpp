@@ -128,23 +128,25 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   }
   // Constraints: (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part.
   const DistanceConstraints& constraints = body.constraints;
+  const double inverse_h = 1.0 / s.h_hat;
   for (std::size_t e = 0; e < constraints.size(); ++e) {
     const auto [i, j] = constraints.ends[e];
     const Vec3 d = x[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(j)];
     const double length = d.norm();
     if (length == 0.0) continue;
-    const Vec3 axis = d / length;
-    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] / s.h_hat;
+    const double inverse_length = 1.0 / length;
+    const Vec3 axis = inverse_length * d;
+    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] * inverse_h;
     const double rate = ((x[static_cast<std::size_t>(i)] - s.base[static_cast<std::size_t>(i)]) -
                          (x[static_cast<std::size_t>(j)] - s.base[static_cast<std::size_t>(j)]))
                             .dot(axis);
     const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
-    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] / length);
+    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] * inverse_length);
     const double along = k + c_over_h - transverse;
     for (int row = 0; row < 3; ++row) {
       for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
     }
-    moments.add_edge(transverse, along / (length * length), d);
+    moments.add_edge(transverse, along * inverse_length * inverse_length, d);
   }
   moments.spread_into(K);
   // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ.

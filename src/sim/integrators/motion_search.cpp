@@ -46,19 +46,20 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
     }
   }
   const DistanceConstraints& constraints = body.constraints;
+  const double half_over_h = 0.5 / s.h_hat;
   for (std::size_t e = 0; e < constraints.size(); ++e) {
     const auto [i, j] = constraints.ends[e];
     const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
     const Vec3 d = x[vi] - x[vj];
     const double before = d.norm();
     if (before == 0.0) continue;
-    const Vec3 axis = d / before;
+    const Vec3 axis = (1.0 / before) * d;
     const Vec3 relative = alpha * (motion[vi] - motion[vj]);
     const double after = (d + relative).norm();
     const double k = constraints.stiffness_N_per_m[e], rest = constraints.rest_length_m[e];
     change += 0.5 * k * (after - before) * (after + before - 2.0 * rest);
     const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis), along = relative.dot(axis);
-    change += 0.5 * constraints.damping_N_s_per_m[e] / s.h_hat * along * (2.0 * rate + along);
+    change += half_over_h * constraints.damping_N_s_per_m[e] * along * (2.0 * rate + along);
   }
   if (s.gas) {
     std::vector<Vec3>& trial = scratch.trial;

@@ -128,7 +128,10 @@ void VertexBlockDescent::visit_vertex(const BodySolve& s, int i, std::span<Vec3>
   const double slope = terms.gradient.dot(direction);  // ∇E·Δ < 0
   if (!(slope < 0.0)) return;                          // converged to round-off (or not finite): stay
   double alpha = 1.0;
-  if (direction.squaredNorm() > s.negligible_step_m * s.negligible_step_m) {
+  const bool negligible = direction.squaredNorm() <= s.negligible_step_m * s.negligible_step_m;
+  const bool sure = !negligible && sure_descent(s, terms, x[vi], volume, direction, slope);
+  statistics_.sure_steps += sure ? 1 : 0;
+  if (!negligible && !sure) {
     for (int halving = 0;; ++halving, alpha *= 0.5) {
       if (halving > kMostHalvings) {
         ++statistics_.refused_moves;
