@@ -75,12 +75,18 @@ double collider_energy_change(const SmoothCollider& collider, const ColliderLag&
          smooth_collider_terms(collider, lag, m, x, base, h_hat);
 }
 
-Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x) {
+Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x, const ConstraintLags& lags) {
   const Vec3 xi = x[static_cast<std::size_t>(i)];
   Vec3 sum = Vec3::Zero();
   for (int f = blocks.face_start[static_cast<std::size_t>(i)]; f < blocks.face_start[static_cast<std::size_t>(i) + 1];
        ++f) {
-    const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+    const auto vf = static_cast<std::size_t>(f);
+    const auto [slot_b, slot_c] = blocks.face_slots[vf];
+    if (slot_b >= 0 && slot_c >= 0) {  // (x_i − x_b) × (x_i − x_c), the same bits as (x_b − x_i) × (x_c − x_i)
+      sum += lags.offset[static_cast<std::size_t>(slot_b)].cross(lags.offset[static_cast<std::size_t>(slot_c)]);
+      continue;
+    }
+    const auto [b, c] = blocks.face_others[vf];
     sum += (x[static_cast<std::size_t>(b)] - xi).cross(x[static_cast<std::size_t>(c)] - xi);
   }
   return sum;
@@ -103,6 +109,7 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
     const auto j = static_cast<std::size_t>(blocks.other_end[ve]);
     const Vec3 d = xi - x[j];
     const double length = d.norm();
+    lags.offset[slot] = d;
     lags.length_m[slot] = length;
     terms.shortest_m = std::min(terms.shortest_m, length);
     if (length == 0.0) {  // coincident ends: no direction, no force, no curvature
@@ -123,7 +130,7 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
     terms.hessian.add_outer(k + c_over_h - transverse, axis);
   }
   if (s.gas) {
-    terms.volume_gradient = six_volume_gradient(blocks, i, x) / 6.0;  // g_i [m²]
+    terms.volume_gradient = six_volume_gradient(blocks, i, x, lags) * (1.0 / 6.0);  // g_i [m²]
     terms.gradient -= s.gas->pressure(volume) * terms.volume_gradient;
     terms.hessian.add_outer(s.gas->stiffness(volume), terms.volume_gradient);
   }

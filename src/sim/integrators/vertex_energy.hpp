@@ -102,20 +102,24 @@ ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const V
 // That collider's terms' change of E when the vertex moves from x by step, with the lags taken at x [J].
 double collider_energy_change(const SmoothCollider& collider, const ColliderLag& lag, double m, const Vec3& x,
                               const Vec3& step, const Vec3& base, double h_hat);
-// Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²].
-Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x);
 
 // One vertex's constraints as its visit found them: direction n̂, length l [m] and ĥ × approach speed [m].
 struct ConstraintLags {
+  std::vector<Vec3> offset;  // x_i − x_j [m]
   std::vector<Vec3> axis;
   std::vector<double> length_m, rate_m;
   std::vector<ColliderLag> colliders;  // per smooth collider (sized by the integrator once)
   void resize(std::size_t most_constraints) {
+    offset.resize(most_constraints);
     axis.resize(most_constraints);
     length_m.resize(most_constraints);
     rate_m.resize(most_constraints);
   }
 };
+
+// Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²], with the edge vectors x_i − x_j that vertex_terms left in
+// lags.offset where the corners are among the vertex's constraints.
+Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x, const ConstraintLags& lags);
 
 // ∇_i E and H_i of vertex i at x, with what its line search reuses.
 struct VertexTerms {
