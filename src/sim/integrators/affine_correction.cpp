@@ -95,7 +95,7 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 }  // namespace
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch) {
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble) {
   std::vector<Vec3>& area_sums = scratch.area_sums;
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
@@ -112,17 +112,17 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
-    moments.add_inertia(m * s.inverse_h2, r);
+    if (assemble) moments.add_inertia(m * s.inverse_h2, r);
     Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, K);
     }
     for (const SmoothCollider& collider : s.colliders) {
       Block3 hessian;
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);
   }
@@ -141,14 +141,15 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
                          (x[static_cast<std::size_t>(j)] - s.base[static_cast<std::size_t>(j)]))
                             .dot(axis);
     const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
-    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] * inverse_length);
-    const double along = k + c_over_h - transverse;
     for (int row = 0; row < 3; ++row) {
       for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
     }
+    if (!assemble) continue;
+    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] * inverse_length);
+    const double along = k + c_over_h - transverse;
     moments.add_edge(transverse, along * inverse_length * inverse_length, d);
   }
-  moments.spread_into(K);
+  if (assemble) moments.spread_into(K);
   // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ.
   double volume = 0.0;
   if (s.gas) {
@@ -156,9 +157,10 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     Vector12 u = Vector12::Zero();
     for (std::size_t i = 0; i < n; ++i) add_gradient(area_sums[i] / 6.0, x[i] - centre, u);
     G -= s.gas->pressure(volume) * u;
-    K += s.gas->stiffness(volume) * u * u.transpose();
+    if (assemble) K += s.gas->stiffness(volume) * u * u.transpose();
   }
-  const Vector12 q = K.ldlt().solve(-G);
+  if (assemble) scratch.factor.compute(K);
+  const Vector12 q = scratch.factor.solve(-G);
   const double slope = G.dot(q);
   if (!(slope < 0.0)) return false;
   std::vector<Vec3>& motion = scratch.search.motion;

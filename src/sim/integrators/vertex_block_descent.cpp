@@ -111,7 +111,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
-    if (coarse_) affine_correction(body, s, x, coarse_scratch_);
+    if (coarse_) affine_correction(body, s, x, coarse_scratch_, sweep == 0);
     if (aggregates_ > 0) coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0, coarse_level_scratch_);
     double volume = s.gas ? enclosed_volume(body.topology.faces, x) : 0.0;  // afresh each sweep: no drift
     for (const int i : blocks.colouring.vertices) visit_vertex(s, i, x, volume);
