@@ -20,8 +20,7 @@ namespace sim {
 // then searches α on E's change along B q as a vertex does (sim/integrators/motion_search.hpp).
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct AffineScratch {
-  std::vector<Vec3> area_sums;                        // the gas's per-vertex sums
-  MotionScratch search;                               // B q per vertex [m], and the line search's buffers
+  MotionScratch search;  // B q per vertex [m], the line search's buffers, and V after the call
   Eigen::LDLT<Eigen::Matrix<double, 12, 12>> factor;  // of Bᵀ H B, as the last assembly left it
 };
 

@@ -113,7 +113,12 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
     if (coarse_) affine_correction(body, s, x, coarse_scratch_, sweep == 0);
     if (aggregates_ > 0) coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0, coarse_level_scratch_);
-    double volume = s.gas ? enclosed_volume(body.topology.faces, x) : 0.0;  // afresh each sweep: no drift
+    // V afresh each sweep (no drift): the affine correction's, where it made the last move.
+    double volume = 0.0;
+    if (s.gas) {
+      volume =
+          coarse_ && aggregates_ == 0 ? coarse_scratch_.search.volume_after : enclosed_volume(body.topology.faces, x);
+    }
     for (const int i : blocks.colouring.vertices) visit_vertex(s, i, x, volume);
   }
 }
