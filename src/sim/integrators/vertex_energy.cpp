@@ -141,18 +141,23 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   return terms;
 }
 
+// β: the derivative of (I − n̂n̂ᵀ)/l along a unit vector at cosine c to n̂ has the norm (|c| + √(4 − 3c²))/(2l²), at
+// most 2/(√3 l²) (at c² = 1/3); rounded up.
+constexpr double kSpringHessianVariation = 1.1547006;
+
 bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
                   double slope) {
   if (!s.colliders.empty()) return false;
   if (s.floor && (terms.floor.depth_m > 0.0 || s.floor->height_m - (x.y() + step.y()) > 0.0)) return false;
   const double length = step.norm();
   if (!(length < 0.5 * terms.shortest_m)) return false;
-  // Along the step every l ≥ l (1 − |Δ|/l_shortest) ≥ l/2, so the springs' B ≤ 6 |Δ| Σ k L0/l² / (1 − |Δ|/l_shortest)²;
+  // Along the step every l ≥ l (1 − |Δ|/l_shortest) ≥ l/2, so the springs' B ≤ β |Δ| Σ k L0/l² / (1 − |Δ|/l_shortest)²;
   // both sides below are multiplied by (l_shortest − |Δ|)² / l_shortest² to spare the divisions.
   const double margin = terms.shortest_m - length, margin2 = margin * margin;  // [m²]
   const double allowed = -0.5 * slope * margin2;  // ½|∇E·Δ| (l_shortest − |Δ|)² [J m²]
   const double length2 = length * length;
-  double spent = 6.0 * length * length2 * terms.spring_variation * terms.shortest_m * terms.shortest_m;
+  double spent =
+      kSpringHessianVariation * length * length2 * terms.spring_variation * terms.shortest_m * terms.shortest_m;
   if (s.gas) {
     if (volume <= s.gas->guard_m3) return false;                    // E linear in V here, curving up past the guard
     const double after = volume + terms.volume_gradient.dot(step);  // V₁: V is affine in x_i

@@ -140,10 +140,11 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
 // search asks (kArmijo), so that the search may be skipped: the same move it would make at α = 1. Along the step
 //   E(x + Δ) − E(x) = ∇E·Δ + ∫₀¹ (1 − t) Δᵀ H(x + tΔ) Δ dt ≤ ½ ∇E·Δ + ½ B |Δ|²,
 // as ∇E·Δ = −Δᵀ H_i Δ and H(x + tΔ) ≤ H_i + B I: the true Hessian at x is at most H_i (H_i only clamps), a spring's
-// ½k(l − L0)² has a Hessian k I − k L0 (I − n̂n̂ᵀ)/l whose change is at most 6 k L0 |Δ| / l_min² (l_min ≥ l − |Δ| along
-// the step), the gas's nRT g gᵀ/V² grows by at most nRT |g|² (1/V₁² − 1/V²) where V falls to V₁, and the dampers and
-// the inertia are quadratic. B |Δ|² ≤ ½ |∇E·Δ| leaves E falling by at least ¼ |∇E·Δ|, far beyond kArmijo and round-off.
-// Not where a smooth contact is near (the floor's terms at either end, or any smooth collider): those always search.
+// ½k(l − L0)² has a Hessian k I − k L0 (I − n̂n̂ᵀ)/l whose change is at most (2/√3) k L0 |Δ| / l_min² (l_min ≥ l − |Δ|
+// along the step), the gas's nRT g gᵀ/V² grows by at most nRT |g|² (1/V₁² − 1/V²) where V falls to V₁, and the dampers
+// and the inertia are quadratic. B |Δ|² ≤ ½ |∇E·Δ| leaves E falling by at least ¼ |∇E·Δ|, far beyond kArmijo and
+// round-off. Not where a smooth contact is near (the floor's terms at either end, or any smooth collider): those always
+// search.
 bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
                   double slope);
 
