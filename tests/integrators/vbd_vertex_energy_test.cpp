@@ -2,6 +2,7 @@
 // energy's change along its moves: the gradient, and the Hessian block with the gas's rank-one part nRT g gᵀ/V², the
 // springs, the dampers, the inertia and the smooth floor's spring, dashpot and friction. Where every spring is
 // stretched the block is E's exact Hessian; a compressed spring's transverse curvature is clamped at zero instead.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -175,6 +176,42 @@ TEST(VbdVertexEnergy, CompressedSpringsAreClampedPositive) {
   }
   EXPECT_GT(against_finite_differences(f, 0).hessian, 1e-3)
       << "the clamp changes the block (so the test above can fail)";
+}
+
+// A Newton step that sure_descent lets skip the line search lowers E by at least a quarter of its slope (so by far more
+// than the search's Armijo condition asks): compressed (buckling), rest-size and stretched balls on the floor, at steps
+// from 1/960 to 1/15 s (the larger the step, the weaker the inertia and the longer the Newton step).
+TEST(VbdVertexEnergy, SureDescentOnlyWhereTheStepLowersTheEnergy) {
+  int sure = 0, unsure = 0;
+  double least_ratio = 1.0;  // the smallest ΔE / (∇E·Δ) of a sure step (the bound says ≥ ¼)
+  for (const double scale : {0.9, 0.98, 1.0, 1.05}) {
+    for (const double h : {1.0 / 960.0, 1.0 / 60.0, 1.0 / 15.0}) {
+      Fixture f(scale);
+      f.h_hat = 2.0 * h / 3.0;
+      const sim::BodySolve s = f.solve();
+      const double volume = sim::enclosed_volume(f.world.model.bodies[0].topology.faces, f.world.state.x);
+      sim::ConstraintLags lags;
+      lags.resize(static_cast<std::size_t>(f.blocks.most_constraints));
+      for (int i = 0; i < static_cast<int>(f.world.state.x.size()); ++i) {
+        const sim::VertexTerms t = sim::vertex_terms(s, i, f.world.state.x, volume, lags);
+        const Vec3 step = -t.hessian.solve(t.gradient);
+        const double slope = t.gradient.dot(step);
+        if (!sim::sure_descent(s, t, f.world.state.x[static_cast<std::size_t>(i)], volume, step, slope)) {
+          ++unsure;
+          continue;
+        }
+        ++sure;
+        const double change = sim::vertex_energy_change(s, i, f.world.state.x, volume, t, lags, step);
+        least_ratio = std::min(least_ratio, change / slope);
+        EXPECT_LE(change, sim::kArmijo * slope) << "scale " << scale << ", h " << h << ", vertex " << i;
+      }
+    }
+  }
+  std::printf("%d sure steps, %d searched; the least decrease of a sure step: %.3f of its slope\n", sure, unsure,
+              least_ratio);
+  EXPECT_GT(sure, 0);
+  EXPECT_GT(unsure, 0);
+  EXPECT_GE(least_ratio, 0.25 - 1e-6);
 }
 
 }  // namespace

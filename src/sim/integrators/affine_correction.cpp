@@ -95,8 +95,7 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 }  // namespace
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch) {
-  std::vector<Vec3>& area_sums = scratch.area_sums;
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble) {
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
@@ -112,57 +111,77 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
-    moments.add_inertia(m * s.inverse_h2, r);
+    if (assemble) moments.add_inertia(m * s.inverse_h2, r);
     Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, K);
     }
     for (const SmoothCollider& collider : s.colliders) {
       Block3 hessian;
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);
   }
   // Constraints: (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part.
+  // Each edge's length, inverse and rate are kept for the line search (MotionScratch::edges_lagged).
   const DistanceConstraints& constraints = body.constraints;
+  const double inverse_h = 1.0 / s.h_hat;
+  MotionScratch& search = scratch.search;
+  search.edge_length_m.resize(constraints.size());
+  search.edge_inverse_length.resize(constraints.size());
+  search.edge_rate_m.resize(constraints.size());
   for (std::size_t e = 0; e < constraints.size(); ++e) {
     const auto [i, j] = constraints.ends[e];
     const Vec3 d = x[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(j)];
     const double length = d.norm();
+    search.edge_length_m[e] = length;
+    search.edge_inverse_length[e] = 0.0;
+    search.edge_rate_m[e] = 0.0;
     if (length == 0.0) continue;
-    const Vec3 axis = d / length;
-    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] / s.h_hat;
+    const double inverse_length = 1.0 / length;
+    const Vec3 axis = inverse_length * d;
+    const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] * inverse_h;
     const double rate = ((x[static_cast<std::size_t>(i)] - s.base[static_cast<std::size_t>(i)]) -
                          (x[static_cast<std::size_t>(j)] - s.base[static_cast<std::size_t>(j)]))
                             .dot(axis);
+    search.edge_inverse_length[e] = inverse_length;
+    search.edge_rate_m[e] = rate;
     const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
-    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] / length);
-    const double along = k + c_over_h - transverse;
     for (int row = 0; row < 3; ++row) {
       for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
     }
-    moments.add_edge(transverse, along / (length * length), d);
+    if (!assemble) continue;
+    const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] * inverse_length);
+    const double along = k + c_over_h - transverse;
+    moments.add_edge(transverse, along * inverse_length * inverse_length, d);
   }
-  moments.spread_into(K);
-  // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ.
+  if (assemble) moments.spread_into(K);
+  // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ. For a closed surface
+  // V(x + A (x − c) + t) = det(I + A) V(x), so Bᵀ∇V = V vec(I): V on A's diagonal, 0 on t.
   double volume = 0.0;
   if (s.gas) {
-    volume = volume_and_area_sums(body.topology.faces, x, area_sums);
-    Vector12 u = Vector12::Zero();
-    for (std::size_t i = 0; i < n; ++i) add_gradient(area_sums[i] / 6.0, x[i] - centre, u);
-    G -= s.gas->pressure(volume) * u;
-    K += s.gas->stiffness(volume) * u * u.transpose();
+    volume = enclosed_volume(body.topology.faces, x);
+    static constexpr int kDiagonal[3] = {0, 4, 8};  // A_aa in q
+    for (const int a : kDiagonal) {
+      G(a) -= s.gas->pressure(volume) * volume;
+      if (!assemble) continue;
+      for (const int b : kDiagonal) K(a, b) += s.gas->stiffness(volume) * volume * volume;
+    }
   }
-  const Vector12 q = K.ldlt().solve(-G);
+  search.volume_after = volume;
+  if (assemble) scratch.factor.compute(K);
+  const Vector12 q = scratch.factor.solve(-G);
   const double slope = G.dot(q);
   if (!(slope < 0.0)) return false;
-  std::vector<Vec3>& motion = scratch.search.motion;
+  std::vector<Vec3>& motion = search.motion;
   motion.resize(n);
   for (std::size_t i = 0; i < n; ++i) motion[i] = affine_motion(q, x[i] - centre);
-  return search_along_motion(body, s, x, volume, slope, scratch.search);
+  search.linear_part = (Eigen::Matrix3d() << q(0), q(1), q(2), q(3), q(4), q(5), q(6), q(7), q(8)).finished();
+  search.edges_lagged = true;
+  return search_along_motion(body, s, x, volume, slope, search);
 }
 
 }  // namespace sim

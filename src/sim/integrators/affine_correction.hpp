@@ -1,6 +1,8 @@
 // The affine coarse correction of vbd's sweeps (sim/integrators/vertex_block_descent.hpp).
 #pragma once
 
+#include <Eigen/Dense>
+
 #include <span>
 #include <vector>
 
@@ -18,11 +20,15 @@ namespace sim {
 // then searches α on E's change along B q as a vertex does (sim/integrators/motion_search.hpp).
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct AffineScratch {
-  std::vector<Vec3> area_sums;  // the gas's per-vertex sums
-  MotionScratch search;         // B q per vertex [m], and the line search's buffers
+  MotionScratch search;  // B q per vertex [m], the line search's buffers, and V after the call
+  Eigen::LDLT<Eigen::Matrix<double, 12, 12>> factor;  // of Bᵀ H B, as the last assembly left it
 };
 
-// One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved.
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch);
+// One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved. `assemble`:
+// whether to assemble and factor Bᵀ H B afresh; otherwise the factor of the last call that did is reused (at the
+// step's later sweeps: a lagged matrix is still positive definite, so the step is still a descent direction, and the
+// search still takes only a move that lowers E).
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch,
+                       bool assemble = true);
 
 }  // namespace sim

@@ -27,9 +27,41 @@ void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratc
   }
 }
 
-// E(x + α motion) − E(x) [J], with the lags in scratch.
+// Each constraint's length, its inverse and its ĥ × approach speed at x.
+void take_edge_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
+  const DistanceConstraints& constraints = body.constraints;
+  scratch.edge_length_m.resize(constraints.size());
+  scratch.edge_inverse_length.resize(constraints.size());
+  scratch.edge_rate_m.resize(constraints.size());
+  for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const auto [i, j] = constraints.ends[e];
+    const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+    const Vec3 d = x[vi] - x[vj];
+    const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
+    scratch.edge_length_m[e] = length;
+    scratch.edge_inverse_length[e] = inverse_length;
+    scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
+  }
+}
+
+// det(I + M) − 1 without the cancellation of forming det(I + M) where M is small: tr M + ½(tr² M − tr M²) + det M.
+double determinant_change(const Eigen::Matrix3d& M) {
+  const double trace = M.trace();
+  return trace + 0.5 * (trace * trace - (M * M).trace()) + M.determinant();
+}
+
+// V(x + α motion) − V(x) [m³].
+double volume_change(const Body& body, std::span<const Vec3> x, double volume, double alpha, MotionScratch& scratch) {
+  if (scratch.linear_part) return volume * determinant_change(alpha * *scratch.linear_part);
+  std::vector<Vec3>& trial = scratch.trial;
+  trial.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) trial[i] = x[i] + alpha * scratch.motion[i];
+  return enclosed_volume(body.topology.faces, trial) - volume;
+}
+
+// E(x + α motion) − E(x) [J], with the lags in scratch; `volume_step`: V's change [m³].
 double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
-                     MotionScratch& scratch) {
+                     double volume_step, const MotionScratch& scratch) {
   const std::vector<Vec3>& motion = scratch.motion;
   const std::size_t n = x.size();
   double change = 0.0;
@@ -46,26 +78,21 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
     }
   }
   const DistanceConstraints& constraints = body.constraints;
+  const double half_over_h = 0.5 / s.h_hat;
   for (std::size_t e = 0; e < constraints.size(); ++e) {
+    const double before = scratch.edge_length_m[e];
+    if (before == 0.0) continue;
     const auto [i, j] = constraints.ends[e];
     const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
     const Vec3 d = x[vi] - x[vj];
-    const double before = d.norm();
-    if (before == 0.0) continue;
-    const Vec3 axis = d / before;
     const Vec3 relative = alpha * (motion[vi] - motion[vj]);
     const double after = (d + relative).norm();
     const double k = constraints.stiffness_N_per_m[e], rest = constraints.rest_length_m[e];
     change += 0.5 * k * (after - before) * (after + before - 2.0 * rest);
-    const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis), along = relative.dot(axis);
-    change += 0.5 * constraints.damping_N_s_per_m[e] / s.h_hat * along * (2.0 * rate + along);
+    const double rate = scratch.edge_rate_m[e], along = relative.dot(d) * scratch.edge_inverse_length[e];
+    change += half_over_h * constraints.damping_N_s_per_m[e] * along * (2.0 * rate + along);
   }
-  if (s.gas) {
-    std::vector<Vec3>& trial = scratch.trial;
-    trial.resize(n);
-    for (std::size_t i = 0; i < n; ++i) trial[i] = x[i] + alpha * motion[i];
-    change += s.gas->energy_change(volume, enclosed_volume(body.topology.faces, trial) - volume);
-  }
+  if (s.gas) change += s.gas->energy_change(volume, volume_step);
   return change;
 }
 
@@ -74,9 +101,13 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch) {
   take_contact_lags(s, x, scratch);  // once: they do not depend on α
+  if (!scratch.edges_lagged) take_edge_lags(body, s, x, scratch);
+  scratch.volume_after = volume;
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
-    if (energy_change(body, s, x, volume, alpha, scratch) <= kArmijo * alpha * slope) {
+    const double volume_step = s.gas ? volume_change(body, x, volume, alpha, scratch) : 0.0;
+    if (energy_change(body, s, x, volume, alpha, volume_step, scratch) <= kArmijo * alpha * slope) {
       for (std::size_t i = 0; i < x.size(); ++i) x[i] += alpha * scratch.motion[i];
+      scratch.volume_after = volume + volume_step;
       return true;
     }
   }

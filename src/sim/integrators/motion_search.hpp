@@ -2,8 +2,11 @@
 // energy's change along a motion of a whole body, and the backtracking on it.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/model/body.hpp"
@@ -12,7 +15,15 @@ namespace sim {
 
 // The buffers one search fills, kept between calls so that a step allocates nothing once sizes settle.
 struct MotionScratch {
-  std::vector<Vec3> motion;                // the motion per vertex, filled by the caller [m]
+  std::vector<Vec3> motion;  // the motion per vertex, filled by the caller [m]
+  // Where the motion is affine, δx = A (x − c) + t, its A, set by the caller: then V(x + α motion) = det(I + αA) V(x)
+  // (a closed surface), so the search needs no volume pass. Otherwise unset.
+  std::optional<Eigen::Matrix3d> linear_part;
+  // Per constraint at x: l [m], 1/l [1/m] and ĥ × its approach speed [m]; filled by the caller where edges_lagged is
+  // set (the affine correction's gradient pass computes them anyway), else by the search.
+  std::vector<double> edge_length_m, edge_inverse_length, edge_rate_m;
+  bool edges_lagged = false;
+  double volume_after = 0.0;               // V where the search left x [m³]
   std::vector<Vec3> trial;                 // x + α motion, for the gas's volume [m]
   std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
   std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
@@ -21,7 +32,7 @@ struct MotionScratch {
 // Moves body `body`'s positions x by α scratch.motion with the largest α of 1, ½, ¼, … (down to 1e-3) whose change of
 // E is a sufficient decrease (Armijo, kArmijo α slope); `slope` = ∇E·motion < 0 [J], `volume` = V(x) [m³] (unused
 // without gas). The dampers' directions and the floor's and colliders' weights are lagged at x, as the vertices' own
-// line searches lag them. Returns whether it moved.
+// line searches lag them. Returns whether it moved; scratch.volume_after is V at the new x.
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch);
 

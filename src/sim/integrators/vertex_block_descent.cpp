@@ -111,9 +111,14 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
-    if (coarse_) affine_correction(body, s, x, coarse_scratch_);
+    if (coarse_) affine_correction(body, s, x, coarse_scratch_, sweep == 0);
     if (aggregates_ > 0) coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0, coarse_level_scratch_);
-    double volume = s.gas ? enclosed_volume(body.topology.faces, x) : 0.0;  // afresh each sweep: no drift
+    // V afresh each sweep (no drift): the affine correction's, where it made the last move.
+    double volume = 0.0;
+    if (s.gas) {
+      volume =
+          coarse_ && aggregates_ == 0 ? coarse_scratch_.search.volume_after : enclosed_volume(body.topology.faces, x);
+    }
     for (const int i : blocks.colouring.vertices) visit_vertex(s, i, x, volume);
   }
 }
@@ -128,7 +133,10 @@ void VertexBlockDescent::visit_vertex(const BodySolve& s, int i, std::span<Vec3>
   const double slope = terms.gradient.dot(direction);  // ∇E·Δ < 0
   if (!(slope < 0.0)) return;                          // converged to round-off (or not finite): stay
   double alpha = 1.0;
-  if (direction.squaredNorm() > s.negligible_step_m * s.negligible_step_m) {
+  const bool negligible = direction.squaredNorm() <= s.negligible_step_m * s.negligible_step_m;
+  const bool sure = !negligible && sure_descent(s, terms, x[vi], volume, direction, slope);
+  statistics_.sure_steps += sure ? 1 : 0;
+  if (!negligible && !sure) {
     for (int halving = 0;; ++halving, alpha *= 0.5) {
       if (halving > kMostHalvings) {
         ++statistics_.refused_moves;

@@ -51,6 +51,7 @@ class VertexBlockDescent final : public Integrator {
     long long steps = 0;
     long long bdf2_steps = 0;     // the others were backward Euler
     long long vertex_solves = 0;  // local Newton steps tried
+    long long sure_steps = 0;     // of those, steps taken without a line search (sure_descent)
     long long halvings = 0;       // line-search step halvings
     long long refused_moves = 0;  // local steps no halving made lower E: the vertex stayed
   };

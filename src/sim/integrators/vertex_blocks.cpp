@@ -54,6 +54,23 @@ void lay_out_faces(const std::vector<Triangle>& faces, int vertex_count, VertexB
   }
 }
 
+// Where each face entry's corners sit in the vertex's constraint row (the first entry with that other end).
+void find_face_slots(VertexBlocks& blocks) {
+  blocks.face_slots.resize(blocks.face_others.size());
+  const auto slot_of = [&](std::size_t i, int other) {
+    for (int e = blocks.constraint_start[i]; e < blocks.constraint_start[i + 1]; ++e) {
+      if (blocks.other_end[static_cast<std::size_t>(e)] == other) return e - blocks.constraint_start[i];
+    }
+    return -1;
+  };
+  for (std::size_t i = 0; i + 1 < blocks.face_start.size(); ++i) {
+    for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
+      const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+      blocks.face_slots[static_cast<std::size_t>(f)] = {slot_of(i, b), slot_of(i, c)};
+    }
+  }
+}
+
 }  // namespace
 
 VertexBlocks vertex_blocks(const Body& body) {
@@ -61,6 +78,7 @@ VertexBlocks vertex_blocks(const Body& body) {
   blocks.colouring = colour_vertices(body.constraints.ends, body.topology.faces, body.vertex_count);
   lay_out_constraints(body.constraints, body.vertex_count, blocks);
   lay_out_faces(body.topology.faces, body.vertex_count, blocks);
+  find_face_slots(blocks);
   return blocks;
 }
 

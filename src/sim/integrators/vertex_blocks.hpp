@@ -22,6 +22,9 @@ struct VertexBlocks {
   // its counter-clockwise order after i, so that (x_b − x_i) × (x_c − x_i) is twice its outward area vector.
   std::vector<int> face_start;  // vertex count + 1
   std::vector<std::array<int, 2>> face_others;
+  // The same two corners as entries of vertex i's constraint row (e − constraint_start[i]), so that the gas's gradient
+  // reuses the edge vectors the springs computed; −1 where a corner is not among the constraints.
+  std::vector<std::array<int, 2>> face_slots;
   int most_constraints = 0;  // the largest number of constraints at one vertex
 };
 

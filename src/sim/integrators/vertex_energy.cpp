@@ -1,6 +1,8 @@
 // One vertex's part of vbd's step energy: gradient, Hessian block, and the change along a move.
 #include "sim/integrators/vertex_energy.hpp"
 
+#include <limits>
+
 namespace sim {
 namespace {
 
@@ -73,12 +75,18 @@ double collider_energy_change(const SmoothCollider& collider, const ColliderLag&
          smooth_collider_terms(collider, lag, m, x, base, h_hat);
 }
 
-Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x) {
+Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x, const ConstraintLags& lags) {
   const Vec3 xi = x[static_cast<std::size_t>(i)];
   Vec3 sum = Vec3::Zero();
   for (int f = blocks.face_start[static_cast<std::size_t>(i)]; f < blocks.face_start[static_cast<std::size_t>(i) + 1];
        ++f) {
-    const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+    const auto vf = static_cast<std::size_t>(f);
+    const auto [slot_b, slot_c] = blocks.face_slots[vf];
+    if (slot_b >= 0 && slot_c >= 0) {  // (x_i − x_b) × (x_i − x_c), the same bits as (x_b − x_i) × (x_c − x_i)
+      sum += lags.offset[static_cast<std::size_t>(slot_b)].cross(lags.offset[static_cast<std::size_t>(slot_c)]);
+      continue;
+    }
+    const auto [b, c] = blocks.face_others[vf];
     sum += (x[static_cast<std::size_t>(b)] - xi).cross(x[static_cast<std::size_t>(c)] - xi);
   }
   return sum;
@@ -92,30 +100,37 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   VertexTerms terms;
   terms.gradient = (m * s.inverse_h2) * (xi - s.target[vi]);  // inertia: m (x − y)/ĥ²
   terms.hessian.add_diagonal(m * s.inverse_h2);
+  const double inverse_h = 1.0 / s.h_hat;
+  const Vec3 moved_i = xi - base_i;  // ĥ v'_i [m]
   const int first = blocks.constraint_start[vi], last = blocks.constraint_start[vi + 1];
+  terms.shortest_m = first < last ? std::numeric_limits<double>::infinity() : 0.0;
   for (int e = first; e < last; ++e) {
     const auto ve = static_cast<std::size_t>(e), slot = static_cast<std::size_t>(e - first);
     const auto j = static_cast<std::size_t>(blocks.other_end[ve]);
     const Vec3 d = xi - x[j];
     const double length = d.norm();
+    lags.offset[slot] = d;
     lags.length_m[slot] = length;
+    terms.shortest_m = std::min(terms.shortest_m, length);
     if (length == 0.0) {  // coincident ends: no direction, no force, no curvature
       lags.axis[slot] = Vec3::Zero();
       lags.rate_m[slot] = 0.0;
       continue;
     }
-    const Vec3 axis = d / length;
-    const double k = blocks.stiffness_N_per_m[ve], c_over_h = blocks.damping_N_s_per_m[ve] / s.h_hat;
-    const double rate = ((xi - base_i) - (x[j] - s.base[j])).dot(axis);  // ĥ × the approach speed [m]
+    const double inverse_length = 1.0 / length, rest = blocks.rest_length_m[ve];
+    const Vec3 axis = inverse_length * d;
+    const double k = blocks.stiffness_N_per_m[ve], c_over_h = blocks.damping_N_s_per_m[ve] * inverse_h;
+    terms.spring_variation += k * rest * inverse_length * inverse_length;
+    const double rate = (moved_i - (x[j] - s.base[j])).dot(axis);  // ĥ × the approach speed [m]
     lags.axis[slot] = axis;
     lags.rate_m[slot] = rate;
-    terms.gradient += (k * (length - blocks.rest_length_m[ve]) + c_over_h * rate) * axis;
-    const double transverse = k * std::max(0.0, 1.0 - blocks.rest_length_m[ve] / length);
+    terms.gradient += (k * (length - rest) + c_over_h * rate) * axis;
+    const double transverse = k * std::max(0.0, 1.0 - rest * inverse_length);
     terms.hessian.add_diagonal(transverse);
     terms.hessian.add_outer(k + c_over_h - transverse, axis);
   }
   if (s.gas) {
-    terms.volume_gradient = six_volume_gradient(blocks, i, x) / 6.0;  // g_i [m²]
+    terms.volume_gradient = six_volume_gradient(blocks, i, x, lags) * (1.0 / 6.0);  // g_i [m²]
     terms.gradient -= s.gas->pressure(volume) * terms.volume_gradient;
     terms.hessian.add_outer(s.gas->stiffness(volume), terms.volume_gradient);
   }
@@ -126,6 +141,36 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   return terms;
 }
 
+// β: the derivative of (I − n̂n̂ᵀ)/l along a unit vector at cosine c to n̂ has the norm (|c| + √(4 − 3c²))/(2l²), at
+// most 2/(√3 l²) (at c² = 1/3); rounded up.
+constexpr double kSpringHessianVariation = 1.1547006;
+
+bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
+                  double slope) {
+  if (!s.colliders.empty()) return false;
+  if (s.floor && (terms.floor.depth_m > 0.0 || s.floor->height_m - (x.y() + step.y()) > 0.0)) return false;
+  const double length = step.norm();
+  if (!(length < 0.5 * terms.shortest_m)) return false;
+  // Along the step every l ≥ l (1 − |Δ|/l_shortest) ≥ l/2, so the springs' B ≤ β |Δ| Σ k L0/l² / (1 − |Δ|/l_shortest)²;
+  // both sides below are multiplied by (l_shortest − |Δ|)² / l_shortest² to spare the divisions.
+  const double margin = terms.shortest_m - length, margin2 = margin * margin;  // [m²]
+  const double allowed = -0.5 * slope * margin2;  // ½|∇E·Δ| (l_shortest − |Δ|)² [J m²]
+  const double length2 = length * length;
+  double spent =
+      kSpringHessianVariation * length * length2 * terms.spring_variation * terms.shortest_m * terms.shortest_m;
+  if (s.gas) {
+    if (volume <= s.gas->guard_m3) return false;                    // E linear in V here, curving up past the guard
+    const double after = volume + terms.volume_gradient.dot(step);  // V₁: V is affine in x_i
+    if (after < volume) {
+      const double least = std::max(after, s.gas->guard_m3);
+      const double gas = s.gas->nRT_J * terms.volume_gradient.squaredNorm() * (volume - least) * (volume + least) /
+                         (least * least * volume * volume);  // nRT |g|² (1/V₁² − 1/V²) [N/m]
+      spent += gas * length2 * margin2;
+    }
+  }
+  return spent <= allowed;
+}
+
 double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, double volume, const VertexTerms& terms,
                             const ConstraintLags& lags, const Vec3& step) {
   const auto vi = static_cast<std::size_t>(i);
@@ -133,6 +178,7 @@ double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, 
   const Vec3 xi = x[vi], moved = xi + step;
   const double m = s.mass_kg[vi];
   double change = 0.5 * m * s.inverse_h2 * step.dot(2.0 * (xi - s.target[vi]) + step);  // inertia
+  const double half_over_h = 0.5 / s.h_hat;
   const int first = blocks.constraint_start[vi], last = blocks.constraint_start[vi + 1];
   for (int e = first; e < last; ++e) {
     const auto ve = static_cast<std::size_t>(e), slot = static_cast<std::size_t>(e - first);
@@ -142,7 +188,7 @@ double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, 
     change += 0.5 * k * (after - before) * (after + before - 2.0 * rest);  // ½k((l₁−L0)² − (l₀−L0)²)
     const double along = step.dot(lags.axis[slot]);
     change +=
-        0.5 * blocks.damping_N_s_per_m[ve] / s.h_hat * along * (2.0 * lags.rate_m[slot] + along);  // c/(2ĥ) Δ(rate²)
+        half_over_h * blocks.damping_N_s_per_m[ve] * along * (2.0 * lags.rate_m[slot] + along);  // c/(2ĥ) Δ(rate²)
   }
   if (s.gas) change += s.gas->energy_change(volume, terms.volume_gradient.dot(step));  // exact: V is affine in x_i
   if (s.floor) change += floor_energy_change(*s.floor, terms.floor, m, xi, step, s.base[vi], s.h_hat);

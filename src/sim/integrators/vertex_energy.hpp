@@ -102,20 +102,24 @@ ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const V
 // That collider's terms' change of E when the vertex moves from x by step, with the lags taken at x [J].
 double collider_energy_change(const SmoothCollider& collider, const ColliderLag& lag, double m, const Vec3& x,
                               const Vec3& step, const Vec3& base, double h_hat);
-// Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²].
-Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x);
 
 // One vertex's constraints as its visit found them: direction n̂, length l [m] and ĥ × approach speed [m].
 struct ConstraintLags {
+  std::vector<Vec3> offset;  // x_i − x_j [m]
   std::vector<Vec3> axis;
   std::vector<double> length_m, rate_m;
   std::vector<ColliderLag> colliders;  // per smooth collider (sized by the integrator once)
   void resize(std::size_t most_constraints) {
+    offset.resize(most_constraints);
     axis.resize(most_constraints);
     length_m.resize(most_constraints);
     rate_m.resize(most_constraints);
   }
 };
+
+// Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²], with the edge vectors x_i − x_j that vertex_terms left in
+// lags.offset where the corners are among the vertex's constraints.
+Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x, const ConstraintLags& lags);
 
 // ∇_i E and H_i of vertex i at x, with what its line search reuses.
 struct VertexTerms {
@@ -123,12 +127,26 @@ struct VertexTerms {
   Block3 hessian;                       // H_i, positive definite [N/m]
   Vec3 volume_gradient = Vec3::Zero();  // g_i = ∂V/∂x_i [m²]
   FloorLag floor;
+  double spring_variation = 0.0;  // Σ_e k L0 / l² over the vertex's constraints [N/m²]
+  double shortest_m = 0.0;        // the shortest of its constraints' lengths l (0 where it has none) [m]
 };
 
 // The terms of vertex i at x: inertia, its constraints (lagging each direction and approach into `lags`), the gas at
 // volume V (V of x), the smooth floor and the smooth colliders (their lags into lags.colliders). A compressed spring's
 // transverse curvature is clamped at zero.
 VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags);
+
+// Whether the Newton step `step` (= −H_i⁻¹ ∇_i E, with slope = ∇_i E·step) is sure to lower E by more than the line
+// search asks (kArmijo), so that the search may be skipped: the same move it would make at α = 1. Along the step
+//   E(x + Δ) − E(x) = ∇E·Δ + ∫₀¹ (1 − t) Δᵀ H(x + tΔ) Δ dt ≤ ½ ∇E·Δ + ½ B |Δ|²,
+// as ∇E·Δ = −Δᵀ H_i Δ and H(x + tΔ) ≤ H_i + B I: the true Hessian at x is at most H_i (H_i only clamps), a spring's
+// ½k(l − L0)² has a Hessian k I − k L0 (I − n̂n̂ᵀ)/l whose change is at most (2/√3) k L0 |Δ| / l_min² (l_min ≥ l − |Δ|
+// along the step), the gas's nRT g gᵀ/V² grows by at most nRT |g|² (1/V₁² − 1/V²) where V falls to V₁, and the dampers
+// and the inertia are quadratic. B |Δ|² ≤ ½ |∇E·Δ| leaves E falling by at least ¼ |∇E·Δ|, far beyond kArmijo and
+// round-off. Not where a smooth contact is near (the floor's terms at either end, or any smooth collider): those always
+// search.
+bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
+                  double slope);
 
 // E(x with x_i moved by step) − E(x) [J], with the lags vertex_terms took at x (exact for the springs, the gas and the
 // inertia; the dampers and the floor's dashpot and friction with their lagged directions and weights).
