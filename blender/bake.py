@@ -1,4 +1,4 @@
-# softbody.bake: writes the scene and the selected soft-body meshes into the bake folder, runs
+# softbody.bake: writes the scene, the selected soft-body meshes and the scene's colliders into the bake folder, runs
 # `softbody export scene.json --format pc2 -o cache --progress-lines`, and attaches each body's cache to its object.
 # Interactive: runs beside Blender with the progress in the status bar, Esc cancels. In background mode
 # (blender -b) or from a script (execute): blocking.
@@ -8,7 +8,7 @@ import time
 
 import bpy
 
-from . import cache, scene_writer
+from . import cache, colliders, scene_writer
 from .preferences import program_path
 from .runner import ProgramRun
 
@@ -67,6 +67,13 @@ class SOFTBODY_OT_bake(bpy.types.Operator):
             self._report_and_keep(context, "ERROR", str(error))
             return False
         layout = scene_writer.BakeLayout(bake_folder(scene))
+        try:
+            world = [colliders.collider_entry(scene, obj, layout.collider_mesh_path(index),
+                                              os.path.relpath(layout.collider_mesh_path(index), layout.folder), scale)
+                     for index, obj in enumerate(colliders.collider_objects(scene))]
+        except colliders.ColliderError as error:
+            self._report_and_keep(context, "ERROR", str(error))
+            return False
         bodies, self._meshes = [], []
         for index, obj in enumerate(objects):
             cache.detach(obj)  # an earlier bake: back to the object's own transform and mesh
@@ -75,7 +82,7 @@ class SOFTBODY_OT_bake(bpy.types.Operator):
             mesh_file = os.path.relpath(layout.mesh_path(index), layout.folder)
             bodies.append(scene_writer.body_keys(obj.softbody_pressure, mesh_file, scale))
             self._meshes.append((points, triangles))
-        scene_writer.write_scene(layout.scene_path, run_keys, bodies)
+        scene_writer.write_scene(layout.scene_path, run_keys, bodies, world)
         self._layout, self._names, self._scale = layout, [obj.name for obj in objects], scale
         self._frame_start = scene.frame_start
         args = ["export", layout.scene_path, "--format", "pc2", "-o", layout.cache_folder, "--progress-lines"]

@@ -63,6 +63,29 @@ class SOFTBODY_PT_object(bpy.types.Panel):
         draw_bake_buttons(layout, context.scene)
 
 
+class SOFTBODY_PT_collider(bpy.types.Panel):
+    bl_label = "Collider (softbody)"
+    bl_idname = "SOFTBODY_PT_collider"
+    bl_space_type = "PROPERTIES"
+    bl_region_type = "WINDOW"
+    bl_context = "physics"
+
+    @classmethod
+    def poll(cls, context):
+        return context.object is not None and context.object.type == "MESH"
+
+    def draw_header(self, context):
+        self.layout.prop(context.object.softbody_pressure, "collider", text="")
+
+    def draw(self, context):
+        settings = context.object.softbody_pressure
+        layout = self.layout
+        layout.use_property_split = True
+        layout.active = settings.collider
+        layout.prop(settings, "collider_thickness")
+        layout.label(text="Moves with the object's animation; contact as the scene's floor")
+
+
 class SOFTBODY_PT_scene(bpy.types.Panel):
     bl_label = "Soft body (pressure)"
     bl_idname = "SOFTBODY_PT_scene"
@@ -97,7 +120,7 @@ class SOFTBODY_PT_scene(bpy.types.Panel):
         draw_bake_buttons(layout, scene)
 
 
-_classes = (SOFTBODY_PT_object, SOFTBODY_PT_scene)
+_classes = (SOFTBODY_PT_object, SOFTBODY_PT_collider, SOFTBODY_PT_scene)
 
 
 def register():

@@ -54,6 +54,11 @@ class SoftbodyObjectSettings(bpy.types.PropertyGroup):
     self_collision: BoolProperty(name="Self-collision", description="Its vertices also collide with its own triangles, "
                                  "so that it folds onto itself instead of through itself (bodies[].self_collision)",
                                  default=False)
+    collider: BoolProperty(name="Collider", description="A collider: moves the soft bodies and is not moved by them, "
+                           "following the object's animated transform (colliders[], shape mesh)", default=False)
+    collider_thickness: FloatProperty(name="Thickness", description="An open mesh's thickness (colliders[].thickness, "
+                                      "0: softbody's default, 1 cm); a closed mesh is a solid", unit="LENGTH",
+                                      default=0.0, min=0.0, precision=4)
 
 
 class SoftbodySceneSettings(bpy.types.PropertyGroup):

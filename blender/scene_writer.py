@@ -35,6 +35,9 @@ class BakeLayout:
     def cache_path(self, body):
         return os.path.join(self.cache_folder, "body%d.pc2" % body)
 
+    def collider_mesh_path(self, collider):
+        return os.path.join(self.folder, MESH_FOLDER, "collider%d.ply" % collider)
+
 
 def number(value):
     """A setting as the scene file gets it: Blender keeps settings as float32, whose 7 significant digits are what
@@ -154,8 +157,10 @@ def run_keys(scene, metres_per_unit=1.0):
     return keys
 
 
-def write_scene(path, keys, bodies):
+def write_scene(path, keys, bodies, colliders=()):
     scene = dict(keys)
+    if colliders:
+        scene["colliders"] = list(colliders)
     scene["bodies"] = bodies
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:

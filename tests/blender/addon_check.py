@@ -200,7 +200,7 @@ def check_panels(ball):
     for choice in itertools.product(*modes):
         for group, name, value in choice:
             setattr(group, name, value)
-        for panel in (bpy.types.SOFTBODY_PT_object, bpy.types.SOFTBODY_PT_scene):
+        for panel in (bpy.types.SOFTBODY_PT_object, bpy.types.SOFTBODY_PT_collider, bpy.types.SOFTBODY_PT_scene):
             layout = CheckingLayout()
             drawn = type("Panel", (), {"layout": layout})()
             panel.draw(drawn, bpy.context)
@@ -247,6 +247,72 @@ def check_error_report(ball):
         fail("a failed bake attached a cache")
 
 
+def nearest_distances(points, others):
+    """For each point, the distance to the nearest of others: the largest [m]."""
+    return max(min(max(abs(p - q) for p, q in zip(a, b)) for b in others) for a in points)
+
+
+def check_colliders(program, bake_dir, scratch):
+    """A static block and an animated paddle (moved and turned) ticked as colliders: the scene file carries both
+    (the paddle with one key per frame), softbody's own export of the paddle at a frame is where Blender shows it,
+    and a ball dropped on the block comes to rest on it, not on the floor below."""
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    scene = bpy.context.scene
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(0.0, 0.0, 0.25), scale=(1.2, 1.2, 0.5))
+    block = bpy.context.active_object
+    block.name = "Block"
+    block.softbody_pressure.collider = True
+    bpy.ops.mesh.primitive_cube_add(size=0.2, location=(1.5, 0.0, 0.4), scale=(1.0, 2.0, 1.0))
+    paddle = bpy.context.active_object
+    paddle.name = "Paddle"
+    paddle.softbody_pressure.collider = True
+    for frame, location, turn in ((START, (1.5, 0.0, 0.4), 0.0), (START + 20, (1.5, 1.0, 0.6), 1.2)):
+        scene.frame_set(frame)
+        paddle.location, paddle.rotation_euler = location, (0.3 * turn, 0.0, turn)
+        paddle.keyframe_insert("location")
+        paddle.keyframe_insert("rotation_euler")
+    scene.frame_set(START)
+    bpy.ops.object.select_all(action="DESELECT")
+    bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=2, radius=0.25, location=(0.0, 0.0, 1.0))
+    ball = bpy.context.active_object
+    ball.softbody_pressure.enabled = True
+    ball.softbody_pressure.damping_mode = "RATIO"
+    ball.softbody_pressure.damping_ratio = 0.5
+    bake()
+    with open(os.path.join(bake_dir, "scene.json")) as f:
+        written = json.load(f).get("colliders", [])
+    if len(written) != 2 or "keys" in written[0] or len(written[1].get("keys", [])) != 21:
+        fail("expected the static Block and the Paddle with 21 keys in the scene file, got %s" % written)
+    cli_dir = os.path.join(scratch, "cli_colliders")
+    subprocess.run([program, "export", os.path.join(bake_dir, "scene.json"), "--format", "obj", "-o", cli_dir],
+                   check=True, stdout=subprocess.DEVNULL)
+    scene.frame_set(START + FRAME)
+    shown = evaluated_world(paddle)
+    exported = y_up_to_z_up(read_obj_vertices(os.path.join(cli_dir, "collider_1_%04d.obj" % FRAME)))
+    paddle_error = nearest_distances(shown, exported)
+    block_error = nearest_distances(evaluated_world(block),
+                                    y_up_to_z_up(read_obj_vertices(os.path.join(cli_dir, "collider_0.obj"))))
+    scene.frame_set(START + 20)
+    lowest = min(p[2] for p in evaluated_world(ball))
+    print("blender addon: colliders: the paddle at frame %d is %.3g m from softbody's export of it, the block %.3g m; "
+          "the ball's lowest point at the end z = %.4f m (the block's top: 0.5 m)" % (FRAME, paddle_error, block_error,
+                                                                                   lowest))
+    if paddle_error > TOLERANCE_M or block_error > TOLERANCE_M:
+        fail("softbody's colliders are not where Blender shows them")
+    if lowest < 0.45:
+        fail("the ball did not land on the block collider")
+    paddle.softbody_pressure.enabled = True
+    try:
+        bpy.ops.softbody.bake()
+    except RuntimeError as error:
+        message = str(error)
+    else:
+        fail("a bake with an object both body and collider did not report an error")
+    if "both a soft body and a collider" not in message:
+        fail("the error report does not say what is wrong: %r" % message)
+
+
 def main():
     zip_path, program, scratch = sys.argv[sys.argv.index("--") + 1:]
     print("blender %s" % bpy.app.version_string)
@@ -267,6 +333,7 @@ def main():
     check_error_report(ball)
     ball.softbody_pressure.enabled = False
     check_repaired_mesh(program, bake_dir, scratch)
+    check_colliders(program, bake_dir, scratch)
     print("blender addon check: OK")
 
 
