@@ -25,6 +25,8 @@ std::vector<output::InputFile> scene_inputs(const scene::Scene& scene) {
   for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
     if (!collider.mesh_file.empty())
       inputs.push_back({collider.mesh_file, "the mesh file of colliders." + std::to_string(collider.collider)});
+    if (!collider.cache_file.empty())
+      inputs.push_back({collider.cache_file, "the point cache of colliders." + std::to_string(collider.collider)});
   }
   return inputs;
 }

@@ -22,7 +22,10 @@ std::uint64_t simulation_hash(const scene::Scene& scene) {
   XXH3_64bits_update(state, scene.simulation_json.data(), scene.simulation_json.size() + 1);
   std::vector<std::filesystem::path> files;
   for (const scene::Body& body : scene.bodies) files.push_back(body.mesh_file);
-  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) files.push_back(collider.mesh_file);
+  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
+    files.push_back(collider.mesh_file);
+    files.push_back(collider.cache_file);
+  }
   for (const std::filesystem::path& file : files) {
     if (file.empty()) continue;
     std::ifstream in(file, std::ios::binary);

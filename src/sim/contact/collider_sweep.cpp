@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "sim/contact/collider_mesh.hpp"
+#include "sim/contact/collider_point_cache.hpp"
 
 namespace sim {
 namespace {
@@ -124,6 +125,7 @@ bool far_from(const ColliderGeometry& g, const Vec3& a, const Vec3& b) {
 
 Vec3 carried_with(const ColliderGeometry& from, const ColliderGeometry& to, const Vec3& x) {
   if (!to.velocity.moving && !from.velocity.moving) return x;
+  if (to.velocity.per_vertex) return carried_with_cached_mesh(from, to, x);
   return to.position_m + size_ratio(from, to) * (to.rotation * (from.rotation.transpose() * (x - from.position_m)));
 }
 
