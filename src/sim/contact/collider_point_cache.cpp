@@ -2,6 +2,7 @@
 #include "sim/contact/collider_point_cache.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -80,6 +81,14 @@ Vec3 cached_surface_velocity(const ColliderGeometry& g, const Vec3& x) {
   Vec3 u = Vec3::Zero();
   for (std::size_t k = 0; k < 3; ++k) u += point.weights[k] * m.vertex_velocities[static_cast<std::size_t>(tri[k])];
   return g.rotation * u;
+}
+
+double largest_vertex_travel(const ColliderGeometry& from, const ColliderGeometry& to) {
+  if (!from.velocity.per_vertex || !to.velocity.per_vertex) return 0.0;
+  double farthest2 = 0.0;  // the placement is the same in both poses: local displacements are world ones, turned
+  for (std::size_t v = 0; v < to.mesh->vertices_m.size(); ++v)
+    farthest2 = std::max(farthest2, (to.mesh->vertices_m[v] - from.mesh->vertices_m[v]).squaredNorm());
+  return std::sqrt(farthest2);
 }
 
 Vec3 carried_with_cached_mesh(const ColliderGeometry& from, const ColliderGeometry& to, const Vec3& x) {

@@ -40,6 +40,9 @@ inline double cache_start_s(const ColliderPointCache& cache) { return cache.time
 // The velocity of the cached mesh's surface nearest x [m/s] (world), for surface_velocity().
 Vec3 cached_surface_velocity(const ColliderGeometry& geometry, const Vec3& x);
 
+// The farthest any vertex of a cached mesh moves from pose `from` to pose `to` [m] (0 for any other collider).
+double largest_vertex_travel(const ColliderGeometry& from, const ColliderGeometry& to);
+
 // x carried from pose `from` to pose `to` of a cached mesh with the nearest surface point's motion: x + (p_to −
 // p_from), p the point of the same triangle at the same barycentric weights (sim/contact/collider_sweep.hpp).
 Vec3 carried_with_cached_mesh(const ColliderGeometry& from, const ColliderGeometry& to, const Vec3& x);

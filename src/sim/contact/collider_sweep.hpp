@@ -23,6 +23,7 @@ namespace sim {
 struct ColliderStepStart {
   const ColliderGeometry* pose = nullptr;
   std::span<const Vec3> x;
+  double travel_m = 0.0;  // a point-cached mesh: the farthest any of its vertices moves in the step [m]
 };
 
 // x moved with the collider from pose `from` to pose `to` (x itself when the collider is static).
