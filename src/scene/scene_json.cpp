@@ -340,7 +340,8 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
   return g;
 }
 
-// A mesh collider's "cache" (a PC2 file relative to the scene) and "cache_fps"; refused beside "keys".
+// A mesh collider's "cache" (a PC2 file, or a numbered OBJ sequence's pattern, relative to the scene) and
+// "cache_fps"; refused beside "keys".
 void read_collider_cache(const ObjectReader& r, ColliderMeshSource& source) {
   if (!r.has("cache")) {
     if (r.has("cache_fps")) r.fail(r.child("cache_fps"), "expected only with \"cache\" (a point-cached mesh)", nullptr);
@@ -354,8 +355,27 @@ void read_collider_cache(const ObjectReader& r, ColliderMeshSource& source) {
   }
   const std::string name = r.string("cache", "");
   const fs::path file = r.file().parent_path() / name;
+  source.cache_fps = r.has("cache_fps") ? r.number("cache_fps", 0.0) : 0.0;
+  if (name.find('%') != std::string::npos) {  // a numbered mesh sequence: its folder must exist
+    if (!is_frame_pattern(file.filename().string(), ".obj")) {
+      r.fail(r.child("cache"),
+             "expected a numbered OBJ sequence's file name with one frame number conversion such as "
+             "collider_0_%04d.obj (%d, %4d or %04d; '%%' for a '%'), or a .pc2 file",
+             &r.at("cache"));
+    }
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    if (const std::string words = softbody::non_regular_file_words(folder); words != "is a directory") {
+      r.fail(r.child("cache"), "the folder " + folder.string() + " of the numbered sequence " + words, nullptr);
+    }
+    source.cache_file = file;
+    source.cache_sequence = true;
+    return;
+  }
   if (fs::path(name).extension() != ".pc2") {
-    r.fail(r.child("cache"), "expected a point cache file ending in .pc2, relative to the scene", &r.at("cache"));
+    r.fail(r.child("cache"),
+           "expected a point cache file ending in .pc2, or a numbered OBJ sequence such as collider_0_%04d.obj, "
+           "relative to the scene",
+           &r.at("cache"));
   }
   if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
     r.fail(r.child("cache"),
@@ -363,7 +383,6 @@ void read_collider_cache(const ObjectReader& r, ColliderMeshSource& source) {
            nullptr);
   }
   source.cache_file = file;
-  source.cache_fps = r.has("cache_fps") ? r.number("cache_fps", 0.0) : 0.0;
 }
 
 // A mesh collider's "mesh" (a file relative to the scene, or a generator), "scale" and "thickness".

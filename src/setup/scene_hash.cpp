@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "setup/build_fingerprint.hpp"
+#include "setup/collider_point_caches.hpp"
 
 namespace setup {
 
@@ -24,7 +25,7 @@ std::uint64_t simulation_hash(const scene::Scene& scene) {
   for (const scene::Body& body : scene.bodies) files.push_back(body.mesh_file);
   for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
     files.push_back(collider.mesh_file);
-    files.push_back(collider.cache_file);
+    for (const std::filesystem::path& file : point_cache_files(collider)) files.push_back(file);
   }
   for (const std::filesystem::path& file : files) {
     if (file.empty()) continue;

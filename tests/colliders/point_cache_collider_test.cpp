@@ -127,6 +127,35 @@ TEST(PointCacheCollider, ExportedCacheOfAKeyframedMeshMovesABodyAsTheKeysDid) {
   EXPECT_NEAR(sim::diagnose(end.model, end.state, 0).com_velocity_m_per_s.x(), kPlatformSpeed_m_per_s, 0.02);
 }
 
+// The same through a numbered OBJ sequence: `softbody export` writes the keyframed collider as collider_0_%04d.obj,
+// one file per frame, and "cache": "out/collider_0_%04d.obj" reads them back, frame k at k / fps.
+TEST(PointCacheCollider, ExportedMeshSequenceOfAKeyframedMeshMovesABodyAsTheKeysDid) {
+  const fs::path dir = testing_support::scratch_dir("point_cache_sequence");
+  write_file(dir / "platform.obj", box_obj(kPlatformHalf));
+  const std::string keyed =
+      cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "platform.obj").string() +
+                           R"(", "keys": [ {"time": 0, "position": [0, 0, 0]}, {"time": 3, "position": [1.5, 0, 0]} ])",
+                       "friction", step_keys(sim::kIntegrators[0]));
+  write_file(dir / "keyed.json", keyed);
+  const testing_support::CommandResult exported =
+      testing_support::run_softbody("export " + (dir / "keyed.json").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(exported.exit_status, 0) << exported.output;
+  const std::string cached =
+      cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "out/collider_0_0000.obj").string() +
+                           R"(", "cache": ")" + (dir / "out/collider_0_%04d.obj").string() + "\"",
+                       "friction", step_keys(sim::kIntegrators[0]));
+  std::vector<Vec3> keyed_path, cached_path;
+  testing_support::run_scene_frames(
+      keyed, [&](double, const sim::World& w) { keyed_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
+  testing_support::run_scene_frames(
+      cached, [&](double, const sim::World& w) { cached_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
+  ASSERT_EQ(keyed_path.size(), cached_path.size());
+  double apart = 0.0;
+  for (std::size_t f = 0; f < keyed_path.size(); ++f) apart = std::max(apart, (keyed_path[f] - cached_path[f]).norm());
+  std::printf("the body's centre on the sequence's platform and on the keyframed one: at most %.3g m apart\n", apart);
+  EXPECT_LT(apart, 1e-5);
+}
+
 // The platform's cache written directly (8 corners sliding along +x at 0.5 m/s), every integrator at its automatic
 // step, friction and smooth contacts: the body's mean velocity over the last half second is the platform's.
 TEST(PointCacheCollider, CachedPlatformCarriesABodyWithIt) {
@@ -318,6 +347,31 @@ TEST_F(PointCacheRefusal, NotFinite) {
   const std::string message = refusal(bytes);
   EXPECT_NE(message.find("cache.pc2"), std::string::npos) << message;
   EXPECT_NE(message.find("not finite"), std::string::npos) << message;
+}
+
+// A numbered sequence whose files differ from the first, or that names no file.
+TEST_F(PointCacheRefusal, SequenceFilesThatDifferFromTheFirst) {
+  const fs::path seq = dir_ / "seq";
+  fs::create_directories(seq);
+  write_file(seq / "box_0000.obj", box_obj(Vec3(0.5, 0.5, 0.5)));
+  write_file(seq / "box_0001.obj", box_obj(Vec3(0.6, 0.5, 0.5)));
+  write_file(seq / "box_0002.obj", box_obj(Vec3(0.6, 0.5, 0.5)) + "v 0 0 0\n");
+  const std::string text = R"({ "colliders": [ { "shape": "mesh", "mesh": ")" + (dir_ / "box.obj").string() +
+                           R"(", "cache": ")" + (seq / "box_%04d.obj").string() +
+                           R"(" } ], "bodies": [ { "mesh": "icosphere:1", "position": [0, 2, 0] } ] })";
+  std::string message;
+  try {
+    testing_support::world_from_text(text);
+  } catch (const softbody::InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("colliders.0.cache"), std::string::npos) << message;
+  EXPECT_NE(message.find("box_0002.obj: has 9 vertices"), std::string::npos) << message;
+  fs::remove(seq / "box_0002.obj");
+  EXPECT_NO_THROW(testing_support::world_from_text(text));
+  const std::string none = testing_support::scene_refusal(
+      R"({ "colliders": [ { "shape": "mesh", "mesh": "cube:1", "cache": "data/%d_%d.obj" } ], "bodies": [ { "mesh": "icosphere:1" } ] })");
+  EXPECT_NE(none.find("one frame number conversion"), std::string::npos) << none;
 }
 
 TEST_F(PointCacheRefusal, WithKeysOrOnAnotherShape) {
