@@ -80,6 +80,7 @@ bool pair_edges(ColliderMesh& m) {
   });
   bool closed = true;
   m.edge_normals.assign(m.triangles.size(), {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()});
+  m.edge_partners.assign(m.triangles.size(), {-1, -1, -1});
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
@@ -91,6 +92,8 @@ bool pair_edges(ColliderMesh& m) {
                        m.face_normals[static_cast<std::size_t>(uses[i + 1].triangle)];
       for (std::size_t u = i; u < j; ++u) {
         m.edge_normals[static_cast<std::size_t>(uses[u].triangle)][static_cast<std::size_t>(uses[u].corner)] = sum;
+        m.edge_partners[static_cast<std::size_t>(uses[u].triangle)][static_cast<std::size_t>(uses[u].corner)] =
+            uses[u == i ? i + 1 : i].triangle;
       }
     }
     i = j;
@@ -296,9 +299,11 @@ std::shared_ptr<const ColliderMesh> refit_collider_mesh(const ColliderMesh& mesh
             .cross(m->vertices_m[static_cast<std::size_t>(tri[2])] - m->vertices_m[static_cast<std::size_t>(tri[0])]);
     m->face_normals[t] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
   }
-  if (m->closed) {
-    m->boundary_edges = 0;
-    pair_edges(*m);  // the same pairs as the rest pose's: only the normals summed change
+  if (m->closed) {  // the same pairs as the rest pose's: only the normals summed change
+    for (std::size_t t = 0; t < m->triangles.size(); ++t) {
+      for (std::size_t k = 0; k < 3; ++k)
+        m->edge_normals[t][k] = m->face_normals[t] + m->face_normals[static_cast<std::size_t>(m->edge_partners[t][k])];
+    }
     add_vertex_normals(*m);
   }
   refit_tree(*m);

@@ -24,6 +24,7 @@ struct ColliderMesh {
   std::vector<Vec3> face_normals;                 // unit, per triangle
   std::vector<Vec3> vertex_normals;               // closed: Σ corner angle × face normal (not normalised)
   std::vector<std::array<Vec3, 3>> edge_normals;  // closed: per triangle, edge k (corner k to k + 1): n₁ + n₂
+  std::vector<std::array<int, 3>> edge_partners;  // closed: per triangle, the triangle across edge k (a refit's)
   std::vector<Vec3> vertex_velocities;            // a point-cached mesh's, local [m/s], per vertex; else empty
   // AABB tree: a leaf (count > 0) holds `count` triangles from `first` of `order`; an inner node its children at
   // `first` and −count.
