@@ -3,6 +3,7 @@
 
 #include "app/commands.hpp"
 #include "core/profile.hpp"
+#include "setup/collider_point_caches.hpp"
 
 namespace app {
 
@@ -25,6 +26,8 @@ std::vector<output::InputFile> scene_inputs(const scene::Scene& scene) {
   for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
     if (!collider.mesh_file.empty())
       inputs.push_back({collider.mesh_file, "the mesh file of colliders." + std::to_string(collider.collider)});
+    for (const std::filesystem::path& file : setup::point_cache_files(collider))
+      inputs.push_back({file, "the point cache of colliders." + std::to_string(collider.collider)});
   }
   return inputs;
 }

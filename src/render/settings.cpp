@@ -12,6 +12,18 @@ glm::vec3 to_glm(const softbody::Vec3& v) {
 
 glm::vec3 to_glm(const std::array<float, 3>& rgb) { return {rgb[0], rgb[1], rgb[2]}; }
 
+// Each collider at its first pose; the moving ones also kept whole, to be posed at each frame's time.
+void add_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders) {
+  for (const sim::Collider& collider : colliders) {
+    if (!collider.motion.moving()) {
+      settings.colliders.push_back(collider.geometry);
+      continue;
+    }
+    settings.colliders.push_back(sim::collider_at(collider, sim::motion_start_s(collider.motion)));
+    settings.moving_colliders.push_back(collider);
+  }
+}
+
 }  // namespace
 
 RenderSettings settings_from_scene(const scene::Scene& scene) {
@@ -29,21 +41,14 @@ RenderSettings settings_from_scene(const scene::Scene& scene) {
     settings.body_colors.push_back(to_glm(body.color));
     settings.body_patterns.push_back(static_cast<int>(body.pattern));
   }
-  use_world_colliders(settings, scene.colliders);
+  add_colliders(settings, scene.colliders);
   return settings;
 }
 
 void use_world_colliders(RenderSettings& settings, std::span<const sim::Collider> colliders) {
   settings.colliders.clear();
   settings.moving_colliders.clear();
-  for (const sim::Collider& collider : colliders) {
-    if (!collider.motion.moving()) {
-      settings.colliders.push_back(collider.geometry);
-      continue;
-    }
-    settings.colliders.push_back(sim::collider_at(collider, collider.motion.keys.front().time_s));
-    settings.moving_colliders.push_back(collider);
-  }
+  add_colliders(settings, colliders);
 }
 
 }  // namespace render

@@ -7,10 +7,10 @@
 
 namespace scene {
 
-void check_frame_pattern(const std::string& pattern, const std::string& scene_file) {
+bool is_frame_pattern(const std::string& pattern, const std::string& extension) {
   int conversions = 0;
-  bool well_formed = pattern.find('/') == std::string::npos && pattern.size() > 4 &&
-                     pattern.compare(pattern.size() - 4, 4, ".png") == 0;
+  bool well_formed = pattern.find('/') == std::string::npos && pattern.size() > extension.size() &&
+                     pattern.compare(pattern.size() - extension.size(), extension.size(), extension) == 0;
   for (std::size_t i = 0; well_formed && i < pattern.size(); ++i) {
     if (pattern[i] != '%') continue;
     if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
@@ -26,7 +26,11 @@ void check_frame_pattern(const std::string& pattern, const std::string& scene_fi
     ++conversions;
     i = j;
   }
-  if (!well_formed || conversions != 1) {
+  return well_formed && conversions == 1;
+}
+
+void check_frame_pattern(const std::string& pattern, const std::string& scene_file) {
+  if (!is_frame_pattern(pattern, ".png")) {
     throw softbody::InputError(scene_file +
                                ": output.pattern: expected a file name ending in .png with one frame "
                                "number conversion such as %04d (and no '/'), got \"" +

@@ -6,6 +6,10 @@
 
 namespace scene {
 
+// True when `pattern` holds exactly one integer conversion (%d, %4d or %04d), no other '%' than "%%", no '/', and
+// ends in `extension` (".png", ".obj").
+bool is_frame_pattern(const std::string& pattern, const std::string& extension);
+
 // Throws softbody::InputError naming `scene_file` and output.pattern unless `pattern` holds exactly one
 // integer conversion (%d, %4d or %04d), no other '%' than "%%", no '/', and ends in ".png".
 void check_frame_pattern(const std::string& pattern, const std::string& scene_file);

@@ -88,11 +88,15 @@ struct SceneTotals {
 
 // A "mesh" collider's file (or generator), which setup reads into the collider's shape (setup/collider_meshes.hpp).
 struct ColliderMeshSource {
-  std::size_t collider = 0;         // its index in Scene::colliders
-  std::string mesh;                 // as written: a file path relative to the scene, or a generator
-  std::filesystem::path mesh_file;  // the resolved path when `mesh` is a file, empty for a generator
-  double scale = 1.0;               // uniform scale applied to the mesh before it is turned and placed
-  double thickness_m = 0.01;        // an open mesh's thickness [m]
+  std::size_t collider = 0;          // its index in Scene::colliders
+  std::string mesh;                  // as written: a file path relative to the scene, or a generator
+  std::filesystem::path mesh_file;   // the resolved path when `mesh` is a file, empty for a generator
+  double scale = 1.0;                // uniform scale applied to the mesh before it is turned and placed
+  double thickness_m = 0.01;         // an open mesh's thickness [m]
+  std::filesystem::path cache_file;  // "cache": a PC2 point cache moving the mesh's vertices (empty: none), or
+                                     // a numbered OBJ sequence's pattern ("dir/collider_0_%04d.obj")
+  bool cache_sequence = false;       // cache_file is a numbered sequence's pattern
+  double cache_fps = 0.0;            // "cache_fps": the cache's frames per second (0: the scene's fps)
 };
 
 struct Scene {

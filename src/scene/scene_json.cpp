@@ -276,7 +276,7 @@ std::optional<sim::Floor> read_floor(const ObjectReader& top) {
 // The keys that belong to one collider shape (besides shape, position, rotation and the contact keys).
 const std::vector<std::string>& shape_keys(sim::ColliderShape shape) {
   static const std::vector<std::string> plane{"normal"}, box{"size"}, sphere{"radius"}, capsule{"radius", "length"},
-      mesh{"mesh", "scale", "thickness"};
+      mesh{"mesh", "scale", "thickness", "cache", "cache_fps"};
   switch (shape) {
     case sim::ColliderShape::Plane: return plane;
     case sim::ColliderShape::Box: return box;
@@ -292,11 +292,11 @@ void check_shape_keys(const ObjectReader& r, sim::ColliderShape shape, const std
   const std::vector<std::string>& own = shape_keys(shape);
   std::string own_words;
   for (const std::string& k : own) own_words += (own_words.empty() ? "\"" : ", \"") + k + "\"";
-  for (const char* k : {"normal", "size", "radius", "length", "mesh", "scale", "thickness"}) {
+  for (const char* k : {"normal", "size", "radius", "length", "mesh", "scale", "thickness", "cache", "cache_fps"}) {
     const bool belongs = std::find(own.begin(), own.end(), k) != own.end();
     if (!belongs && r.has(k))
       r.fail(r.child(k), "a " + shape_name + " takes no \"" + k + "\" (its own: " + own_words + ")", nullptr);
-    if (belongs && !r.has(k) && r.spec(k).default_value.is_null()) {
+    if (belongs && !r.has(k) && r.spec(k).default_value.is_null() && r.spec(k).default_words.empty()) {
       r.fail(r.child(k), "expected it for a " + shape_name + " (" + r.spec(k).description + ")", nullptr);
     }
   }
@@ -340,6 +340,51 @@ sim::ColliderGeometry read_collider_geometry(const ObjectReader& r) {
   return g;
 }
 
+// A mesh collider's "cache" (a PC2 file, or a numbered OBJ sequence's pattern, relative to the scene) and
+// "cache_fps"; refused beside "keys".
+void read_collider_cache(const ObjectReader& r, ColliderMeshSource& source) {
+  if (!r.has("cache")) {
+    if (r.has("cache_fps")) r.fail(r.child("cache_fps"), "expected only with \"cache\" (a point-cached mesh)", nullptr);
+    return;
+  }
+  if (r.has("keys")) {
+    r.fail(r.child("cache"),
+           "a collider moves by \"keys\" or by a \"cache\", not both (leave one out: a point cache already holds "
+           "the whole motion)",
+           nullptr);
+  }
+  const std::string name = r.string("cache", "");
+  const fs::path file = r.file().parent_path() / name;
+  source.cache_fps = r.has("cache_fps") ? r.number("cache_fps", 0.0) : 0.0;
+  if (name.find('%') != std::string::npos) {  // a numbered mesh sequence: its folder must exist
+    if (!is_frame_pattern(file.filename().string(), ".obj")) {
+      r.fail(r.child("cache"),
+             "expected a numbered OBJ sequence's file name with one frame number conversion such as "
+             "collider_0_%04d.obj (%d, %4d or %04d; '%%' for a '%'), or a .pc2 file",
+             &r.at("cache"));
+    }
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    if (const std::string words = softbody::non_regular_file_words(folder); words != "is a directory") {
+      r.fail(r.child("cache"), "the folder " + folder.string() + " of the numbered sequence " + words, nullptr);
+    }
+    source.cache_file = file;
+    source.cache_sequence = true;
+    return;
+  }
+  if (fs::path(name).extension() != ".pc2") {
+    r.fail(r.child("cache"),
+           "expected a point cache file ending in .pc2, or a numbered OBJ sequence such as collider_0_%04d.obj, "
+           "relative to the scene",
+           &r.at("cache"));
+  }
+  if (const std::string words = softbody::non_regular_file_words(file); !words.empty()) {
+    r.fail(r.child("cache"),
+           "point cache " + file.string() + " " + words + " (expected a .pc2 file path relative to the scene)",
+           nullptr);
+  }
+  source.cache_file = file;
+}
+
 // A mesh collider's "mesh" (a file relative to the scene, or a generator), "scale" and "thickness".
 ColliderMeshSource read_collider_mesh(const ObjectReader& r, std::size_t index) {
   ColliderMeshSource source;
@@ -347,6 +392,7 @@ ColliderMeshSource read_collider_mesh(const ObjectReader& r, std::size_t index) 
   source.mesh = r.string("mesh", "");  // required: check_shape_keys asked for it
   source.scale = r.number("scale");
   source.thickness_m = r.number("thickness");
+  read_collider_cache(r, source);
   if (mesh::names_generator(source.mesh)) {
     if (const std::string error = mesh::generator_spec_error(source.mesh); !error.empty()) {
       r.fail(r.child("mesh"), error, nullptr);

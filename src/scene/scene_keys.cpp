@@ -227,8 +227,10 @@ struct Table {
   void fill_collider() {
     collider.path = "colliders[]";
     collider.description =
-        "A static or keyframed (\"keys\") shape. Its own keys: plane \"normal\"; box \"size\"; sphere \"radius\"; "
-        "capsule \"radius\" and \"length\"; mesh \"mesh\", \"scale\" and \"thickness\". The contact keys left out "
+        "A static, keyframed (\"keys\") or, for a mesh, point-cached (\"cache\") shape. Its own keys: plane "
+        "\"normal\"; box \"size\"; sphere \"radius\"; "
+        "capsule \"radius\" and \"length\"; mesh \"mesh\", \"scale\", \"thickness\" and \"cache\". The contact keys "
+        "left out "
         "take the floor's values (the floor's defaults without a floor).";
     collider.keys = {
         required(key_without_default("shape", {choice({"plane", "box", "sphere", "capsule", "mesh"})}, "",
@@ -257,6 +259,21 @@ struct Table {
             "Mesh: an open mesh's thickness: a point nearer its triangles than half of it is inside (a closed mesh "
             "does not use it).",
             0.01),
+        names_file(key_without_default("cache", {of_kind(FormKind::String)}, "",
+                                       "Mesh: a point cache moving the mesh's vertices, relative to the scene file: a "
+                                       "PC2 file (as Blender, Maya, Houdini and softbody export --format pc2 write "
+                                       "it; sample i at frame start + i × rate) or a numbered OBJ sequence such as "
+                                       "\"out/collider_0_%04d.obj\" (as softbody export writes a moving collider; "
+                                       "file k at frame k, each with the first's triangles). One point per vertex of "
+                                       "the mesh, in its file's order (the mesh then an OBJ file or a generator). "
+                                       "Frame f is at f / cache_fps seconds; positions linear in time between "
+                                       "samples (the surface's velocity from them, so friction carries a body); "
+                                       "before the first sample and after the last the mesh holds that pose. Not "
+                                       "with \"keys\".",
+                                       "none (static, or \"keys\")"),
+                   kMaxPathBytes),
+        key_without_default("cache_fps", {positive()}, "",
+                            "With \"cache\": the frames per second its frame numbers count in.", "the scene's fps"),
         key_without_default("keys", {object_list(collider_key)}, "",
                             "A moving collider's keyframes, in increasing time: its pose at each key's time, "
                             "interpolated between them; before the first and after the last it holds its pose.",

@@ -9,6 +9,7 @@
 #include "mesh/generators.hpp"
 #include "mesh/import.hpp"
 #include "mesh/weld.hpp"
+#include "setup/collider_point_caches.hpp"
 #include "sim/contact/collider_mesh.hpp"
 
 namespace setup {
@@ -31,20 +32,27 @@ void load_collider_meshes(const scene::Scene& scene, std::vector<sim::Collider>&
     const std::string key = scene.source.string() + ": colliders." + std::to_string(source.collider) + ".mesh";
     const std::string what = softbody::one_line(source.mesh_file.empty() ? source.mesh : source.mesh_file.string());
     sim::ColliderGeometry& geometry = colliders.at(source.collider).geometry;
-    mesh::TriMesh m;
-    try {
-      m = read_scaled(source, scene.limits);
-    } catch (const softbody::InputError& e) {
-      throw softbody::InputError(key + ": mesh " + what + " " + e.what());
+    if (!source.cache_file.empty()) {
+      load_collider_point_cache(scene, source, colliders.at(source.collider));
+      totals.count_collider(s, {static_cast<long long>(geometry.mesh->vertices_m.size()),
+                                static_cast<long long>(geometry.mesh->triangles.size())});
+      totals.check();
+    } else {
+      mesh::TriMesh m;
+      try {
+        m = read_scaled(source, scene.limits);
+      } catch (const softbody::InputError& e) {
+        throw softbody::InputError(key + ": mesh " + what + " " + e.what());
+      }
+      totals.count_collider(s, {static_cast<long long>(m.vertices.size()), static_cast<long long>(m.triangles.size())});
+      totals.check();  // as each mesh file is read
+      try {
+        geometry.mesh = sim::make_collider_mesh(std::move(m.vertices), std::move(m.triangles), source.thickness_m);
+      } catch (const std::invalid_argument& e) {
+        throw softbody::InputError(key + ": mesh " + what + ": " + e.what() + " (expected a triangle mesh)");
+      }
+      geometry.world_reach_m = sim::world_reach(geometry);
     }
-    totals.count_collider(s, {static_cast<long long>(m.vertices.size()), static_cast<long long>(m.triangles.size())});
-    totals.check();  // as each mesh file is read
-    try {
-      geometry.mesh = sim::make_collider_mesh(std::move(m.vertices), std::move(m.triangles), source.thickness_m);
-    } catch (const std::invalid_argument& e) {
-      throw softbody::InputError(key + ": mesh " + what + ": " + e.what() + " (expected a triangle mesh)");
-    }
-    geometry.world_reach_m = sim::world_reach(geometry);
     if (!geometry.mesh->closed) {
       const std::string why = geometry.mesh->boundary_edges > 0
                                   ? "open (" + std::to_string(geometry.mesh->boundary_edges) + " edges of one triangle)"

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "setup/build_fingerprint.hpp"
+#include "setup/collider_point_caches.hpp"
 
 namespace setup {
 
@@ -22,7 +23,10 @@ std::uint64_t simulation_hash(const scene::Scene& scene) {
   XXH3_64bits_update(state, scene.simulation_json.data(), scene.simulation_json.size() + 1);
   std::vector<std::filesystem::path> files;
   for (const scene::Body& body : scene.bodies) files.push_back(body.mesh_file);
-  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) files.push_back(collider.mesh_file);
+  for (const scene::ColliderMeshSource& collider : scene.collider_meshes) {
+    files.push_back(collider.mesh_file);
+    for (const std::filesystem::path& file : point_cache_files(collider)) files.push_back(file);
+  }
   for (const std::filesystem::path& file : files) {
     if (file.empty()) continue;
     std::ifstream in(file, std::ios::binary);

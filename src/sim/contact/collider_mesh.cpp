@@ -80,6 +80,7 @@ bool pair_edges(ColliderMesh& m) {
   });
   bool closed = true;
   m.edge_normals.assign(m.triangles.size(), {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()});
+  m.edge_partners.assign(m.triangles.size(), {-1, -1, -1});
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi) ++j;
@@ -91,6 +92,8 @@ bool pair_edges(ColliderMesh& m) {
                        m.face_normals[static_cast<std::size_t>(uses[i + 1].triangle)];
       for (std::size_t u = i; u < j; ++u) {
         m.edge_normals[static_cast<std::size_t>(uses[u].triangle)][static_cast<std::size_t>(uses[u].corner)] = sum;
+        m.edge_partners[static_cast<std::size_t>(uses[u].triangle)][static_cast<std::size_t>(uses[u].corner)] =
+            uses[u == i ? i + 1 : i].triangle;
       }
     }
     i = j;
@@ -249,7 +252,80 @@ std::optional<double> segment_triangle_crossing(const Vec3& a, const Vec3& d, co
   return std::max(t, 0.0);
 }
 
+// The barycentric weights of point p of triangle abc (p in its plane): a degenerate triangle's first corner.
+std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e0 = b - a, e1 = c - a, e2 = p - a;
+  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = e2.dot(e0), d21 = e2.dot(e1);
+  const double denominator = d00 * d11 - d01 * d01;
+  if (denominator == 0.0) return {1.0, 0.0, 0.0};
+  const double wb = (d11 * d20 - d01 * d21) / denominator, wc = (d00 * d21 - d01 * d20) / denominator;
+  return {1.0 - wb - wc, wb, wc};
+}
+
+// The tree's boxes around the triangles' current vertices, children before parents (a parent's index is below its
+// children's: build_tree pushes a node before its subtrees).
+void refit_tree(ColliderMesh& m) {
+  for (std::size_t i = m.nodes.size(); i-- > 0;) {
+    ColliderMesh::Node& node = m.nodes[i];
+    if (node.count < 0) {
+      const ColliderMesh::Node &left = m.nodes[static_cast<std::size_t>(node.first)],
+                               &right = m.nodes[static_cast<std::size_t>(-node.count)];
+      node.lo = left.lo.cwiseMin(right.lo);
+      node.hi = left.hi.cwiseMax(right.hi);
+      continue;
+    }
+    node.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    node.hi = -node.lo;
+    for (int k = node.first; k < node.first + node.count; ++k) {
+      for (int v : m.triangles[static_cast<std::size_t>(m.order[static_cast<std::size_t>(k)])]) {
+        node.lo = node.lo.cwiseMin(m.vertices_m[static_cast<std::size_t>(v)]);
+        node.hi = node.hi.cwiseMax(m.vertices_m[static_cast<std::size_t>(v)]);
+      }
+    }
+  }
+}
+
 }  // namespace
+
+std::shared_ptr<const ColliderMesh> refit_collider_mesh(const ColliderMesh& mesh, std::vector<Vec3> vertices_m,
+                                                        std::vector<Vec3> velocities) {
+  auto m = std::make_shared<ColliderMesh>(mesh);
+  m->vertices_m = std::move(vertices_m);
+  m->vertex_velocities = std::move(velocities);
+  for (std::size_t t = 0; t < m->triangles.size(); ++t) {
+    const softbody::Triangle& tri = m->triangles[t];
+    const Vec3 n =
+        (m->vertices_m[static_cast<std::size_t>(tri[1])] - m->vertices_m[static_cast<std::size_t>(tri[0])])
+            .cross(m->vertices_m[static_cast<std::size_t>(tri[2])] - m->vertices_m[static_cast<std::size_t>(tri[0])]);
+    m->face_normals[t] = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+  }
+  if (m->closed) {  // the same pairs as the rest pose's: only the normals summed change
+    for (std::size_t t = 0; t < m->triangles.size(); ++t) {
+      for (std::size_t k = 0; k < 3; ++k)
+        m->edge_normals[t][k] = m->face_normals[t] + m->face_normals[static_cast<std::size_t>(m->edge_partners[t][k])];
+    }
+    add_vertex_normals(*m);
+  }
+  refit_tree(*m);
+  m->lo_m = m->nodes.front().lo - Vec3::Constant(m->half_thickness_m);
+  m->hi_m = m->nodes.front().hi + Vec3::Constant(m->half_thickness_m);
+  return m;
+}
+
+MeshPoint mesh_nearest_point_local(const ColliderMesh& m, const Vec3& q) {
+  const MeshHit h = nearest_triangle(m, q);
+  const softbody::Triangle& tri = m.triangles[static_cast<std::size_t>(h.triangle)];
+  return {h.triangle,
+          barycentric(h.hit.point, m.vertices_m[static_cast<std::size_t>(tri[0])],
+                      m.vertices_m[static_cast<std::size_t>(tri[1])], m.vertices_m[static_cast<std::size_t>(tri[2])])};
+}
+
+Vec3 mesh_point_position(const ColliderMesh& m, const MeshPoint& point) {
+  const softbody::Triangle& tri = m.triangles[static_cast<std::size_t>(point.triangle)];
+  Vec3 p = Vec3::Zero();
+  for (std::size_t k = 0; k < 3; ++k) p += point.weights[k] * m.vertices_m[static_cast<std::size_t>(tri[k])];
+  return p;
+}
 
 bool mesh_segment_entry_local(const ColliderMesh& m, const Vec3& a, const Vec3& b, Vec3& point, Vec3& normal) {
   const Vec3 d = b - a;

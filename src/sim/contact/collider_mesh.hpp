@@ -6,6 +6,7 @@
 // triangles than half of it.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct ColliderMesh {
   std::vector<Vec3> face_normals;                 // unit, per triangle
   std::vector<Vec3> vertex_normals;               // closed: Σ corner angle × face normal (not normalised)
   std::vector<std::array<Vec3, 3>> edge_normals;  // closed: per triangle, edge k (corner k to k + 1): n₁ + n₂
+  std::vector<std::array<int, 3>> edge_partners;  // closed: per triangle, the triangle across edge k (a refit's)
+  std::vector<Vec3> vertex_velocities;            // a point-cached mesh's, local [m/s], per vertex; else empty
   // AABB tree: a leaf (count > 0) holds `count` triangles from `first` of `order`; an inner node its children at
   // `first` and −count.
   struct Node {
@@ -50,5 +53,22 @@ bool mesh_inside_local(const ColliderMesh& mesh, const Vec3& q);
 // by half the thickness towards a. `point` and `normal` (unit, facing the side it came from) are local. False when
 // it crosses none.
 bool mesh_segment_entry_local(const ColliderMesh& mesh, const Vec3& a, const Vec3& b, Vec3& point, Vec3& normal);
+
+// The same mesh (triangles, sides, the tree's grouping) with its vertices moved to `vertices_m` (a point cache's pose,
+// sim/contact/collider_point_cache.hpp) and moving at `velocities` (local [m/s], per vertex): the face normals,
+// pseudo-normals and the tree's boxes are recomputed (the tree refitted, not rebuilt). A triangle that has lost its
+// area in this pose gets a zero normal (no side).
+std::shared_ptr<const ColliderMesh> refit_collider_mesh(const ColliderMesh& mesh, std::vector<Vec3> vertices_m,
+                                                        std::vector<Vec3> velocities);
+
+// The nearest point of the mesh to local q, as its triangle and the barycentric weights of its corners.
+struct MeshPoint {
+  int triangle = 0;
+  std::array<double, 3> weights{1.0, 0.0, 0.0};
+};
+MeshPoint mesh_nearest_point_local(const ColliderMesh& mesh, const Vec3& q);
+
+// The local position of that point (Σ weight × corner).
+Vec3 mesh_point_position(const ColliderMesh& mesh, const MeshPoint& point);
 
 }  // namespace sim

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/contact/collider_point_cache.hpp"
+
 namespace sim {
 namespace {
 
@@ -134,7 +136,13 @@ ColliderPose pose_at(const ColliderMotion& motion, double time_s) {
   return smooth_pose(keys, i, u, span);
 }
 
+double motion_start_s(const ColliderMotion& motion) {
+  if (motion.cache) return cache_start_s(*motion.cache);
+  return motion.keys.empty() ? 0.0 : motion.keys.front().time_s;
+}
+
 double fastest_point_speed(const ColliderMotion& motion, const Vec3& reach_m) {
+  if (motion.cache) return motion.cache->fastest_vertex_speed_m_per_s;
   const std::vector<ColliderKey>& keys = motion.keys;
   const double lever = std::isfinite(reach_m.norm()) ? reach_m.norm() : 0.0;
   double fastest = 0.0;
@@ -152,6 +160,13 @@ double fastest_point_speed(const ColliderMotion& motion, const Vec3& reach_m) {
 
 ColliderGeometry geometry_at(const ColliderGeometry& rest, const ColliderMotion& motion, double time_s) {
   if (!motion.moving()) return rest;
+  if (motion.cache) {  // the mesh moves, its placement does not
+    ColliderGeometry g = rest;
+    g.mesh = mesh_at(*motion.cache, time_s);
+    g.world_reach_m = world_reach(g);
+    g.velocity = {true, Vec3::Zero(), Vec3::Zero(), 0.0, true};
+    return g;
+  }
   const ColliderPose pose = pose_at(motion, time_s);
   ColliderGeometry g = rest;
   g.position_m = pose.position_m;
@@ -160,7 +175,7 @@ ColliderGeometry geometry_at(const ColliderGeometry& rest, const ColliderMotion&
   g.radius_m = pose.scale * rest.radius_m;
   g.half_length_m = pose.scale * rest.half_length_m;
   g.world_reach_m = world_reach(g);
-  g.velocity = {true, pose.velocity_m_per_s, pose.angular_velocity_rad_s, pose.scale_rate_per_s / pose.scale};
+  g.velocity = {true, pose.velocity_m_per_s, pose.angular_velocity_rad_s, pose.scale_rate_per_s / pose.scale, false};
   return g;
 }
 

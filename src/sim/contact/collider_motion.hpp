@@ -12,6 +12,7 @@
 //     ω_i = log(R_{i+1} R_{i−1}ᵀ) / (t_{i+1} − t_{i−1}) (world frame), 0 at the end keys.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -35,12 +36,18 @@ enum class KeyInterpolation {
   Smooth,  // C¹: Catmull–Rom positions and scale, a Hermite spline of rotations (see the header note)
 };
 
-// The keys in increasing time; none: a static collider.
+struct ColliderPointCache;  // sim/contact/collider_point_cache.hpp
+
+// The keys in increasing time, or a mesh's point cache; neither: a static collider.
 struct ColliderMotion {
   std::vector<ColliderKey> keys;
   KeyInterpolation interpolation = KeyInterpolation::Linear;
-  bool moving() const { return !keys.empty(); }
+  std::shared_ptr<const ColliderPointCache> cache;  // a mesh's vertices over time (no keys then)
+  bool moving() const { return !keys.empty() || cache != nullptr; }
 };
+
+// When the motion starts: its first key's or first sample's time [s] (0 when static).
+double motion_start_s(const ColliderMotion& motion);
 
 // A pose and its rate of change at one time.
 struct ColliderPose {
@@ -60,8 +67,8 @@ ColliderPose pose_at(const ColliderMotion& motion, double time_s);
 // lever arm and a margin for a smooth spline's overshoot. `reach` infinite (a plane): the turn is left out.
 double fastest_point_speed(const ColliderMotion& motion, const Vec3& reach_m);
 
-// The shape of `rest` (its sizes at scale 1) at the motion's pose at time t, with the velocity field of its points;
-// `rest` itself where the motion has no keys.
+// The shape of `rest` (its sizes at scale 1) at the motion's pose at time t, with the velocity field of its points
+// (a point-cached mesh: its vertices at t and their velocities); `rest` itself where the motion is static.
 ColliderGeometry geometry_at(const ColliderGeometry& rest, const ColliderMotion& motion, double time_s);
 
 }  // namespace sim

@@ -30,6 +30,7 @@ struct ColliderVelocity {
   Vec3 linear_m_per_s = Vec3::Zero();     // v, of the position c
   Vec3 angular_rad_per_s = Vec3::Zero();  // ω, world frame
   double expansion_per_s = 0.0;           // ṡ/s, the scale's relative rate
+  bool per_vertex = false;  // a point-cached mesh: u from its vertices' velocities instead (collider_point_cache.hpp)
 };
 
 // A shape and where it is: local coordinates q map to world ones as x = position + rotation q.
@@ -48,10 +49,14 @@ struct ColliderGeometry {
   ColliderVelocity velocity;  // of its points at the time of this pose (a keyframed collider's)
 };
 
+// The velocity of a point-cached mesh's surface nearest x [m/s] (sim/contact/collider_point_cache.hpp).
+Vec3 cached_surface_velocity(const ColliderGeometry& geometry, const Vec3& x);
+
 // The velocity of the collider's point at x, u(x) [m/s] (zero for a static collider).
 inline Vec3 surface_velocity(const ColliderGeometry& geometry, const Vec3& x) {
   const ColliderVelocity& u = geometry.velocity;
   if (!u.moving) return Vec3::Zero();
+  if (u.per_vertex) return cached_surface_velocity(geometry, x);
   const Vec3 r = x - geometry.position_m;
   return u.linear_m_per_s + u.angular_rad_per_s.cross(r) + u.expansion_per_s * r;
 }

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "sim/contact/collider_mesh.hpp"
+#include "sim/contact/collider_point_cache.hpp"
 
 namespace sim {
 namespace {
@@ -114,9 +115,10 @@ bool local_entry(const ColliderGeometry& g, const Vec3& a, const Vec3& b, Vec3& 
   return false;
 }
 
-// True when the segment's box misses the shape's world box (no contact possible).
-bool far_from(const ColliderGeometry& g, const Vec3& a, const Vec3& b) {
-  const Vec3 lo = a.cwiseMin(b) - g.position_m, hi = a.cwiseMax(b) - g.position_m;
+// True when the segment's box, grown by `pad`, misses the shape's world box (no contact possible).
+bool far_from(const ColliderGeometry& g, const Vec3& a, const Vec3& b, double pad = 0.0) {
+  const Vec3 lo = a.cwiseMin(b) - g.position_m - Vec3::Constant(pad),
+             hi = a.cwiseMax(b) - g.position_m + Vec3::Constant(pad);
   return (lo - g.world_reach_m).maxCoeff() >= 0.0 || (-hi - g.world_reach_m).maxCoeff() >= 0.0;
 }
 
@@ -124,6 +126,7 @@ bool far_from(const ColliderGeometry& g, const Vec3& a, const Vec3& b) {
 
 Vec3 carried_with(const ColliderGeometry& from, const ColliderGeometry& to, const Vec3& x) {
   if (!to.velocity.moving && !from.velocity.moving) return x;
+  if (to.velocity.per_vertex) return carried_with_cached_mesh(from, to, x);
   return to.position_m + size_ratio(from, to) * (to.rotation * (from.rotation.transpose() * (x - from.position_m)));
 }
 
@@ -145,6 +148,9 @@ bool collider_contact_point(const ColliderGeometry& g, const ColliderStepStart* 
     contact = nearest_surface(g, x1);
     return contact.distance_m < 0.0;
   }
+  // A cached mesh carries x0 by its nearest point's travel (a tree walk): first the cheap test with the segment's
+  // box grown by the farthest any vertex travels, which holds wherever the carried start may be.
+  if (g.velocity.per_vertex && far_from(g, start->x[i], x1, start->travel_m)) return false;
   const Vec3 x0 = carried_with(*start->pose, g, start->x[i]);
   if (far_from(g, x0, x1)) return false;
   const bool inside = is_inside(g, x1);

@@ -4,7 +4,9 @@
 //
 // The step's segment is taken in the collider's frame at the step's end: the start position x0 is carried with the
 // collider's motion from its pose at the start of the step to its pose at the end, x0' = p1 + s1/s0 R1 R0ᵀ (x0 − p0),
-// so that a vertex at rest on a moving surface stays on it. The vertex's front is
+// so that a vertex at rest on a moving surface stays on it; against a point-cached mesh x0 is carried with its nearest
+// surface point instead (the same triangle at the same barycentric weights in both poses: exact for a mesh that
+// translates, close for one that deforms little in a step). The vertex's front is
 //   - where the segment x0' → x1 entered the shape, when x0' is outside;
 //   - the nearest surface point of x0', when x0' is inside (a smooth contact's vertex that is sinking in).
 // It tunnelled when it ends inside with its nearest surface on the other side (n1·n_front ≤ 0), or outside behind
@@ -21,6 +23,7 @@ namespace sim {
 struct ColliderStepStart {
   const ColliderGeometry* pose = nullptr;
   std::span<const Vec3> x;
+  double travel_m = 0.0;  // a point-cached mesh: the farthest any of its vertices moves in the step [m]
 };
 
 // x moved with the collider from pose `from` to pose `to` (x itself when the collider is static).

@@ -8,6 +8,7 @@
 #include "core/profile.hpp"
 #include "sim/contact/body_collision.hpp"
 #include "sim/contact/collider_contact.hpp"
+#include "sim/contact/collider_point_cache.hpp"
 #include "sim/contact/contact.hpp"
 #include "sim/step/diverged.hpp"
 #include "sim/step/guard.hpp"
@@ -88,7 +89,7 @@ int resolve_colliders(const Model& model, State& state, Workspace& workspace, do
   int touched = 0;
   for (const Collider& collider : model.colliders) {
     const ColliderGeometry begin = collider_at(collider, start_s), end = collider_at(collider, start_s + h);
-    const ColliderStepStart step_start{&begin, workspace.step_start_x};
+    const ColliderStepStart step_start{&begin, workspace.step_start_x, largest_vertex_travel(begin, end)};
     const ColliderStepStart* sweep = collider.continuous ? &step_start : nullptr;
     FloorContactFound found;
     switch (collider.contact) {
