@@ -68,8 +68,8 @@ class SOFTBODY_OT_bake(bpy.types.Operator):
             return False
         layout = scene_writer.BakeLayout(bake_folder(scene))
         try:
-            world = [colliders.collider_entry(scene, obj, layout.collider_mesh_path(index),
-                                              os.path.relpath(layout.collider_mesh_path(index), layout.folder), scale)
+            world = [colliders.collider_entry(scene, obj, lambda extension, i=index: layout.collider_path(i, extension),
+                                              scale)
                      for index, obj in enumerate(colliders.collider_objects(scene))]
         except colliders.ColliderError as error:
             self._report_and_keep(context, "ERROR", str(error))

@@ -3,9 +3,12 @@
 # the frame range is written once, in world space. One whose transform is animated is written in its own frame and
 # gets one key per frame ("keys", "interpolation": "linear"): softbody moves it between frames as Blender shows it at
 # each. softbody's mesh colliders move and turn but do not scale, so the object's scale is baked into the mesh and
-# may not change over the range. A collider's contact keys are the floor's (the scene's Floor settings).
+# may not change over the range. One whose evaluated mesh changes shape (modifiers, shape keys, an armature) is
+# written as an OBJ and a PC2 point cache of its world positions at every frame ("cache"). The mesh is the evaluated
+# one (modifiers applied). A collider's contact keys are the floor's (the scene's Floor settings).
 import math
 
+import bpy
 import mathutils
 
 from . import scene_writer
@@ -30,20 +33,53 @@ def collider_objects(scene):
     return chosen
 
 
-def transforms_over(scene, obj):
-    """The object's world matrix at each frame of the scene's range, the current frame restored."""
+def sample_over(scene, obj):
+    """The object at each frame of the scene's range, the current frame restored: its world matrix and its evaluated
+    mesh (modifiers and shape keys applied) as local points and triangles."""
     current = scene.frame_current
-    matrices = []
+    samples = []
     for frame in range(scene.frame_start, scene.frame_end + 1):
         scene.frame_set(frame)
-        matrices.append(obj.matrix_world.copy())
+        evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        mesh = evaluated.to_mesh()
+        mesh.calc_loop_triangles()
+        samples.append(Sample(obj.matrix_world.copy(), [v.co.copy() for v in mesh.vertices],
+                              [tuple(t.vertices) for t in mesh.loop_triangles]))
+        evaluated.to_mesh_clear()
     scene.frame_set(current)
-    return matrices
+    return samples
+
+
+class Sample:
+    def __init__(self, matrix, points, triangles):
+        self.matrix, self.points, self.triangles = matrix, points, triangles
 
 
 def is_static(matrices):
     first = matrices[0]
     return all(abs(a - b) <= SAME_TRANSFORM for m in matrices[1:] for r, s in zip(m, first) for a, b in zip(r, s))
+
+
+def deforms(obj, samples):
+    """Whether the evaluated mesh changes shape over the range (checked: its triangles stay the same)."""
+    first = samples[0]
+    for frame, sample in enumerate(samples[1:], start=1):
+        if sample.triangles != first.triangles:
+            raise ColliderError("%s changes its triangles over the frame range (frame %d of the bake): a collider "
+                                "needs the same mesh at every frame" % (obj.name, frame))
+    return any(abs(a - b) > SAME_TRANSFORM for sample in samples[1:] for p, q in zip(sample.points, first.points)
+               for a, b in zip(p, q))
+
+
+def world_points(sample, metres_per_unit):
+    return [tuple(Y_UP @ (sample.matrix @ p) * metres_per_unit) for p in sample.points]
+
+
+def facing_out(sample):
+    """The triangles, turned back where a mirroring transform turns them inside out."""
+    if sample.matrix.determinant() < 0.0:
+        return [(a, c, b) for a, b, c in sample.triangles]
+    return sample.triangles
 
 
 def constant_scale(obj, matrices):
@@ -71,31 +107,29 @@ def key_at(time_s, matrix, metres_per_unit, previous_euler):
     return key, euler
 
 
-def local_mesh(obj, scale, metres_per_unit):
-    """The object's mesh in its own frame with its scale applied, in softbody's axes and metres, triangulated."""
-    mesh = obj.data
-    points = [tuple(Y_UP @ mathutils.Vector([c * s for c, s in zip(v.co, scale)]) * metres_per_unit)
-              for v in mesh.vertices]
-    mesh.calc_loop_triangles()
-    return points, [tuple(t.vertices) for t in mesh.loop_triangles]
-
-
-def collider_entry(scene, obj, mesh_path, mesh_file, metres_per_unit):
-    """Writes the collider's mesh to mesh_path and returns its "colliders" entry (mesh_file: its name in the scene)."""
-    matrices = transforms_over(scene, obj)
-    entry = {"shape": "mesh", "mesh": mesh_file}
+def collider_entry(scene, obj, paths, metres_per_unit):
+    """Writes the collider's files and returns its "colliders" entry. paths(extension) gives the file to write and its
+    name in the scene file."""
+    samples = sample_over(scene, obj)
+    entry = {"shape": "mesh"}
     thickness = obj.softbody_pressure.collider_thickness
     if thickness > 0.0:
         entry["thickness"] = scene_writer.number(thickness * metres_per_unit)
-    if is_static(matrices):
-        current = scene.frame_current
-        scene.frame_set(scene.frame_start)
-        points, triangles = scene_writer.world_mesh(obj, metres_per_unit)
-        scene.frame_set(current)
-        scene_writer.write_ply(mesh_path, points, triangles)
+    if deforms(obj, samples):  # an OBJ (the cache follows its v lines) and a PC2 of world points, frame 0 at 0 s
+        mesh_path, entry["mesh"] = paths(".obj")
+        cache_path, entry["cache"] = paths(".pc2")
+        scene_writer.write_obj(mesh_path, world_points(samples[0], metres_per_unit), facing_out(samples[0]))
+        scene_writer.write_pc2(cache_path, [world_points(sample, metres_per_unit) for sample in samples])
         return entry
-    points, triangles = local_mesh(obj, constant_scale(obj, matrices), metres_per_unit)
-    scene_writer.write_ply(mesh_path, points, triangles)
+    mesh_path, entry["mesh"] = paths(".ply")
+    matrices = [sample.matrix for sample in samples]
+    if is_static(matrices):
+        scene_writer.write_ply(mesh_path, world_points(samples[0], metres_per_unit), facing_out(samples[0]))
+        return entry
+    scale = constant_scale(obj, matrices)
+    points = [tuple(Y_UP @ mathutils.Vector([c * s for c, s in zip(p, scale)]) * metres_per_unit)
+              for p in samples[0].points]
+    scene_writer.write_ply(mesh_path, points, samples[0].triangles)
     fps = scene.render.fps / scene.render.fps_base
     keys, euler = [], None
     for index, matrix in enumerate(matrices):

@@ -35,8 +35,10 @@ class BakeLayout:
     def cache_path(self, body):
         return os.path.join(self.cache_folder, "body%d.pc2" % body)
 
-    def collider_mesh_path(self, collider):
-        return os.path.join(self.folder, MESH_FOLDER, "collider%d.ply" % collider)
+    def collider_path(self, collider, extension):
+        """A collider's file (.ply, or .obj and .pc2 for a deforming one) and its name in the scene file."""
+        path = os.path.join(self.folder, MESH_FOLDER, "collider%d%s" % (collider, extension))
+        return path, os.path.relpath(path, self.folder)
 
 
 def number(value):
@@ -69,6 +71,23 @@ def write_ply(path, points, triangles):
         f.write(header.encode("ascii"))
         f.write(b"".join(struct.pack("<3f", *p) for p in points))
         f.write(b"".join(struct.pack("<B3i", 3, *t) for t in triangles))
+
+
+def write_obj(path, points, triangles):
+    """An OBJ of v and f lines (9 significant digits): softbody keeps an OBJ's v order, which a point cache follows."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write("# written by softbody's Blender add-on: y up, metres\n")
+        f.write("".join("v %.9g %.9g %.9g\n" % p for p in points))
+        f.write("".join("f %d %d %d\n" % (a + 1, b + 1, c + 1) for a, b, c in triangles))
+
+
+def write_pc2(path, frames):
+    """A PC2 point cache: every frame's points (float32), sample i at frame i (start frame 0, one frame apart)."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "wb") as f:
+        f.write(b"POINTCACHE2\0" + struct.pack("<iiffi", 1, len(frames[0]), 0.0, 1.0, len(frames)))
+        f.write(b"".join(struct.pack("<3f", *p) for points in frames for p in points))
 
 
 def read_obj(path):

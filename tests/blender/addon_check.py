@@ -253,9 +253,10 @@ def nearest_distances(points, others):
 
 
 def check_colliders(program, bake_dir, scratch):
-    """A static block and an animated paddle (moved and turned) ticked as colliders: the scene file carries both
-    (the paddle with one key per frame), softbody's own export of the paddle at a frame is where Blender shows it,
-    and a ball dropped on the block comes to rest on it, not on the floor below."""
+    """A static block, an animated paddle (moved and turned) and a sheet raised by a shape key, ticked as colliders:
+    the scene file carries the three (the paddle with one key per frame, the sheet as a point cache), softbody's own
+    export of the paddle and the sheet at a frame is where Blender shows them, and a ball dropped on the block comes
+    to rest on it, not on the floor below."""
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj, do_unlink=True)
     scene = bpy.context.scene
@@ -272,6 +273,17 @@ def check_colliders(program, bake_dir, scratch):
         paddle.location, paddle.rotation_euler = location, (0.3 * turn, 0.0, turn)
         paddle.keyframe_insert("location")
         paddle.keyframe_insert("rotation_euler")
+    bpy.ops.mesh.primitive_grid_add(x_subdivisions=4, y_subdivisions=4, size=1.0, location=(-1.5, 0.0, 0.2))
+    sheet = bpy.context.active_object
+    sheet.name = "Sheet"
+    sheet.softbody_pressure.collider = True
+    sheet.shape_key_add(name="Basis")
+    raised = sheet.shape_key_add(name="Raised")
+    for i, point in enumerate(raised.data):
+        point.co.z += 0.3 * (1.0 - abs(sheet.data.vertices[i].co.x))  # a ridge along y rises out of the sheet
+    for frame, value in ((START, 0.0), (START + 20, 1.0)):
+        raised.value = value
+        raised.keyframe_insert("value", frame=frame)
     scene.frame_set(START)
     bpy.ops.object.select_all(action="DESELECT")
     bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=2, radius=0.25, location=(0.0, 0.0, 1.0))
@@ -282,8 +294,9 @@ def check_colliders(program, bake_dir, scratch):
     bake()
     with open(os.path.join(bake_dir, "scene.json")) as f:
         written = json.load(f).get("colliders", [])
-    if len(written) != 2 or "keys" in written[0] or len(written[1].get("keys", [])) != 21:
-        fail("expected the static Block and the Paddle with 21 keys in the scene file, got %s" % written)
+    if len(written) != 3 or "keys" in written[0] or len(written[1].get("keys", [])) != 21 or \
+            not written[2].get("cache", "").endswith(".pc2") or not written[2]["mesh"].endswith(".obj"):
+        fail("expected the static Block, the Paddle with 21 keys and the Sheet's point cache, got %s" % written)
     cli_dir = os.path.join(scratch, "cli_colliders")
     subprocess.run([program, "export", os.path.join(bake_dir, "scene.json"), "--format", "obj", "-o", cli_dir],
                    check=True, stdout=subprocess.DEVNULL)
@@ -291,14 +304,16 @@ def check_colliders(program, bake_dir, scratch):
     shown = evaluated_world(paddle)
     exported = y_up_to_z_up(read_obj_vertices(os.path.join(cli_dir, "collider_1_%04d.obj" % FRAME)))
     paddle_error = nearest_distances(shown, exported)
+    sheet_exported = read_obj_vertices(os.path.join(cli_dir, "collider_2_%04d.obj" % FRAME))
+    sheet_error = nearest_distances(evaluated_world(sheet), y_up_to_z_up(sheet_exported))
     block_error = nearest_distances(evaluated_world(block),
                                     y_up_to_z_up(read_obj_vertices(os.path.join(cli_dir, "collider_0.obj"))))
     scene.frame_set(START + 20)
     lowest = min(p[2] for p in evaluated_world(ball))
-    print("blender addon: colliders: the paddle at frame %d is %.3g m from softbody's export of it, the block %.3g m; "
-          "the ball's lowest point at the end z = %.4f m (the block's top: 0.5 m)" % (FRAME, paddle_error, block_error,
-                                                                                   lowest))
-    if paddle_error > TOLERANCE_M or block_error > TOLERANCE_M:
+    print("blender addon: colliders: at frame %d the paddle is %.3g m from softbody's export of it, the raised sheet "
+          "%.3g m, the block %.3g m; the ball's lowest point at the end z = %.4f m (the block's top: 0.5 m)"
+          % (FRAME, paddle_error, sheet_error, block_error, lowest))
+    if max(paddle_error, sheet_error, block_error) > TOLERANCE_M:
         fail("softbody's colliders are not where Blender shows them")
     if lowest < 0.45:
         fail("the ball did not land on the block collider")
