@@ -51,8 +51,7 @@ scene::Scene ground_scene(sim::IntegratorKind integrator, Ground ground) {
 }
 
 // The world for (integrator, ground) after kSettle_s of simulated time (the ball resting on its ground, its contact
-// patch near its final size: about 500 vertices), made once
-// per case and copied into each repetition.
+// patch near its final size: about 500 vertices), made once per case and copied into each repetition.
 constexpr double kSettle_s = 0.3;
 
 sim::World settled_world(sim::IntegratorKind integrator, Ground ground) {
