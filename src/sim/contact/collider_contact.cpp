@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "sim/contact/collider_side.hpp"
 #include "sim/contact/contact_response.hpp"
 
 namespace sim {
@@ -26,8 +27,9 @@ FloorContactFound for_each_inside(const ColliderGeometry& collider, const Collid
   FloorContactFound found;
   SurfacePoint s;
   bool tunnelled = false;
+  const ColliderSide side(collider, start, x);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!collider_contact_point(collider, start, i, x[i], s, tunnelled)) continue;
+    if (side.clears(i, x[i]) || !collider_contact_point(collider, start, i, x[i], s, tunnelled)) continue;
     found.deepest_m = std::max(found.deepest_m, -s.distance_m);
     ++found.below;
     respond(i, s);
@@ -91,8 +93,11 @@ FloorContactFound resolve_collider_tunnelling(const ColliderGeometry& collider, 
   FloorContactFound found;
   SurfacePoint s;
   bool tunnelled = false;
+  const ColliderSide side(collider, &start, x);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!collider_contact_point(collider, &start, i, x[i], s, tunnelled) || !tunnelled) continue;
+    if (side.clears(i, x[i]) || !collider_contact_point(collider, &start, i, x[i], s, tunnelled) || !tunnelled) {
+      continue;
+    }
     found.deepest_m = std::max(found.deepest_m, -s.distance_m);
     ++found.below;
     x[i] = s.closest_m;

@@ -37,10 +37,10 @@ SurfacePoint box_local(const Vec3& half, const Vec3& q) {
     if (excess[k] > excess[axis]) axis = k;
   }
   const double side = q[axis] < 0.0 ? -1.0 : 1.0;
-  Vec3 normal = Vec3::Zero();
-  normal[axis] = side;
-  Vec3 closest = q;
-  closest[axis] = side * half[axis];
+  // Built whole rather than by writing one coordinate, which the vector reads of the callers would wait for.
+  const Vec3 normal(axis == 0 ? side : 0.0, axis == 1 ? side : 0.0, axis == 2 ? side : 0.0);
+  const Vec3 face = side * half;
+  const Vec3 closest(axis == 0 ? face.x() : q.x(), axis == 1 ? face.y() : q.y(), axis == 2 ? face.z() : q.z());
   return {excess[axis], normal, closest};
 }
 
@@ -70,29 +70,42 @@ SurfacePoint nearest_local(const ColliderGeometry& g, const Vec3& q) {
   return {};
 }
 
-}  // namespace
-
-SurfacePoint nearest_surface(const ColliderGeometry& g, const Vec3& x) {
-  const Vec3 q = g.rotation.transpose() * (x - g.position_m);  // local coordinates
-  const SurfacePoint local = nearest_local(g, q);
-  return {local.distance_m, Vec3(g.rotation * local.normal), Vec3(g.position_m + g.rotation * local.closest_m)};
-}
-
-bool is_inside(const ColliderGeometry& g, const Vec3& x) {
-  const Vec3 offset = x - g.position_m;
+// Whether the point at `offset` = x − position is inside; local() gives its local coordinates, asked only when needed.
+template <class Local>
+bool inside_at(const ColliderGeometry& g, const Vec3& offset, Local local) {
   switch (g.shape) {
-    case ColliderShape::Plane: return g.plane_normal.dot(g.rotation.transpose() * offset) < 0.0;
+    case ColliderShape::Plane: return g.plane_normal.dot(local()) < 0.0;
     case ColliderShape::Sphere: return offset.squaredNorm() < g.radius_m * g.radius_m;
     case ColliderShape::Box:
     case ColliderShape::Capsule:
     case ColliderShape::Mesh: break;
   }
   if ((offset.cwiseAbs() - g.world_reach_m).maxCoeff() >= 0.0) return false;  // outside the world box
-  const Vec3 q = g.rotation.transpose() * offset;
+  const Vec3 q = local();
   if (g.shape == ColliderShape::Mesh) return mesh_inside_local(*g.mesh, q);
   if (g.shape == ColliderShape::Box) return (q.cwiseAbs() - g.half_size_m).maxCoeff() < 0.0;
   const Vec3 out(q.x(), q.y() - std::clamp(q.y(), -g.half_length_m, g.half_length_m), q.z());  // capsule
   return out.squaredNorm() < g.radius_m * g.radius_m;
+}
+
+}  // namespace
+
+SurfacePoint nearest_surface(const ColliderGeometry& g, const Vec3& x) {
+  return nearest_surface_of_local(g, to_local(g, x));
+}
+
+SurfacePoint nearest_surface_of_local(const ColliderGeometry& g, const Vec3& q) {
+  const SurfacePoint local = nearest_local(g, q);
+  return {local.distance_m, Vec3(g.rotation * local.normal), Vec3(g.position_m + g.rotation * local.closest_m)};
+}
+
+bool is_inside(const ColliderGeometry& g, const Vec3& x) {
+  const Vec3 offset = x - g.position_m;
+  return inside_at(g, offset, [&] { return Vec3(g.rotation.transpose() * offset); });
+}
+
+bool is_inside(const ColliderGeometry& g, const Vec3& x, const Vec3& q) {
+  return inside_at(g, x - g.position_m, [&] { return q; });
 }
 
 Vec3 world_reach(const ColliderGeometry& g) {

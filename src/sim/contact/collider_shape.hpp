@@ -74,10 +74,22 @@ struct SurfacePoint {
 
 SurfacePoint nearest_surface(const ColliderGeometry& geometry, const Vec3& x);
 
+// x in the shape's own frame: q = Rᵀ (x − position) [m].
+inline Vec3 to_local(const ColliderGeometry& geometry, const Vec3& x) {
+  return geometry.rotation.transpose() * (x - geometry.position_m);
+}
+
+// nearest_surface() of the point whose local coordinates are q = to_local(geometry, x).
+SurfacePoint nearest_surface_of_local(const ColliderGeometry& geometry, const Vec3& q);
+
 // True when x is inside the shape (signed distance < 0), by the cheapest test: beyond world_reach_m of a box's or
 // capsule's centre at once, else the shape in its own frame without square roots. The contact passes ask it of every
 // vertex and nearest_surface() only of the few inside.
 bool is_inside(const ColliderGeometry& geometry, const Vec3& x);
+
+// is_inside() of x, its local coordinates q = to_local(geometry, x) already known (the continuous test needs them for
+// several questions about the same point).
+bool is_inside(const ColliderGeometry& geometry, const Vec3& x, const Vec3& q);
 
 // The world box that holds a bounded shape, {lo, hi} [m]; a plane is unbounded and returns false.
 bool world_bounds(const ColliderGeometry& geometry, Vec3& lo, Vec3& hi);

@@ -122,6 +122,14 @@ bool far_from(const ColliderGeometry& g, const Vec3& a, const Vec3& b, double pa
   return (lo - g.world_reach_m).maxCoeff() >= 0.0 || (-hi - g.world_reach_m).maxCoeff() >= 0.0;
 }
 
+// segment_entry() of the segment whose ends have the local coordinates qa and qb.
+bool segment_entry_of_local(const ColliderGeometry& g, const Vec3& qa, const Vec3& qb, SurfacePoint& entry) {
+  Vec3 point, normal;
+  if (!local_entry(g, qa, qb, point, normal)) return false;
+  entry = {0.0, Vec3(g.rotation * normal), Vec3(g.position_m + g.rotation * point)};
+  return true;
+}
+
 }  // namespace
 
 Vec3 carried_with(const ColliderGeometry& from, const ColliderGeometry& to, const Vec3& x) {
@@ -131,13 +139,7 @@ Vec3 carried_with(const ColliderGeometry& from, const ColliderGeometry& to, cons
 }
 
 bool segment_entry(const ColliderGeometry& g, const Vec3& a, const Vec3& b, SurfacePoint& entry) {
-  Vec3 point, normal;
-  if (!local_entry(g, g.rotation.transpose() * (a - g.position_m), g.rotation.transpose() * (b - g.position_m), point,
-                   normal)) {
-    return false;
-  }
-  entry = {0.0, Vec3(g.rotation * normal), Vec3(g.position_m + g.rotation * point)};
-  return true;
+  return segment_entry_of_local(g, to_local(g, a), to_local(g, b), entry);
 }
 
 bool collider_contact_point(const ColliderGeometry& g, const ColliderStepStart* start, std::size_t i, const Vec3& x1,
@@ -153,13 +155,14 @@ bool collider_contact_point(const ColliderGeometry& g, const ColliderStepStart* 
   if (g.velocity.per_vertex && far_from(g, start->x[i], x1, start->travel_m)) return false;
   const Vec3 x0 = carried_with(*start->pose, g, start->x[i]);
   if (far_from(g, x0, x1)) return false;
-  const bool inside = is_inside(g, x1);
-  if (inside) contact = nearest_surface(g, x1);
+  const Vec3 q0 = to_local(g, x0), q1 = to_local(g, x1);  // once for the questions below
+  const bool inside = is_inside(g, x1, q1);
+  if (inside) contact = nearest_surface_of_local(g, q1);
   // The front: where the segment entered, or the nearest surface of a start inside.
   SurfacePoint front;
-  if (is_inside(g, x0)) {
-    front = nearest_surface(g, x0);
-  } else if (!segment_entry(g, x0, x1, front)) {
+  if (is_inside(g, x0, q0)) {
+    front = nearest_surface_of_local(g, q0);
+  } else if (!segment_entry_of_local(g, q0, q1, front)) {
     return inside && contact.distance_m < 0.0;
   }
   const double behind = (x1 - front.closest_m).dot(front.normal);  // < 0: behind the front's tangent plane [m]
