@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
 namespace {
@@ -108,7 +109,7 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   Matrix12 K = Matrix12::Zero();
   Vector12 G = Vector12::Zero();
   CoarseMoments moments;
-  // Vertices: inertia, floor and colliders.
+  // Vertices: inertia, floor, colliders and contacts with bodies.
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
@@ -122,6 +123,11 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     for (const SmoothCollider& collider : s.colliders) {
       Block3 hessian;
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      add_block(hessian, r, K);
+    }
+    if (s.contacts) {  // each vertex's own block c_j² K (a self-contact's cross terms left out: still a descent)
+      Block3 hessian;
+      s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, hessian);
       add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);

@@ -2,6 +2,7 @@
 #include "sim/integrators/motion_search.hpp"
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
 namespace {
@@ -66,6 +67,7 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
     for (std::size_t i = 0; i < n; ++i) trial[i] = x[i] + alpha * motion[i];
     change += s.gas->energy_change(volume, enclosed_volume(body.topology.faces, trial) - volume);
   }
+  if (s.contacts) change += s.contacts->motion_energy_change(s.first_vertex, motion, alpha);
   return change;
 }
 

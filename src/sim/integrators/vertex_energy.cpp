@@ -1,6 +1,8 @@
 // One vertex's part of vbd's step energy: gradient, Hessian block, and the change along a move.
 #include "sim/integrators/vertex_energy.hpp"
 
+#include "sim/integrators/vertex_contacts.hpp"
+
 namespace sim {
 namespace {
 
@@ -123,6 +125,7 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   for (std::size_t c = 0; c < s.colliders.size(); ++c) {
     lags.colliders[c] = add_collider_terms(s.colliders[c], m, xi, base_i, s.h_hat, terms.gradient, terms.hessian);
   }
+  if (s.contacts) s.contacts->add_terms(s.first_vertex + i, terms.gradient, terms.hessian);
   return terms;
 }
 
@@ -149,6 +152,7 @@ double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, 
   for (std::size_t c = 0; c < s.colliders.size(); ++c) {
     change += collider_energy_change(s.colliders[c], lags.colliders[c], m, xi, step, s.base[vi], s.h_hat);
   }
+  if (s.contacts) change += s.contacts->energy_change(s.first_vertex + i, step);
   return change;
 }
 
