@@ -96,7 +96,7 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 }  // namespace
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch) {
+AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch) {
   std::vector<Vec3>& area_sums = scratch.area_sums;
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
@@ -162,13 +162,21 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     G -= s.gas->pressure(volume) * u;
     K += s.gas->stiffness(volume) * u * u.transpose();
   }
-  const Vector12 q = K.ldlt().solve(-G);
-  const double slope = G.dot(q);
+  return AffineSystem{K, G, centre, volume};
+}
+
+void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centre, std::vector<Vec3>& motion) {
+  motion.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) motion[i] = affine_motion(q, x[i] - centre);
+}
+
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch) {
+  const AffineSystem system = affine_system(body, s, x, scratch);
+  const Vector12 q = system.matrix.ldlt().solve(-system.gradient);
+  const double slope = system.gradient.dot(q);
   if (!(slope < 0.0)) return false;
-  std::vector<Vec3>& motion = scratch.search.motion;
-  motion.resize(n);
-  for (std::size_t i = 0; i < n; ++i) motion[i] = affine_motion(q, x[i] - centre);
-  return search_along_motion(body, s, x, volume, slope, scratch.search);
+  affine_motion(q, x, system.centre, scratch.search.motion);
+  return search_along_motion(body, s, x, system.volume, slope, scratch.search);
 }
 
 }  // namespace sim

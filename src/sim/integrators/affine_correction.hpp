@@ -4,6 +4,8 @@
 #include <span>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "sim/integrators/motion_search.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/model/body.hpp"
@@ -24,5 +26,18 @@ struct AffineScratch {
 
 // One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved.
 bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch);
+
+// The coarse system of that step at x: Bᵀ H B and Bᵀ ∇E over the 12 unknowns (A row-major, then t), about the centre
+// of mass c, and V(x) (0 without gas).
+struct AffineSystem {
+  Eigen::Matrix<double, 12, 12> matrix;
+  Eigen::Matrix<double, 12, 1> gradient;
+  Vec3 centre = Vec3::Zero();
+  double volume = 0.0;
+};
+AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch);
+// B q: the motion A (x_i − c) + t of every vertex into motion.
+void affine_motion(const Eigen::Matrix<double, 12, 1>& q, std::span<const Vec3> x, const Vec3& centre,
+                   std::vector<Vec3>& motion);
 
 }  // namespace sim

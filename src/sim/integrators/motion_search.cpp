@@ -5,10 +5,9 @@
 #include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
-namespace {
 
 // The floor's and the smooth colliders' lags of every vertex at x, as the vertex's own terms take them.
-void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
+void take_motion_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
   const std::size_t n = x.size();
   Vec3 unused_gradient = Vec3::Zero();
   Block3 unused_hessian;
@@ -29,8 +28,8 @@ void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratc
 }
 
 // E(x + α motion) − E(x) [J], with the lags in scratch.
-double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
-                     MotionScratch& scratch) {
+double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
+                            MotionScratch& scratch) {
   const std::vector<Vec3>& motion = scratch.motion;
   const std::size_t n = x.size();
   double change = 0.0;
@@ -71,13 +70,11 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
   return change;
 }
 
-}  // namespace
-
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch) {
-  take_contact_lags(s, x, scratch);  // once: they do not depend on α
+  take_motion_lags(s, x, scratch);  // once: they do not depend on α
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
-    if (energy_change(body, s, x, volume, alpha, scratch) <= kArmijo * alpha * slope) {
+    if (motion_energy_change(body, s, x, volume, alpha, scratch) <= kArmijo * alpha * slope) {
       for (std::size_t i = 0; i < x.size(); ++i) x[i] += alpha * scratch.motion[i];
       return true;
     }

@@ -9,6 +9,7 @@
 #include "sim/contact/collider_shape.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/affine_correction.hpp"
+#include "sim/integrators/joint_affine_correction.hpp"
 
 namespace sim {
 namespace {
@@ -100,11 +101,9 @@ double VertexBlockDescent::set_targets(const Model& model, const State& state, d
   return h_hat;
 }
 
-void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& all_x,
-                                    int first_sweep, int count) {
+BodySolve VertexBlockDescent::body_solve(const Model& model, std::size_t b, double h_hat) const {
   const Body& body = model.bodies[b];
-  const VertexBlocks& blocks = blocks_[b];
-  BodySolve s{blocks,
+  BodySolve s{blocks_[b],
               Model::of(body, model.mass_kg),
               Model::of(body, target_),
               Model::of(body, base_),
@@ -115,8 +114,16 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
               smooth_floor_ ? &*smooth_floor_ : nullptr,
               smooth_colliders_};
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
-  if (contacts_.active()) s.contacts = &contacts_;
   s.first_vertex = body.first_vertex;
+  return s;
+}
+
+void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& all_x,
+                                    int first_sweep, int count) {
+  const Body& body = model.bodies[b];
+  const VertexBlocks& blocks = blocks_[b];
+  BodySolve s = body_solve(model, b, h_hat);
+  if (contacts_.active()) s.contacts = &contacts_;
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = first_sweep; sweep < first_sweep + count; ++sweep) {
     if (coarse_) affine_correction(body, s, x, coarse_scratch_);
@@ -132,6 +139,11 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
 void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x) {
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
     if (sweep == 0 || kLagEverySweep) contacts_.lag(model, x, base_, h_hat);
+    if (coarse_ && model.bodies.size() > 1) {
+      joint_solves_.clear();
+      for (std::size_t b = 0; b < model.bodies.size(); ++b) joint_solves_.push_back(body_solve(model, b, h_hat));
+      joint_affine_correction(model, joint_solves_, contacts_, x, joint_scratch_);
+    }
     for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, x, sweep, 1);
   }
 }

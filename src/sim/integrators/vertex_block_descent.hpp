@@ -9,6 +9,7 @@
 #include "sim/integrators/affine_correction.hpp"
 #include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/integrators.hpp"
+#include "sim/integrators/joint_affine_correction.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/integrators/vertex_energy.hpp"
@@ -42,7 +43,8 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
 // The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E as
 // newton's terms do (sim/contact/floor_potential.hpp, smooth_collider.hpp, vertex_contacts.hpp); with the smooth body
-// contact the bodies' sweeps interleave (one sweep of each body in turn) and the contacts are lagged before each. The
+// contact the bodies' sweeps interleave (one sweep of each body in turn), the contacts are lagged before each, and a
+// joint affine correction of the bodies coupled by their contacts comes first (joint_affine_correction.hpp). The
 // paper's and the friction floor and the impulse contact between bodies stay projections after the step (sim::step).
 // What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
 // of the State is a checkpoint. No allocation per step once sizes settle.
@@ -84,6 +86,8 @@ class VertexBlockDescent final : public Integrator {
   // x_previous, v_previous; backward Euler where ratio is 0); returns ĥ [s].
   double set_targets(const Model& model, const State& state, double h, double ratio,
                      const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous);
+  // What body b's local solves read (without the contacts between bodies).
+  BodySolve body_solve(const Model& model, std::size_t b, double h_hat) const;
   // Sweeps first_sweep .. first_sweep + count − 1 of a step over body b's vertices (all solver.iterations of them,
   // from x = y, without contacts between bodies).
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count);
@@ -103,10 +107,12 @@ class VertexBlockDescent final : public Integrator {
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
   VertexContacts contacts_;                       // the smooth contact between bodies
-  std::vector<Vec3> target_;                      // y per vertex [m]
-  std::vector<Vec3> base_;                        // x̃ per vertex [m]
-  std::vector<Vec3> start_x_, start_v_;           // x_n, v_n (then the next step's history)
-  ConstraintLags lags_;                           // scratch: one vertex's constraints as its visit found them
+  std::vector<BodySolve> joint_solves_;           // per body, for the joint affine correction
+  JointAffineScratch joint_scratch_;
+  std::vector<Vec3> target_;             // y per vertex [m]
+  std::vector<Vec3> base_;               // x̃ per vertex [m]
+  std::vector<Vec3> start_x_, start_v_;  // x_n, v_n (then the next step's history)
+  ConstraintLags lags_;                  // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
 };
 

@@ -44,6 +44,11 @@ class VertexContacts {
   // The contacts' change of E when the vertices first_vertex .. first_vertex + motion.size() move by α motion [J].
   double motion_energy_change(int first_vertex, std::span<const Vec3> motion, double alpha) const;
   std::size_t contacts() const { return contacts_.size(); }
+  // Contact c's frame, and ∇_r E_c and K at the current positions (for the joint coarse correction).
+  const BodyCollider::SmoothFrame& frame(std::size_t c) const { return contacts_[c].frame; }
+  void relative_derivatives(std::size_t c, Vec3& gradient, Block3& hessian) const {
+    derivatives(contacts_[c], relative(contacts_[c]), gradient, hessian);
+  }
   // ω = 1/τ of the contact [1/s] where a step of h from (x, v) is an impact between bodies, else 0: the vertices in or
   // reaching a skin within h (at their speed towards it) carry more normal momentum Σ m |v_rel·n| than their body would
   // at `impact_speed` [m/s]. The same test as the smooth floor's (vertex_block_descent.cpp, kImpactSpeed).
