@@ -138,7 +138,11 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
 
 void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x) {
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
-    if (sweep == 0 || kLagEverySweep) contacts_.lag(model, x, base_, h_hat);
+    if (sweep == 0) {
+      contacts_.lag(model, x, base_, h_hat, start_x_);
+    } else if (kLagEverySweep) {
+      contacts_.lag(model, x, base_, h_hat);
+    }
     if (coarse_ && model.bodies.size() > 1) {
       joint_solves_.clear();
       for (std::size_t b = 0; b < model.bodies.size(); ++b) joint_solves_.push_back(body_solve(model, b, h_hat));

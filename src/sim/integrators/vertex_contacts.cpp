@@ -13,11 +13,12 @@ void VertexContacts::build(const Model& model) {
   start_.clear();
 }
 
-void VertexContacts::lag(const Model& model, std::span<const Vec3> x, std::span<const Vec3> base, double h_hat) {
+void VertexContacts::lag(const Model& model, std::span<const Vec3> x, std::span<const Vec3> base, double h_hat,
+                         std::span<const Vec3> found_at) {
   x_ = x;
   base_ = base;
   h_hat_ = h_hat;
-  collider_.find_smooth_frames(model.bodies, x, frames_);
+  collider_.find_smooth_frames(model.bodies, found_at.empty() ? x : found_at, frames_);
   contacts_.resize(frames_.size());
   start_.assign(x.size() + 1, 0);
   for (std::size_t c = 0; c < frames_.size(); ++c) {

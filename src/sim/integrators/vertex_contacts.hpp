@@ -36,7 +36,9 @@ class VertexContacts {
   bool active() const { return active_; }
   // Finds the contacts at x (every vertex of the model) and lags their frames, dashpot weights and friction normal
   // forces there; `base` is x̃ and `h_hat` ĥ of the step. Reads x and base (kept as views) until the next lag.
-  void lag(const Model& model, std::span<const Vec3> x, std::span<const Vec3> base, double h_hat);
+  // With `found_at`, the contacts (nearest triangles, sides, frames) are those of the vertices at found_at instead.
+  void lag(const Model& model, std::span<const Vec3> x, std::span<const Vec3> base, double h_hat,
+           std::span<const Vec3> found_at = {});
   // ∇_v E and H_v of the contacts of world vertex v at the positions lag() was given (as they are now).
   void add_terms(int vertex, Vec3& gradient, Block3& hessian) const;
   // The contacts' change of E when world vertex v alone moves by step [J].
