@@ -293,8 +293,8 @@ StackRun run_stack(const sim::Solver& solver, double dt, int samples) {
 // deeper in the contact skin than 1.1 × the converged motion's deepest (rk4 at 0.1 ms, the same samples), and the top
 // ball within 2 cm of where the converged one oscillates (BDF2 keeps rk4's ±7 cm bounce on the gas springs, which
 // backward Euler damps out, so the means over the last second are compared). Without the joint affine correction the
-// mean sat 9 cm low at 4 sweeps (the stack's weight crossed one body per sweep); with it, 4 sweeps hold the mean
-// (0.3 cm off) but go 1.20 mm deep, 1.25× rk4's 0.96 mm; 8 sweeps: 0.98 mm.
+// mean sat 9 cm low at 4 sweeps (the stack's weight crossed one body per sweep); with it, 4 sweeps go 1.10 mm deep
+// (1.14× rk4's 0.96 mm) with the mean 1.8 cm low, 8 sweeps 0.975 mm with the mean within 0.1 cm.
 TEST(VbdContact, TwoBallsStackAtOneSixtiethOfASecondWithoutSinkingIn) {
   constexpr int kStackSweeps = 8;
   constexpr int kSamples = 120;  // 2 s

@@ -49,7 +49,7 @@ Eigen::Index t_index(std::size_t body, int row) { return static_cast<Eigen::Inde
 bool joint_affine_correction(const Model& model, std::span<const BodySolve> solves, const VertexContacts& contacts,
                              std::span<Vec3> x, JointAffineScratch& scratch) {
   const std::size_t count = model.bodies.size();
-  if (count > kMostJointBodies || contacts.contacts() == 0) return false;
+  if (count > kMostJointBodies) return false;
   const auto unknowns = static_cast<Eigen::Index>(12 * count);
   scratch.bodies.resize(count);
   scratch.systems.resize(count);

@@ -19,7 +19,8 @@ namespace sim {
 // out) on the block diagonal, and each contact's K coupling the bodies of its vertices. A contact moves r by
 // Σ_b (A_b u_b + s_b t_b), u_b = Σ_{j ∈ b} c_j (x_j − c_b), s_b = Σ_{j ∈ b} c_j (c_j as in vertex_contacts.hpp; for a
 // self-contact s_b = 0), so it adds P_aᵀ K P_b to block (a, b) and P_bᵀ ∇_r E_c to body b's gradient, P_b q = A_b u_b
-// + s_b t_b. A line search on E's change over all the bodies keeps the step a descent.
+// + s_b t_b. A line search on E's change over all the bodies keeps the step a descent. It takes the place of the
+// bodies' own affine corrections (measured on two stacked balls: the same stack at about half the cost of both).
 inline constexpr std::size_t kMostJointBodies = 16;  // the dense system has 12 unknowns per body
 
 struct JointAffineScratch {
@@ -31,7 +32,8 @@ struct JointAffineScratch {
 };
 
 // One joint step on the positions x (every vertex of the model); `solves`: per body, its BodySolve without contacts.
-// Returns whether it moved (never where it would raise E). Does nothing for more than kMostJointBodies bodies.
+// Returns whether it moved (never where it would raise E). Does nothing for more than kMostJointBodies bodies (then the
+// bodies take their own affine corrections).
 bool joint_affine_correction(const Model& model, std::span<const BodySolve> solves, const VertexContacts& contacts,
                              std::span<Vec3> x, JointAffineScratch& scratch);
 

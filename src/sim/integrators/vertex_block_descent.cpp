@@ -127,7 +127,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   if (contacts_.active()) s.contacts = &contacts_;
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = first_sweep; sweep < first_sweep + count; ++sweep) {
-    if (coarse_) affine_correction(body, s, x, coarse_scratch_);
+    if (coarse_ && !joint_affine_) affine_correction(body, s, x, coarse_scratch_);
     if (aggregates_ > 0) {  // the matrix assembled at the step's first sweep, or where the scratch holds another body's
       coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0 || coarse_level_body_ != b, coarse_level_scratch_);
       coarse_level_body_ = b;
@@ -138,13 +138,14 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
 }
 
 void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x) {
+  joint_affine_ = coarse_ && model.bodies.size() > 1 && model.bodies.size() <= kMostJointBodies;
   for (int sweep = 0; sweep < sweeps_; ++sweep) {
     if (sweep == 0) {
       contacts_.lag(model, x, base_, h_hat, start_x_);
     } else if (kLagEverySweep) {
       contacts_.lag(model, x, base_, h_hat);
     }
-    if (coarse_ && model.bodies.size() > 1) {
+    if (joint_affine_) {
       joint_solves_.clear();
       for (std::size_t b = 0; b < model.bodies.size(); ++b) joint_solves_.push_back(body_solve(model, b, h_hat));
       joint_affine_correction(model, joint_solves_, contacts_, x, joint_scratch_);

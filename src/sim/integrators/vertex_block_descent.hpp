@@ -44,10 +44,10 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E as
 // newton's terms do (sim/contact/floor_potential.hpp, smooth_collider.hpp, vertex_contacts.hpp); with the smooth body
 // contact the bodies' sweeps interleave (one sweep of each body in turn), the contacts are lagged before each, and a
-// joint affine correction of the bodies coupled by their contacts comes first (joint_affine_correction.hpp). The
-// paper's and the friction floor and the impulse contact between bodies stay projections after the step (sim::step).
-// What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
-// of the State is a checkpoint. No allocation per step once sizes settle.
+// joint affine correction of the bodies coupled by their contacts replaces each body's own
+// (joint_affine_correction.hpp). The paper's and the friction floor and the impulse contact between bodies stay
+// projections after the step (sim::step). What is carried from step to step is State::carry's BDF2 history (x_{n−1},
+// v_{n−1} and that step's h), so a copy of the State is a checkpoint. No allocation per step once sizes settle.
 class VertexBlockDescent final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
@@ -109,8 +109,9 @@ class VertexBlockDescent final : public Integrator {
   VertexContacts contacts_;                       // the smooth contact between bodies
   std::vector<BodySolve> joint_solves_;           // per body, for the joint affine correction
   JointAffineScratch joint_scratch_;
-  std::vector<Vec3> target_;             // y per vertex [m]
-  std::vector<Vec3> base_;               // x̃ per vertex [m]
+  bool joint_affine_ = false;  // this step's sweeps take the joint affine correction instead of each body's own
+  std::vector<Vec3> target_;   // y per vertex [m]
+  std::vector<Vec3> base_;     // x̃ per vertex [m]
   std::vector<Vec3> start_x_, start_v_;  // x_n, v_n (then the next step's history)
   ConstraintLags lags_;                  // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
