@@ -16,6 +16,7 @@
 #include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/step/diagnostics.hpp"
+#include "sim/step/step_plan.hpp"
 #include "support.hpp"
 
 namespace {
@@ -313,6 +314,20 @@ TEST(VbdContact, TwoBallsStackAtOneSixtiethOfASecondWithoutSinkingIn) {
   EXPECT_EQ(run.samples_inside, 0);
   EXPECT_LT(run.deepest_m, 1.1 * converged.deepest_m);
   EXPECT_NEAR(run.mean_top_centre_m, converged.mean_top_centre_m, 0.02);
+}
+
+// A scene with vbd and the smooth contact between bodies (or smooth self-contact) is planned like any other: the
+// program once refused it.
+TEST(VbdContact, ScenesWithTheSmoothBodyContactAreAccepted) {
+  sim::Solver solver;
+  solver.integrator = sim::IntegratorKind::Vbd;
+  solver.substeps = 2;
+  for (const std::string& scene : {std::string(kTwoBalls), std::string(R"({ "collisions": { "contact": "smooth" },
+          "bodies": [ { "mesh": "tube:12,10", "scale": 0.08, "self_collision": true } ] })")}) {
+    sim::World world = integrator_tests::make_world(scene, solver);
+    const sim::StepPlan plan = sim::resolve_step(world.model, world.state, 1.0 / 30, "scene.json");
+    EXPECT_DOUBLE_EQ(plan.dt_s, 1.0 / 60);
+  }
 }
 
 }  // namespace
