@@ -150,6 +150,8 @@ void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std:
       for (std::size_t b = 0; b < model.bodies.size(); ++b) joint_solves_.push_back(body_solve(model, b, h_hat));
       joint_affine_correction(model, joint_solves_, contacts_, x, joint_scratch_);
     }
+    // The sweeps visit the vertices one by one: the colouring does not separate the vertices of a contact, so a loop
+    // that moves a colour's vertices at once must take those in contacts one by one (vertex_contacts.hpp).
     for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, x, sweep, 1);
   }
 }
