@@ -102,7 +102,9 @@ bool joint_affine_correction(const Model& model, std::span<const BodySolve> solv
     }
   }
   Eigen::VectorXd& step = scratch.step;
-  step = K.ldlt().solve(-G);
+  scratch.factor.compute(K);
+  scratch.rhs = -G;
+  step = scratch.factor.solve(scratch.rhs);
   const double slope = G.dot(step);
   if (!(slope < 0.0)) return false;
   // The motion of every vertex, and each body's lags for the search.

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "sim/integrators/affine_correction.hpp"
@@ -27,7 +28,8 @@ struct JointAffineScratch {
   std::vector<AffineScratch> bodies;  // per body: its system's buffers and its motion's line search
   std::vector<AffineSystem> systems;  // per body
   Eigen::MatrixXd matrix;
-  Eigen::VectorXd gradient, step;
+  Eigen::LDLT<Eigen::MatrixXd> factor;  // of the matrix (its storage kept between calls)
+  Eigen::VectorXd gradient, rhs, step;
   std::vector<Vec3> motion;  // every vertex of the model [m]
 };
 
