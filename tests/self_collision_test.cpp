@@ -21,12 +21,14 @@ using softbody::Vec3;
 
 // The fold: a tube 0.88 m long and 8 cm thick (tube:12,10 at scale 0.08, 518 vertices) thrown down across a bar 3 cm
 // thick, soft and barely inflated so that it bends around the bar and its halves swing into each other.
-// `substeps`: a substepped integrator's steps per frame ("auto" unless given).
+// `substeps`: the steps per frame of an integrator that takes them (0: "auto"); `sweeps`: vbd's (0: its default).
 std::string fold_scene(const std::string& integrator, const std::string& contact, bool self_collision,
-                       double duration_s, const std::string& substeps = R"("auto")") {
+                       double duration_s, int substeps = 0, int sweeps = 0) {
   const bool substepped = sim::integrator_named(integrator).has_value() &&
                           sim::integrator_info(*sim::integrator_named(integrator)).frame_substeps;
-  const std::string step = substepped ? R"("substeps": )" + substeps : R"("dt": "auto")";
+  const std::string frame_steps = substeps > 0 ? std::to_string(substeps) : R"("auto")";
+  const std::string step = (substepped ? R"("substeps": )" + frame_steps : R"("dt": "auto")") +
+                           (sweeps > 0 ? R"(, "iterations": )" + std::to_string(sweeps) : "");
   return R"({ "duration": )" + std::to_string(duration_s) + R"(, "fps": 30,
       "solver": { "integrator": ")" +
          integrator + R"(", )" + step + R"( },
@@ -88,16 +90,16 @@ TEST(SelfCollision, ARestShapeHasNoSelfContact) {
   }
 }
 
-void expect_no_vertex_inside(const char* integrator, const char* contact) {
-  const Inside with = run_fold(fold_scene(integrator, contact, true, 0.4));
-  std::printf("%s, %s: with self-collision %d vertex-frames inside, winding %.3f..%.3f\n", integrator, contact,
-              with.vertices, with.lowest, with.highest);
+void expect_no_vertex_inside(const char* integrator, const char* contact, int substeps = 0, int sweeps = 0) {
+  const Inside with = run_fold(fold_scene(integrator, contact, true, 0.4, substeps, sweeps));
+  std::printf("%s, %s, %d substeps: with self-collision %d vertex-frames inside, winding %.3f..%.3f\n", integrator,
+              contact, substeps, with.vertices, with.lowest, with.highest);
   EXPECT_EQ(with.vertices, 0) << integrator << ", " << contact;
 }
 
-// Each contact model at each integrator's automatic step (vbd below). The smooth model's skin
-// is 5 mm here: at the default 2 mm its spring, which ramps up over the skin and can push back at most m ω² δ per
-// vertex on a two-sided surface (past the triangle it pushes the other way), lets the halves meeting at about
+// Each contact model at each integrator's automatic step (vbd: the smooth model, at the steps below). The smooth
+// model's skin is 5 mm here: at the default 2 mm its spring, which ramps up over the skin and can push back at most m
+// ω² δ per vertex on a two-sided surface (past the triangle it pushes the other way), lets the halves meeting at about
 // 3 m/s through (466 vertex-frames inside under symplectic Euler over 0.5 s).
 TEST(SelfCollision, FoldedTubeNoVertexInsideSymplectic) {
   expect_no_vertex_inside("symplectic", "impulse");
@@ -105,20 +107,24 @@ TEST(SelfCollision, FoldedTubeNoVertexInsideSymplectic) {
 }
 TEST(SelfCollision, FoldedTubeNoVertexInsideNewtonImpulse) { expect_no_vertex_inside("newton", "impulse"); }
 TEST(SelfCollision, FoldedTubeNoVertexInsideNewtonSmooth) { expect_no_vertex_inside("newton", "smooth"); }
+// vbd with the smooth model (vertex_contacts.hpp) at 8 steps per 1/30 s frame and 16 sweeps (converged: at 4 sweeps
+// 10 vertex-frames end barely inside, winding up to 1.04; at 1 step per frame 2 with 4 sweeps and 26 with 16, as a
+// vertex that crosses more than the contact's search within a step is past the other wall before its contact is found).
+TEST(SelfCollision, FoldedTubeNoVertexInsideVbdSmooth) { expect_no_vertex_inside("vbd", "smooth", 8, 16); }
 TEST(SelfCollision, FoldedTubeNoVertexInsideXpbd) {
   expect_no_vertex_inside("xpbd", "impulse");
   expect_no_vertex_inside("xpbd", "smooth");
 }
 
-// vbd (impulse only: it has no smooth body contact) at the step the contact travel limit gives newton and xpbd here, a
-// tenth of the shortest edge per step: 220 steps per frame. At its automatic step it takes one step per frame in this
-// scene (its automatic step obeys that limit only for a paper or friction floor and a keyframed collider, and there
-// are none), in which the halves travel 10 cm, more than the tube's thickness: the impulse pass, which keeps the side
-// a vertex was on at the step's start, then finds them already through, and vertices end deep inside with and without
-// self-collision (winding numbers up to 6; docs/notes/2026-12-05-colliders-loose-ends.md).
+// vbd with the impulse model at the step the contact travel limit gives newton and xpbd here, a tenth of the shortest
+// edge per step: 220 steps per frame. At its automatic step it takes one step per frame in this scene (its automatic
+// step obeys that limit only for a paper or friction floor and a keyframed collider, and there are none), in which the
+// halves travel 10 cm, more than the tube's thickness: the impulse pass, which keeps the side a vertex was on at the
+// step's start, then finds them already through, and vertices end deep inside with and without self-collision
+// (winding numbers up to 6; docs/notes/2026-12-05-colliders-loose-ends.md).
 TEST(SelfCollision, FoldedTubeNoVertexInsideVbdAtTheTravelLimitsStep) {
-  const Inside with = run_fold(fold_scene("vbd", "impulse", true, 0.4, "220"));
-  const Inside without = run_fold(fold_scene("vbd", "impulse", false, 0.4, "220"));
+  const Inside with = run_fold(fold_scene("vbd", "impulse", true, 0.4, 220));
+  const Inside without = run_fold(fold_scene("vbd", "impulse", false, 0.4, 220));
   std::printf(
       "vbd, 220 steps per frame: with self-collision %d vertex-frames inside (winding %.3f..%.3f), without %d\n",
       with.vertices, with.lowest, with.highest, without.vertices);

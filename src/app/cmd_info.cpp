@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/prepared_run.hpp"
 #include "scene/scene_json.hpp"
+#include "sim/contact/body_collision.hpp"
 #include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
@@ -100,9 +101,12 @@ void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate,
 // docs/notes/2026-12-05-vbd-loop.md).
 constexpr double kVbdSweepNsPerVertex = 220.0;
 
-// The ω [1/s] of the stiffest smooth contact (floor or collider) of `model`; 0 for none.
+// The ω [1/s] of the stiffest smooth contact (floor, collider or between bodies) of `model`; 0 for none.
 double stiffest_smooth_contact(const sim::Model& model) {
   double omega2 = 0.0;
+  if (model.body_contact.contact == sim::BodyContactModel::Smooth && sim::searches_body_contact(model.bodies)) {
+    omega2 = sim::resolve_smooth_response(model.body_contact.smooth, model.body_contact.material).omega2;
+  }
   if (model.floor && model.floor->contact == sim::FloorContact::Smooth) {
     omega2 = sim::resolve_smooth_floor(*model.floor).omega2;
   }

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
 namespace {
@@ -95,7 +96,8 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 }  // namespace
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble) {
+AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
+                           bool assemble) {
   const std::size_t n = x.size();
   Vec3 centre = Vec3::Zero();
   double mass = 0.0;
@@ -107,7 +109,7 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   Matrix12 K = Matrix12::Zero();
   Vector12 G = Vector12::Zero();
   CoarseMoments moments;
-  // Vertices: inertia, floor and colliders.
+  // Vertices: inertia, floor, colliders and contacts with bodies.
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
@@ -121,6 +123,11 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     for (const SmoothCollider& collider : s.colliders) {
       Block3 hessian;
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      if (assemble) add_block(hessian, r, K);
+    }
+    if (s.contacts) {  // each vertex's own block c_j² K (a self-contact's cross terms left out: still a descent)
+      Block3 hessian;
+      s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, hessian);
       if (assemble) add_block(hessian, r, K);
     }
     add_gradient(gradient, r, G);
@@ -172,16 +179,24 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
     }
   }
   search.volume_after = volume;
-  if (assemble) scratch.factor.compute(K);
-  const Vector12 q = scratch.factor.solve(-G);
-  const double slope = G.dot(q);
-  if (!(slope < 0.0)) return false;
-  std::vector<Vec3>& motion = search.motion;
-  motion.resize(n);
-  for (std::size_t i = 0; i < n; ++i) motion[i] = affine_motion(q, x[i] - centre);
-  search.linear_part = (Eigen::Matrix3d() << q(0), q(1), q(2), q(3), q(4), q(5), q(6), q(7), q(8)).finished();
   search.edges_lagged = true;
-  return search_along_motion(body, s, x, volume, slope, search);
+  return AffineSystem{K, G, centre, volume};
+}
+
+void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centre, MotionScratch& search) {
+  search.motion.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) search.motion[i] = affine_motion(q, x[i] - centre);
+  search.linear_part = (Eigen::Matrix3d() << q(0), q(1), q(2), q(3), q(4), q(5), q(6), q(7), q(8)).finished();
+}
+
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble) {
+  const AffineSystem system = affine_system(body, s, x, scratch, assemble);
+  if (assemble) scratch.factor.compute(system.matrix);
+  const Vector12 q = scratch.factor.solve(-system.gradient);
+  const double slope = system.gradient.dot(q);
+  if (!(slope < 0.0)) return false;
+  affine_motion(q, x, system.centre, scratch.search);
+  return search_along_motion(body, s, x, system.volume, slope, scratch.search);
 }
 
 }  // namespace sim

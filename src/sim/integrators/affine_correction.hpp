@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "sim/integrators/motion_search.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/model/body.hpp"
@@ -30,5 +32,21 @@ struct AffineScratch {
 // search still takes only a move that lowers E).
 bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch,
                        bool assemble = true);
+
+// The coarse system of that step at x: Bᵀ H B and Bᵀ ∇E over the 12 unknowns (A row-major, then t), about the centre
+// of mass c, and V(x) (0 without gas).
+struct AffineSystem {
+  Eigen::Matrix<double, 12, 12> matrix;
+  Eigen::Matrix<double, 12, 1> gradient;
+  Vec3 centre = Vec3::Zero();
+  double volume = 0.0;
+};
+// With `assemble` false the matrix is left zero (the gradient only). Either way the constraints' lags for the line
+// search are left in scratch.search (edges_lagged).
+AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
+                           bool assemble = true);
+// B q: the motion A (x_i − c) + t of every vertex into search.motion, and A into search.linear_part.
+void affine_motion(const Eigen::Matrix<double, 12, 1>& q, std::span<const Vec3> x, const Vec3& centre,
+                   MotionScratch& search);
 
 }  // namespace sim

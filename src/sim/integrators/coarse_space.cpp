@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
 namespace {
@@ -153,8 +154,8 @@ void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, C
   }
 }
 
-// ∇E per vertex at x into scratch.gradient (inertia, floor, colliders, springs and dampers, gas); with `matrix`, also
-// Pᵀ H P's lower triangle into scratch.matrix. Returns V(x) (0 without gas).
+// ∇E per vertex at x into scratch.gradient (inertia, floor, colliders, contacts, springs and dampers, gas); with
+// `matrix`, also Pᵀ H P's lower triangle into scratch.matrix. Returns V(x) (0 without gas).
 double gradient_and_matrix(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
                            bool matrix, CoarseScratch& scratch) {
   const std::size_t n = x.size();
@@ -163,7 +164,7 @@ double gradient_and_matrix(const Body& body, const BodySolve& s, const CoarseSpa
   if (matrix) K.setZero(unknowns, unknowns);
   std::vector<Vec3>& gradient = scratch.gradient;
   gradient.resize(n);
-  // Vertices: inertia, floor and colliders.
+  // Vertices: inertia, floor, colliders and contacts with bodies.
   for (std::size_t i = 0; i < n; ++i) {
     const double m = s.mass_kg[i];
     gradient[i] = (m * s.inverse_h2) * (x[i] - s.target[i]);
@@ -175,6 +176,7 @@ double gradient_and_matrix(const Body& body, const BodySolve& s, const CoarseSpa
     for (const SmoothCollider& collider : s.colliders) {
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient[i], hessian);
     }
+    if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient[i], hessian);
     if (matrix) {
       const auto [aggregates, weights] = weights_of(space, i);
       add_outer_blocks(K, aggregates, weights, hessian);

@@ -2,6 +2,7 @@
 #include "sim/integrators/motion_search.hpp"
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 
 namespace sim {
 namespace {
@@ -93,15 +94,26 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
     change += half_over_h * constraints.damping_N_s_per_m[e] * along * (2.0 * rate + along);
   }
   if (s.gas) change += s.gas->energy_change(volume, volume_step);
+  if (s.contacts) change += s.contacts->motion_energy_change(s.first_vertex, motion, alpha);
   return change;
 }
 
 }  // namespace
 
+void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
+  take_contact_lags(s, x, scratch);
+  if (!scratch.edges_lagged) take_edge_lags(body, s, x, scratch);
+}
+
+double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
+                            MotionScratch& scratch) {
+  const double volume_step = s.gas ? volume_change(body, x, volume, alpha, scratch) : 0.0;
+  return energy_change(body, s, x, volume, alpha, volume_step, scratch);
+}
+
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch) {
-  take_contact_lags(s, x, scratch);  // once: they do not depend on α
-  if (!scratch.edges_lagged) take_edge_lags(body, s, x, scratch);
+  take_motion_lags(body, s, x, scratch);  // once: they do not depend on α
   scratch.volume_after = volume;
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
     const double volume_step = s.gas ? volume_change(body, x, volume, alpha, scratch) : 0.0;

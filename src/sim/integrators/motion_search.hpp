@@ -36,4 +36,11 @@ struct MotionScratch {
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch);
 
+// The search's parts, for a search over several bodies at once (joint_affine_correction.hpp): the floor's and the
+// colliders' lags of every vertex at x (and the constraints' unless edges_lagged), and E's change along
+// α scratch.motion with them.
+void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch);
+double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
+                            MotionScratch& scratch);
+
 }  // namespace sim

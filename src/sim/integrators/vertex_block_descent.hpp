@@ -9,7 +9,9 @@
 #include "sim/integrators/affine_correction.hpp"
 #include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/integrators.hpp"
+#include "sim/integrators/joint_affine_correction.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
+#include "sim/integrators/vertex_contacts.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 
 namespace sim {
@@ -39,11 +41,13 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
 // is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
 // and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
-// The smooth floor and the smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
-// smooth_collider.hpp); the paper's and the
-// friction floor and the impulse contact between bodies stay projections after the step (sim::step).
-// What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
-// of the State is a checkpoint. No allocation per step once sizes settle.
+// The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E as
+// newton's terms do (sim/contact/floor_potential.hpp, smooth_collider.hpp, vertex_contacts.hpp); with the smooth body
+// contact the bodies' sweeps interleave (one sweep of each body in turn), the contacts are lagged before each, and a
+// joint affine correction of the bodies coupled by their contacts replaces each body's own
+// (joint_affine_correction.hpp). The paper's and the friction floor and the impulse contact between bodies stay
+// projections after the step (sim::step). What is carried from step to step is State::carry's BDF2 history (x_{n−1},
+// v_{n−1} and that step's h), so a copy of the State is a checkpoint. No allocation per step once sizes settle.
 class VertexBlockDescent final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
@@ -74,7 +78,7 @@ class VertexBlockDescent final : public Integrator {
   int next_level(const Model& model, const State& state, double dt, int level, long long done) const;
   // Whether the last three states (steps of h) are smooth enough for a step of 2h (see kGrowthTolerance).
   bool smooth_enough_to_double(const Model& model, const State& state, double h) const;
-  // The ω [1/s] of the stiffest smooth contact (floor or collider) that a step of h from state meets as an impact
+  // The ω [1/s] of the stiffest smooth contact (floor, collider or body) that a step of h from state meets as an impact
   // (see kImpactSpeed); 0 for none.
   double impact_omega(const Model& model, const State& state, double h) const;
   // One implicit step of h.
@@ -83,8 +87,13 @@ class VertexBlockDescent final : public Integrator {
   // x_previous, v_previous; backward Euler where ratio is 0); returns ĥ [s].
   double set_targets(const Model& model, const State& state, double h, double ratio,
                      const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous);
-  // solver.iterations sweeps over body b's vertices, from x = y.
-  void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
+  // What body b's local solves read (without the contacts between bodies).
+  BodySolve body_solve(const Model& model, std::size_t b, double h_hat) const;
+  // Sweeps first_sweep .. first_sweep + count − 1 of a step over body b's vertices (all solver.iterations of them,
+  // from x = y, without contacts between bodies).
+  void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count);
+  // solver.iterations sweeps over every body in turn, the smooth body contacts lagged before each.
+  void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
   // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
   void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
@@ -94,13 +103,19 @@ class VertexBlockDescent final : public Integrator {
   int aggregates_ = 0;                      // the coarse level's cells per body (0: no coarse level)
   std::vector<CoarseSpace> coarse_spaces_;  // per body, where aggregates_ > 0
   CoarseScratch coarse_level_scratch_;
+  std::size_t coarse_level_body_ = 0;             // the body whose matrix coarse_level_scratch_ holds
+  std::size_t affine_body_ = 0;                   // the body whose affine matrix coarse_scratch_ holds
   std::vector<VertexBlocks> blocks_;              // per body
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
-  std::vector<Vec3> target_;                      // y per vertex [m]
-  std::vector<Vec3> base_;                        // x̃ per vertex [m]
-  std::vector<Vec3> start_x_, start_v_;           // x_n, v_n (then the next step's history)
-  ConstraintLags lags_;                           // scratch: one vertex's constraints as its visit found them
+  VertexContacts contacts_;                       // the smooth contact between bodies
+  std::vector<BodySolve> joint_solves_;           // per body, for the joint affine correction
+  JointAffineScratch joint_scratch_;
+  bool joint_affine_ = false;  // this step's sweeps take the joint affine correction instead of each body's own
+  std::vector<Vec3> target_;   // y per vertex [m]
+  std::vector<Vec3> base_;     // x̃ per vertex [m]
+  std::vector<Vec3> start_x_, start_v_;  // x_n, v_n (then the next step's history)
+  ConstraintLags lags_;                  // scratch: one vertex's constraints as its visit found them
   Statistics statistics_;
 };
 

@@ -3,6 +3,8 @@
 
 #include <limits>
 
+#include "sim/integrators/vertex_contacts.hpp"
+
 namespace sim {
 namespace {
 
@@ -138,6 +140,7 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   for (std::size_t c = 0; c < s.colliders.size(); ++c) {
     lags.colliders[c] = add_collider_terms(s.colliders[c], m, xi, base_i, s.h_hat, terms.gradient, terms.hessian);
   }
+  if (s.contacts) s.contacts->add_terms(s.first_vertex + i, terms.gradient, terms.hessian);
   return terms;
 }
 
@@ -147,7 +150,7 @@ constexpr double kSpringHessianVariation = 1.1547006;
 
 bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
                   double slope) {
-  if (!s.colliders.empty()) return false;
+  if (!s.colliders.empty() || s.contacts != nullptr) return false;  // their terms are not in the bound
   if (s.floor && (terms.floor.depth_m > 0.0 || s.floor->height_m - (x.y() + step.y()) > 0.0)) return false;
   const double length = step.norm();
   if (!(length < 0.5 * terms.shortest_m)) return false;
@@ -195,6 +198,7 @@ double vertex_energy_change(const BodySolve& s, int i, std::span<const Vec3> x, 
   for (std::size_t c = 0; c < s.colliders.size(); ++c) {
     change += collider_energy_change(s.colliders[c], lags.colliders[c], m, xi, step, s.base[vi], s.h_hat);
   }
+  if (s.contacts) change += s.contacts->energy_change(s.first_vertex + i, step);
   return change;
 }
 

@@ -18,6 +18,8 @@ namespace sim {
 
 using softbody::Vec3;
 
+class VertexContacts;
+
 // A line search accepts a move with sufficient decrease ΔE ≤ kArmijo α ∇E·Δ (Nocedal & Wright, Sect. 3.1).
 inline constexpr double kArmijo = 1e-4;
 
@@ -78,6 +80,9 @@ struct BodySolve {
   std::optional<GasLaw> gas;
   const SmoothFloor* floor = nullptr;
   std::span<const SmoothCollider> colliders;  // the colliders whose contact is smooth
+  // The smooth contact between bodies (sim/integrators/vertex_contacts.hpp), lagged for this sweep; none without.
+  const VertexContacts* contacts = nullptr;
+  int first_vertex = 0;  // the body's first vertex in the model (the contacts' vertices are the model's)
 };
 
 // The smooth floor's terms of one vertex, with the dashpot's weight w and friction's normal force N lagged at the
@@ -132,7 +137,8 @@ struct VertexTerms {
 };
 
 // The terms of vertex i at x: inertia, its constraints (lagging each direction and approach into `lags`), the gas at
-// volume V (V of x), the smooth floor and the smooth colliders (their lags into lags.colliders). A compressed spring's
+// volume V (V of x), the smooth floor, the smooth colliders (their lags into lags.colliders) and the smooth contacts
+// with bodies. A compressed spring's
 // transverse curvature is clamped at zero.
 VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags);
 

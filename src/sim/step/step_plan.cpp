@@ -1,9 +1,6 @@
 // Resolving the step from the model: xpbd's substeps and "dt": "auto".
 #include "sim/step/step_plan.hpp"
 
-#include "core/errors.hpp"
-
-#include "sim/contact/body_collision.hpp"
 #include "sim/step/stability.hpp"
 
 namespace sim {
@@ -11,12 +8,6 @@ namespace sim {
 StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const std::string& context,
                       const softbody::AfterPhase& after_phase) {
   Solver& solver = model.solver;
-  if (solver.integrator == IntegratorKind::Vbd && searches_body_contact(model.bodies) &&
-      model.body_contact.contact == BodyContactModel::Smooth) {  // not yet a term of vbd's energy
-    throw softbody::InputError(context +
-                               ": collisions.contact \"smooth\" does not work with solver.integrator vbd yet; "
-                               "use collisions.contact \"impulse\", or another integrator");
-  }
   StepPlan plan;
   plan.dt_s = solver.dt_s;
   const bool substepped = integrator_info(solver.integrator).frame_substeps;
