@@ -102,8 +102,6 @@ TEST(SelfCollision, FoldedTubeNoVertexInsideSymplectic) {
   expect_no_vertex_inside("symplectic", "impulse");
   expect_no_vertex_inside("symplectic", "smooth");
 }
-TEST(SelfCollision, FoldedTubeNoVertexInsideNewtonImpulse) { expect_no_vertex_inside("newton", "impulse"); }
-TEST(SelfCollision, FoldedTubeNoVertexInsideNewtonSmooth) { expect_no_vertex_inside("newton", "smooth"); }
 TEST(SelfCollision, FoldedTubeNoVertexInsideXpbd) {
   expect_no_vertex_inside("xpbd", "impulse");
   expect_no_vertex_inside("xpbd", "smooth");

@@ -39,8 +39,8 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
 // is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
 // and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
-// The smooth floor and the smooth colliders enter E as newton's terms do (sim/contact/floor_potential.hpp,
-// smooth_collider.hpp); the paper's and the
+// The smooth floor and the smooth colliders enter E with their dashpot weights and friction normal forces lagged
+// (vertex_energy.hpp, sim/contact/smooth_collider.hpp); the paper's and the
 // friction floor and the impulse contact between bodies stay projections after the step (sim::step).
 // What is carried from step to step is State::carry's BDF2 history (x_{n−1}, v_{n−1} and that step's h), so a copy
 // of the State is a checkpoint. No allocation per step once sizes settle.
