@@ -12,7 +12,6 @@
 #include "setup/build_world.hpp"
 #include "sim/forces/energy.hpp"
 #include "sim/forces/forces.hpp"
-#include "sim/integrators/newton_euler.hpp"
 #include "sim/step/step_plan.hpp"
 
 namespace bench {
@@ -111,12 +110,6 @@ BounceRecord record_bounce(const BounceSetup& setup, double duration_s) {
   }
   r.steps = world.state.steps;
   if (adaptive && r.steps > 0) r.dt_s = world.state.time_s / static_cast<double>(r.steps);
-  if (setup.integrator == sim::IntegratorKind::Newton) {
-    const auto& statistics = dynamic_cast<const sim::NewtonEuler&>(*world.workspace.integrator).statistics();
-    if (statistics.steps > 0) {
-      r.newton_iterations_per_step = static_cast<double>(statistics.iterations) / static_cast<double>(statistics.steps);
-    }
-  }
   return r;
 }
 

@@ -32,9 +32,8 @@ struct BounceRecord {
   double dt_s = 0.0;                             // the step taken (rk45: the mean accepted step over the run)
   long long steps = 0;                           // accepted steps
   double wall_s = 0.0;                           // stepping only, wall clock
-  double cpu_s = 0.0;  // stepping only, this thread's CPU time (what an idle core would take: the machine is shared)
-  double newton_iterations_per_step = 0.0;  // newton only
-  std::string failure;                      // empty, or the guard's (or Bullet's non-finite state's) message
+  double cpu_s = 0.0;   // stepping only, this thread's CPU time (what an idle core would take: the machine is shared)
+  std::string failure;  // empty, or the guard's (or Bullet's non-finite state's) message
 };
 
 // The world of `setup`, with `dt: "auto"` and xpbd's `substeps: "auto"` resolved as `softbody simulate` does

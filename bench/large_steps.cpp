@@ -1,5 +1,5 @@
 // build/bench_large_steps: issue 13's "what the user waits for": the bounce at icosphere levels, every
-// integrator at its automatic step (newton and implicit at the frame step and smaller ones) and Bullet's
+// integrator at its automatic step (implicit at the frame step and smaller ones) and Bullet's
 // btSoftBody, each run's wall time per simulated second and its error against a converged run of our model.
 #include <CLI/CLI.hpp>
 
@@ -24,10 +24,8 @@ using bench::BounceSetup;
 
 struct Options {
   std::vector<int> levels{3};
-  std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "newton", "xpbd"};
-  std::vector<int> rates{60, 240};                                 // implicit: dt = 1/rate
-  std::vector<int> newton_rates{60, 240};                          // newton: dt = 1/rate
-  std::vector<std::string> newton_contacts{"smooth", "friction"};  // newton: floor contacts (both in one run)
+  std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "xpbd", "vbd"};
+  std::vector<int> rates{60, 240};                       // implicit: dt = 1/rate
   std::vector<std::string> friction_too{"symplectic"};   // also run at their automatic step on the friction floor
   std::vector<int> bullet_rates{60, 240};                // Bullet: dt = 1/rate
   std::vector<double> reference_tolerances{1e-8, 1e-7};  // rk45: the first is the reference
@@ -87,7 +85,7 @@ void print_row(int level, const Options& o, const RowLabel& label, const BounceR
   } else {
     std::printf(",,,,");
   }
-  std::printf("%.3g,%s\n", r.newton_iterations_per_step, csv_safe(r.failure).c_str());
+  std::printf(",%s\n", csv_safe(r.failure).c_str());  // newton_iterations_per_step: empty (newton was removed)
   std::fflush(stdout);
   std::fprintf(stderr, "level %d %s %s %s: %.4g CPU s, %.4g wall s per simulated s\n", level, label.program.c_str(),
                label.contact.c_str(), label.step.c_str(), r.cpu_s / simulated, r.wall_s / simulated);
@@ -100,7 +98,7 @@ std::string tolerance_label(double tolerance) {
 }
 
 // The floor contact an integrator runs at step dt_s: smooth where the integrator is stable with it (implicit
-// takes the contact explicitly: h < 2/ω_contact; newton's contacts are chosen by --newton-contacts).
+// takes the contact explicitly: h < 2/ω_contact).
 sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double dt_s) {
   if (integrator != sim::IntegratorKind::Implicit) return sim::FloorContact::Smooth;
   BounceSetup probe;
@@ -145,17 +143,9 @@ void run_level(int level, const Options& o) {
     if (std::find(o.friction_too.begin(), o.friction_too.end(), name) != o.friction_too.end()) {
       steps.emplace_back(0.0, sim::FloorContact::Friction);
     }
-    if (integrator == sim::IntegratorKind::Implicit || integrator == sim::IntegratorKind::Newton) {
+    if (integrator == sim::IntegratorKind::Implicit) {
       steps.clear();
-      for (const int rate : integrator == sim::IntegratorKind::Newton ? o.newton_rates : o.rates) {
-        if (integrator == sim::IntegratorKind::Implicit) {
-          steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
-          continue;
-        }
-        for (const std::string& contact : o.newton_contacts) {
-          steps.emplace_back(1.0 / rate, contact == "smooth" ? sim::FloorContact::Smooth : sim::FloorContact::Friction);
-        }
-      }
+      for (const int rate : o.rates) steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
     }
     for (const auto& [dt, contact] : steps) {
       BounceSetup setup;
@@ -192,14 +182,9 @@ int main(int argc, char** argv) {
       "second against the error from a converged rk45 run (smooth floor); CSV on stdout");
   Options o;
   cli.add_option("--levels", o.levels, "icosphere levels")->delimiter(',');
-  cli.add_option("--integrators", o.integrators, "integrators (newton and implicit run at each of --rates)")
+  cli.add_option("--integrators", o.integrators, "integrators (implicit runs at each of --rates)")->delimiter(',');
+  cli.add_option("--rates", o.rates, "implicit: steps per second (must divide 60 or be a multiple of it)")
       ->delimiter(',');
-  cli.add_option("--rates", o.rates, "newton and implicit: steps per second (must divide 60 or be a multiple of it)")
-      ->delimiter(',');
-  cli.add_option("--newton-rates", o.newton_rates, "newton: steps per second")->delimiter(',');
-  cli.add_option("--newton-contacts", o.newton_contacts, "newton: floor contacts")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"smooth", "friction"}));
   cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
       ->delimiter(',');
   cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second (0: no Bullet run)")->delimiter(',');

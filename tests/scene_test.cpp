@@ -120,8 +120,7 @@ TEST(Scene, InvalidJsonNamesTheFile) {
 
 namespace {
 
-// The smooth contact's keys are read and checked; newton takes the smooth floor and the smooth body contact (both in
-// its potential).
+// The smooth contact's keys are read and checked.
 TEST(Scene, SmoothContactKeys) {
   const scene::Scene s = scene_from_text(R"({ "floor": { "contact": "smooth", "time_constant": 0.001, "slip_speed": 0.2,
       "smoothing": 0.003, "damping_ratio": 0.4 }, "collisions": { "contact": "smooth" },
@@ -136,14 +135,13 @@ TEST(Scene, SmoothContactKeys) {
       error_of(R"({ "floor": { "contact": "smooth", "time_constant": 0 }, "bodies": [ { "mesh": "icosphere:1" } ] })")
           .find("floor.time_constant: expected a finite number > 0"),
       std::string::npos);
-  EXPECT_EQ(scene_from_text(R"({ "solver": { "integrator": "newton" }, "floor": { "contact": "smooth" },
-      "bodies": [ { "mesh": "icosphere:1" } ] })")
-                .floor->contact,
-            sim::FloorContact::Smooth);
-  EXPECT_EQ(scene_from_text(R"({ "solver": { "integrator": "newton" }, "collisions": { "contact": "smooth" },
-      "bodies": [ { "mesh": "icosphere:1" }, { "mesh": "icosphere:1", "position": [3, 0, 0] } ] })")
-                .collisions.contact,
-            sim::BodyContactModel::Smooth);
+}
+
+// The removed newton integrator is refused with its replacement named.
+TEST(Scene, RemovedNewtonIntegratorNamesItsReplacement) {
+  const std::string error =
+      error_of(R"({ "solver": { "integrator": "newton" }, "bodies": [ { "mesh": "icosphere:1" } ] })");
+  EXPECT_NE(error.find("solver.integrator: \"newton\" was removed: use \"vbd\""), std::string::npos) << error;
 }
 
 }  // namespace

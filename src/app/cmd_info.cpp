@@ -39,7 +39,7 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
 
 // What one step costs per vertex, one thread, a body resting on the floor (docs/perf_step.csv, icosphere:3;
 // bench/run_performance.sh): the explicit methods' force evaluations per step set it. 0: not estimated
-// (implicit and newton: their solver's iterations grow with dt and the mesh: 474 ns at icosphere:3 and 750 at
+// (implicit: its solver's iterations grow with dt and the mesh: 474 ns at icosphere:3 and 750 at
 // :5 for implicit at its stable dt).
 double step_ns_per_vertex(sim::IntegratorKind integrator) {
   switch (integrator) {
@@ -67,8 +67,7 @@ void print_integrator(sim::IntegratorKind integrator, double dt, double frame_in
   if (dt == 0.0) {
     std::printf("  %-10s  unstable at every dt (forward Euler needs dampers)\n", name);
   } else if (dt == sim::StabilityEstimate::kUnlimited) {
-    const bool every_force_implicit =
-        integrator == sim::IntegratorKind::Newton || integrator == sim::IntegratorKind::Vbd;
+    const bool every_force_implicit = integrator == sim::IntegratorKind::Vbd;
     std::printf("  %-10s  no limit (%s)\n", name,
                 every_force_implicit ? "every force implicit" : "springs implicit, no gas term");
   } else {

@@ -224,6 +224,12 @@ sim::Solver read_solver(const ObjectReader& top) {
   for (const sim::IntegratorInfo& integrator : sim::kIntegrators) {
     integrators.emplace_back(integrator.name, integrator.kind);
   }
+  if (r.has("integrator") && r.at("integrator") == "newton") {
+    r.fail(r.child("integrator"),
+           "\"newton\" was removed: use \"vbd\", which takes every force implicitly as newton did, at second order, "
+           "and was cheaper and more accurate in every case measured (docs/physics/integrators.md)",
+           &r.at("integrator"));
+  }
   solver.integrator = r.choice<sim::IntegratorKind>("integrator", integrators);
   if (r.has("dt") && r.at("dt").is_string()) {
     if (r.at("dt").get<std::string>() != "auto")

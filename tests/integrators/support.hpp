@@ -9,7 +9,6 @@
 #include <Eigen/Core>
 
 #include "scene/scene.hpp"
-#include "sim/integrators/incremental_potential.hpp"
 #include "sim/solvers/block_system.hpp"
 #include "sim/step/world.hpp"
 
@@ -80,22 +79,6 @@ struct ToleranceSweep {
 };
 ToleranceSweep rk45_tolerance_sweep(const std::string& json_text, double span_s, const sim::State& reference,
                                     int loosest_exponent, int tightest_exponent);
-
-// Central differences of newton's energy E at `vertices` (each coordinate moved by ±`step` m, the lags held)
-// against `gradient`, the analytic ∇E at x: the largest |numeric − analytic| [N] and the largest |analytic| [N].
-struct GradientMismatch {
-  double worst_N = 0.0;
-  double scale_N = 0.0;
-};
-GradientMismatch gradient_mismatch(sim::IncrementalPotential& potential, const sim::Model& model,
-                                   const sim::BlockSystem& hessian, std::span<const softbody::Vec3> x,
-                                   const Eigen::VectorXd& gradient, std::span<const int> vertices, double step);
-
-// How far newton's Hessian, as `potential` last assembled it into `hessian` at x (the sparse part plus the rank-one
-// terms: the gas's and the body contacts'), is from the derivative of the gradient along r:
-// |(∇E(x + εr) − ∇E(x − εr)) / 2ε − H r| / |H r|, with E's lags held (ε = `step`, times r [m]). Assembles again.
-double hessian_mismatch(sim::IncrementalPotential& potential, const sim::Model& model, const sim::BlockSystem& hessian,
-                        std::span<const softbody::Vec3> x, const Eigen::VectorXd& r, double step);
 
 // Total energy of every body: kinetic + gravitational + spring + gas [J].
 double total_energy(const sim::World& world);

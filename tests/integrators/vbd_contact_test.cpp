@@ -32,7 +32,7 @@ sim::World vbd_world(const std::string& json_text, int sweeps) {
 }
 
 // Two unit spheres pressed 3 cm into each other, off-centre, and sliding past each other, with a 4 cm smoothing skin
-// (newton's test scene, tests/integrators/newton_contact_test.cpp): vertices outside the skin, inside the smoothing
+// (the scene of the removed newton integrator's test): vertices outside the skin, inside the smoothing
 // band and past it, so every contact term is non-zero.
 constexpr const char* kPressed = R"({ "gravity": [0, -9.81, 0],
     "collisions": { "contact": "smooth", "restitution": 0.3, "friction": 0.6, "smoothing": 0.04 },
@@ -230,7 +230,7 @@ TEST(VbdContact, ConvergedStepKeepsMomentum) {
 }
 
 // Two bounce balls (k 1000 N/m, c 5 N·s/m, nRT 200 J, 1 kg) stacked on the smooth floor, the top one dropped from
-// 10 cm above the bottom one (1.4 m/s at the touch): newton's scene (tests/integrators/newton_contact_test.cpp).
+// 10 cm above the bottom one (1.4 m/s at the touch): the scene of the removed newton integrator's test.
 constexpr const char* kTwoBalls = R"({ "gravity": [0, -9.81, 0],
     "floor": { "contact": "smooth", "restitution": 0.2, "friction": 0.8 },
     "collisions": { "contact": "smooth", "restitution": 0.2, "friction": 0.8 },
@@ -290,11 +290,11 @@ StackRun run_stack(const sim::Solver& solver, double dt, int samples) {
 }
 
 // vbd at 1/60 s frames (8 sweeps; its steps shrink around the impacts): the top ball lands on the bottom
-// one and stays on it without sinking in, by newton's criteria: no vertex inside the bottom ball at any sample, none
-// deeper in the contact skin than 1.1 × the converged motion's deepest (rk4 at 0.1 ms, the same samples), and the top
-// ball within 2 cm of where the converged one oscillates (BDF2 keeps rk4's ±7 cm bounce on the gas springs, which
-// backward Euler damps out, so the means over the last second are compared). Without the joint affine correction the
-// mean sat 9 cm low at 4 sweeps (the stack's weight crossed one body per sweep); with it, 4 sweeps go 1.10 mm deep
+// one and stays on it without sinking in, by the criteria newton's test had: no vertex inside the bottom ball at any
+// sample, none deeper in the contact skin than 1.1 × the converged motion's deepest (rk4 at 0.1 ms, the same samples),
+// and the top ball within 2 cm of where the converged one oscillates (BDF2 keeps rk4's ±7 cm bounce on the gas springs,
+// which backward Euler damps out, so the means over the last second are compared). Without the joint affine correction
+// the mean sat 9 cm low at 4 sweeps (the stack's weight crossed one body per sweep); with it, 4 sweeps go 1.10 mm deep
 // (1.14× rk4's 0.96 mm) with the mean 1.8 cm low, 8 sweeps 0.975 mm with the mean within 0.1 cm.
 TEST(VbdContact, TwoBallsStackAtOneSixtiethOfASecondWithoutSinkingIn) {
   constexpr int kStackSweeps = 8;

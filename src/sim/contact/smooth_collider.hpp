@@ -3,9 +3,9 @@
 // at the vertex (sim/contact/collider_shape.hpp) in place of the floor's floor − y and +y:
 //   f = [m ω² δ P(d/δ) − m 2ζω (v·n) s(d/δ)] n − μ m ω² δ P(d/δ) v_t / √(|v_t|² + ε²),   v_t = v − (v·n) n   [N]
 //   E = m ω² δ² R(d/δ)                                                                                   [J]
-// As a force inside a(x, v) it serves every explicit integrator and the linearised implicit one. For newton and vbd
-// the same terms are written as parts of the incremental potential, with the dashpot's weight, friction's normal
-// force and the normal n lagged (taken at an earlier iterate, as sim/contact/floor_potential.hpp lags w and N):
+// As a force inside a(x, v) it serves every explicit integrator and the linearised implicit one. For vbd the same
+// terms are written as parts of the step's energy, with the dashpot's weight, friction's normal force and the
+// normal n lagged (taken at an earlier iterate, as IPC lags its friction: Li et al. 2020, §5):
 //   spring    U = m ω² δ² R(d(x)/δ)                    ∇ = −m ω² δ P n(x)       ∇² ≈ m ω² s(d/δ) n nᵀ
 //   dashpot   D_n = m b w (Δx·n̄)² / (2h)               ∇ = m b w (Δx·n̄)/h n̄    ∇² = m b w/h n̄ n̄ᵀ
 //   friction  D_t = N h √(|v_t|² + ε²), v_t = P̄ Δx/h     ∇ = N v_t / r           ∇² = (N/(h r)) (P̄ − v_t v_tᵀ/r²)

@@ -24,7 +24,7 @@ namespace sim {
 // Definiteness: a compressed spring's geometric term k (1 − L0/|d|)(I − d̂d̂ᵀ) is negative, which can make
 // the matrix indefinite (Choi & Ko 2002). It is clamped at zero, so every spring block is positive
 // semi-definite, the system matrix is symmetric positive definite, and conjugate gradients apply: the
-// block-Jacobi one newton uses (sim/solvers/block_jacobi_cg.hpp), started from the last step's Δv.
+// block-Jacobi preconditioned ones (sim/solvers/block_jacobi_cg.hpp), started from the last step's Δv.
 // First order; its numerical damping removes energy at large h, so it is stable far beyond the explicit
 // methods' limit (tests/integrators/stability_test.cpp).
 //

@@ -41,8 +41,9 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
 // is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
 // and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
-// The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E as
-// newton's terms do (sim/contact/floor_potential.hpp, smooth_collider.hpp, vertex_contacts.hpp); with the smooth body
+// The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E with
+// their dashpot weights and friction normal forces lagged (vertex_energy.hpp, sim/contact/smooth_collider.hpp,
+// vertex_contacts.hpp); with the smooth body
 // contact the bodies' sweeps interleave (one sweep of each body in turn), the contacts are lagged before each, and a
 // joint affine correction of the bodies coupled by their contacts replaces each body's own
 // (joint_affine_correction.hpp). The paper's and the friction floor and the impulse contact between bodies stay

@@ -12,7 +12,8 @@
 
 namespace sim {
 
-// Design note. newton's terms (sim/contact/body_contact_potential.hpp), split per vertex. A contact is a vertex p near
+// Design note. The smooth body contact's force (sim/contact/body_collision.hpp) as energy terms, per vertex (as the
+// removed newton integrator took it, docs/notes/2026-12-01-newton.md). A contact is a vertex p near
 // the nearest triangle (corners k, closest point Σ w_k x_k) of another body, or of its own body outside p's rest
 // neighbourhood (self-collision); its relative position r = x_p − Σ w_k x_k. With its frame (triangle, w, unit
 // direction n) and its dashpot weight w_d and friction normal force N lagged, its energy is
@@ -24,7 +25,7 @@ namespace sim {
 //   ∇_j E_c = c_j ∇_r E_c,   H_j += c_j² K,   K = (m ω² s(d/δ) + m b w_d/ĥ) n nᵀ + friction's block    (PSD)
 // and its line search E_c(r + c_j Δ) − E_c(r). Σ_j of the forces −c_j ∇_r E_c is zero (Σ c_j = 0): momentum is kept.
 // The frames, w_d and N are lagged at the iterate once per sweep (lag()), so the sweeps' fixed point is BDF2 of the
-// smooth contact force exactly, as newton's lag per iterate makes its fixed point backward Euler's.
+// smooth contact force exactly (IPC lags its friction so: Li et al. 2020, §5).
 // The vertex colouring does not separate the vertices of a contact: the sweeps visit the vertices one after another
 // (Gauss–Seidel), so each sees the others' latest positions; a loop that moves a colour's vertices at once must take
 // the vertices in contacts one by one (or colour the contacts too).

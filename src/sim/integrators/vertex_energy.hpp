@@ -86,7 +86,7 @@ struct BodySolve {
 };
 
 // The smooth floor's terms of one vertex, with the dashpot's weight w and friction's normal force N lagged at the
-// visit's start (sim/contact/floor_potential.hpp has the same terms for newton).
+// visit's start (as IPC lags its friction: Li et al. 2020, §5).
 struct FloorLag {
   double depth_m = 0.0;       // floor − y at the visit's start
   double dashpot_kg_s = 0.0;  // m b w [kg/s]
@@ -100,7 +100,7 @@ FloorLag add_floor_terms(const SmoothFloor& floor, double m, const Vec3& x, cons
 // The floor terms' change of E when the vertex moves from x by step [J].
 double floor_energy_change(const SmoothFloor& floor, const FloorLag& lag, double m, const Vec3& x, const Vec3& step,
                            const Vec3& base, double h_hat);
-// A smooth collider's terms of one vertex at x (sim/contact/smooth_collider.hpp, newton's too): its gradient and
+// A smooth collider's terms of one vertex at x (sim/contact/smooth_collider.hpp): its gradient and
 // Hessian added, and its normal, dashpot weight and friction force lagged at x returned.
 ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const Vec3& x, const Vec3& base, double h_hat,
                                Vec3& gradient, Block3& hessian);

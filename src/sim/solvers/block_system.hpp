@@ -1,4 +1,4 @@
-// The implicit integrators' sparse part (implicit's M + h² K + h C, newton's Hessian): a symmetric matrix of 3×3 vertex
+// The implicit integrator's sparse part (M + h² K + h C): a symmetric matrix of 3×3 vertex
 // blocks, assembled in place.
 #pragma once
 

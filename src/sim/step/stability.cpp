@@ -259,10 +259,9 @@ double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
     const double explicit_omega2 = bounds.omega2_gas + bounds.omega2_contact;
     return explicit_omega2 > 0.0 ? 2.0 / std::sqrt(explicit_omega2) : StabilityEstimate::kUnlimited;
   }
-  if (integrator == IntegratorKind::Newton || integrator == IntegratorKind::Vbd) {
-    // Every force implicit: backward Euler's amplification 1 / (1 − hλ) has |·| < 1 for every mode with
-    // Re λ ≤ 0 at every h (A- and L-stable; BDF2, vbd's, is A-stable too), and each Newton iterate (vbd: each vertex
-    // move) lowers the incremental potential. No
+  if (integrator == IntegratorKind::Vbd) {
+    // Every force implicit: BDF2 (and backward Euler, its first step) is A-stable, |amplification| < 1 for every
+    // mode with Re λ ≤ 0 at every h, and each vertex move lowers the step's energy. No
     // mode limits h; what does is accuracy (numerical damping ∝ h ω² of each mode) and, with a floor, the
     // post-step contact's travel per step (travel_dt_s, applied to every integrator).
     return StabilityEstimate::kUnlimited;
