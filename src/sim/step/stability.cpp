@@ -457,12 +457,18 @@ double xpbd_carried_dt(double omega_max) {
 
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s) {
-  bool projected_floor = model.floor && model.floor->contact != FloorContact::Smooth;
+  // The projections after the step: vbd's steps keep their travel limit where one acts (its smooth contacts are
+  // inside its energy, and its steps shrink around their impacts).
+  bool projected = model.floor && model.floor->contact != FloorContact::Smooth;
   for (const Collider& collider : model.colliders) {  // a keyframed collider's projection: the same travel limit
-    projected_floor = projected_floor || (collider.motion.moving() && collider.contact != FloorContact::Smooth);
+    projected = projected || (collider.motion.moving() && collider.contact != FloorContact::Smooth);
   }
+  // The impulse contact between bodies and a body's impulse self-contact: a fold's halves or two bodies must not pass
+  // each other within one step.
+  projected =
+      projected || (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Impulse);
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
-  if (integrator == IntegratorKind::Vbd && !projected_floor) h = std::min(frame_interval_s, kVbdLongestAutoStep);
+  if (integrator == IntegratorKind::Vbd && !projected) h = std::min(frame_interval_s, kVbdLongestAutoStep);
   const bool xpbd = integrator == IntegratorKind::Xpbd;
   for (std::size_t b = 0; xpbd && b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
     h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));
