@@ -13,9 +13,8 @@ def draw_bake_buttons(layout, scene):
         layout.label(text=scene.softbody_pressure.last_message)
 
 
-class SOFTBODY_PT_object(bpy.types.Panel):
-    bl_label = "Soft body (pressure)"
-    bl_idname = "SOFTBODY_PT_object"
+class MeshPhysicsPanel:
+    """Where the object panels go: Properties > Physics, on a mesh object."""
     bl_space_type = "PROPERTIES"
     bl_region_type = "WINDOW"
     bl_context = "physics"
@@ -23,6 +22,11 @@ class SOFTBODY_PT_object(bpy.types.Panel):
     @classmethod
     def poll(cls, context):
         return context.object is not None and context.object.type == "MESH"
+
+
+class SOFTBODY_PT_object(MeshPhysicsPanel, bpy.types.Panel):
+    bl_label = "Soft body (pressure)"
+    bl_idname = "SOFTBODY_PT_object"
 
     def draw_header(self, context):
         self.layout.prop(context.object.softbody_pressure, "enabled", text="")
@@ -63,16 +67,9 @@ class SOFTBODY_PT_object(bpy.types.Panel):
         draw_bake_buttons(layout, context.scene)
 
 
-class SOFTBODY_PT_collider(bpy.types.Panel):
+class SOFTBODY_PT_collider(MeshPhysicsPanel, bpy.types.Panel):
     bl_label = "Collider (softbody)"
     bl_idname = "SOFTBODY_PT_collider"
-    bl_space_type = "PROPERTIES"
-    bl_region_type = "WINDOW"
-    bl_context = "physics"
-
-    @classmethod
-    def poll(cls, context):
-        return context.object is not None and context.object.type == "MESH"
 
     def draw_header(self, context):
         self.layout.prop(context.object.softbody_pressure, "collider", text="")

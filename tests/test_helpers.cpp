@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 
 #include "core/errors.hpp"
@@ -51,6 +52,30 @@ sim::World run_scene_frames(const std::string& json_text,
     if (at_frame) at_frame(frame * clock.frame_interval_s, world);
   }
   return world;
+}
+
+void run_scene_steps(const std::string& json_text, const std::function<void(const sim::World&)>& after_step,
+                     const std::function<void(sim::World&)>& prepare, double adaptive_span_s) {
+  const scene::Scene scene = scene_from_text(json_text);
+  std::vector<std::string> notes;
+  sim::World world = setup::build_world(scene, notes);
+  if (prepare) prepare(world);
+  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
+  if (world.adaptive()) {
+    constexpr double kTick_s = 1e-4;
+    const auto ticks = static_cast<int>(std::lround(adaptive_span_s / kTick_s));
+    for (int tick = 1; tick <= ticks; ++tick) {
+      world.advance_to(tick * kTick_s);
+      after_step(world);
+    }
+    return;
+  }
+  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
+  const long long steps = static_cast<long long>(clock.frame_count) * clock.steps_per_frame;
+  for (long long s = 0; s < steps; ++s) {
+    world.step(clock.dt_s);
+    after_step(world);
+  }
 }
 
 softbody::Vec3 total_momentum(const sim::World& world) {

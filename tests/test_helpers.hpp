@@ -27,6 +27,13 @@ sim::World world_from_text(const std::string& json_text);
 sim::World run_scene_frames(const std::string& json_text,
                             const std::function<void(double, const sim::World&)>& at_frame = nullptr);
 
+// Runs the scene given as JSON text step by step at the step its solver asks for ("auto" resolved as the program
+// resolves it), calling `after_step(world)` after every step; an adaptive integrator instead goes to every tick of a
+// 0.1 ms clock over the first `adaptive_span_s`. `prepare(world)` (if given) adjusts the world before the step is
+// resolved.
+void run_scene_steps(const std::string& json_text, const std::function<void(const sim::World&)>& after_step,
+                     const std::function<void(sim::World&)>& prepare = nullptr, double adaptive_span_s = 0.1);
+
 // Σ over bodies of Σ m_i v_i [kg·m/s].
 softbody::Vec3 total_momentum(const sim::World& world);
 

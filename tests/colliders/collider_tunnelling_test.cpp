@@ -40,30 +40,15 @@ std::string ball_at_board(const std::string& contact, const sim::IntegratorInfo&
 // The lowest any vertex over the board's area got below the board's top, after any step (adaptive: any frame of a
 // 0.1 ms clock) [m]: below 2 half thicknesses it has passed through.
 double deepest_below_top(const std::string& text, bool continuous) {
-  scene::Scene scene = testing_support::scene_from_text(text);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
-  world.model.colliders.at(0).continuous = continuous;
-  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
   double deepest = 0.0;
-  const auto look = [&] {
-    for (const Vec3& x : world.state.x) {
-      if (std::max(std::abs(x.x()), std::abs(x.z())) < 0.3) deepest = std::max(deepest, kHalfThickness_m - x.y());
-    }
-  };
-  const long long steps = static_cast<long long>(clock.frame_count) * clock.steps_per_frame;
-  if (world.adaptive()) {
-    for (int tick = 1; tick <= 1000; ++tick) {
-      world.advance_to(tick * 1e-4);
-      look();
-    }
-  } else {
-    for (long long s = 0; s < steps; ++s) {
-      world.step(clock.dt_s);
-      look();
-    }
-  }
+  testing_support::run_scene_steps(
+      text,
+      [&](const sim::World& world) {
+        for (const Vec3& x : world.state.x) {
+          if (std::max(std::abs(x.x()), std::abs(x.z())) < 0.3) deepest = std::max(deepest, kHalfThickness_m - x.y());
+        }
+      },
+      [&](sim::World& world) { world.model.colliders.at(0).continuous = continuous; });
   return deepest;
 }
 

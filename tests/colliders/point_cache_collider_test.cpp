@@ -96,17 +96,24 @@ std::string cube_on_platform(const std::string& platform, const std::string& con
 constexpr double kPlatformSpeed_m_per_s = 0.5;
 const Vec3 kPlatformHalf(1.0, 0.05, 1.0);
 
-// Keyframed linear keys that fall on frames (0 and 3 s at 30 fps), read back from the export's cache: linear
-// interpolation of the frames' samples gives the keys' positions again (to float precision), so the body moves as
-// it did on the keyframed platform.
-TEST(PointCacheCollider, ExportedCacheOfAKeyframedMeshMovesABodyAsTheKeysDid) {
-  const fs::path dir = testing_support::scratch_dir("point_cache_round_trip");
+// The cube on a keyframed mesh platform (dir/platform.obj) sliding 1.5 m along x in 3 s, also written as
+// dir/keyed.json: its text.
+std::string keyed_platform_scene(const fs::path& dir) {
   write_file(dir / "platform.obj", box_obj(kPlatformHalf));
   const std::string keyed =
       cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "platform.obj").string() +
                            R"(", "keys": [ {"time": 0, "position": [0, 0, 0]}, {"time": 3, "position": [1.5, 0, 0]} ])",
                        "friction", step_keys(sim::kIntegrators[0]));
   write_file(dir / "keyed.json", keyed);
+  return keyed;
+}
+
+// Keyframed linear keys that fall on frames (0 and 3 s at 30 fps), read back from the export's cache: linear
+// interpolation of the frames' samples gives the keys' positions again (to float precision), so the body moves as
+// it did on the keyframed platform.
+TEST(PointCacheCollider, ExportedCacheOfAKeyframedMeshMovesABodyAsTheKeysDid) {
+  const fs::path dir = testing_support::scratch_dir("point_cache_round_trip");
+  const std::string keyed = keyed_platform_scene(dir);
   const testing_support::CommandResult exported = testing_support::run_softbody(
       "export " + (dir / "keyed.json").string() + " --format pc2 -o " + (dir / "out").string());
   ASSERT_EQ(exported.exit_status, 0) << exported.output;
@@ -131,12 +138,7 @@ TEST(PointCacheCollider, ExportedCacheOfAKeyframedMeshMovesABodyAsTheKeysDid) {
 // one file per frame, and "cache": "out/collider_0_%04d.obj" reads them back, frame k at k / fps.
 TEST(PointCacheCollider, ExportedMeshSequenceOfAKeyframedMeshMovesABodyAsTheKeysDid) {
   const fs::path dir = testing_support::scratch_dir("point_cache_sequence");
-  write_file(dir / "platform.obj", box_obj(kPlatformHalf));
-  const std::string keyed =
-      cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "platform.obj").string() +
-                           R"(", "keys": [ {"time": 0, "position": [0, 0, 0]}, {"time": 3, "position": [1.5, 0, 0]} ])",
-                       "friction", step_keys(sim::kIntegrators[0]));
-  write_file(dir / "keyed.json", keyed);
+  const std::string keyed = keyed_platform_scene(dir);
   const testing_support::CommandResult exported =
       testing_support::run_softbody("export " + (dir / "keyed.json").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(exported.exit_status, 0) << exported.output;
@@ -189,32 +191,17 @@ constexpr double kBoardSpeed_m_per_s = 0.2;  // along +x
 
 // The lowest any vertex over the board got below its top after any step [m], the board sliding along +x.
 double deepest_below_board_top(const std::string& text, bool continuous) {
-  const scene::Scene scene = testing_support::scene_from_text(text);
-  std::vector<std::string> notes;
-  sim::World world = setup::build_world(scene, notes);
-  world.model.colliders.at(0).continuous = continuous;
-  sim::resolve_step(world.model, world.state, 1.0 / scene.fps, "test");
-  const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, world.model.solver.dt_s);
   double deepest = 0.0;
-  const auto look = [&] {
-    const double centre = kBoardSpeed_m_per_s * world.state.time_s;
-    for (const Vec3& x : world.state.x) {
-      if (std::max(std::abs(x.x() - centre), std::abs(x.z())) < 0.3)
-        deepest = std::max(deepest, kHalfThickness_m - x.y());
-    }
-  };
-  if (world.adaptive()) {
-    for (int tick = 1; tick <= 1000; ++tick) {
-      world.advance_to(tick * 1e-4);
-      look();
-    }
-  } else {
-    const long long steps = static_cast<long long>(clock.frame_count) * clock.steps_per_frame;
-    for (long long s = 0; s < steps; ++s) {
-      world.step(clock.dt_s);
-      look();
-    }
-  }
+  testing_support::run_scene_steps(
+      text,
+      [&](const sim::World& world) {
+        const double centre = kBoardSpeed_m_per_s * world.state.time_s;
+        for (const Vec3& x : world.state.x) {
+          if (std::max(std::abs(x.x() - centre), std::abs(x.z())) < 0.3)
+            deepest = std::max(deepest, kHalfThickness_m - x.y());
+        }
+      },
+      [&](sim::World& world) { world.model.colliders.at(0).continuous = continuous; });
   return deepest;
 }
 

@@ -168,16 +168,22 @@ void give_history(sim::World& world, double dt) {
   }
 }
 
+// The two pressed spheres sliding past each other (the left one along +x, the right one along −x and z), with a
+// BDF2 history of steps of dt.
+void slide_past_each_other(sim::World& world, double dt) {
+  const int right = world.model.bodies[1].first_vertex;
+  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
+    world.state.v[i] = static_cast<int>(i) < right ? Vec3(0.5, 0.2, 0.0) : Vec3(-0.5, -0.3, 0.4);
+  }
+  give_history(world, dt);
+}
+
 // After 1000 sweeps a step's end state satisfies BDF2's equation with the model's own forces (Dynamics, the smooth
 // body contact's add_smooth_forces included): m (x' − y)/ĥ² = f(x', (x' − x̃)/ĥ), as vbd_test.cpp checks for the floor.
 TEST(VbdContact, ConvergedSweepsSolveBdf2WithTheSmoothContactForce) {
   sim::World world = vbd_world(kPressed, 1000);
   constexpr double kDt = 1.0 / 240.0;
-  const int right = world.model.bodies[1].first_vertex;
-  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
-    world.state.v[i] = static_cast<int>(i) < right ? Vec3(0.5, 0.2, 0.0) : Vec3(-0.5, -0.3, 0.4);
-  }
-  give_history(world, kDt);
+  slide_past_each_other(world, kDt);
   const sim::State before = world.state;
   world.step(kDt);
   const double h_hat = 2.0 * kDt / 3.0;
@@ -214,11 +220,7 @@ TEST(VbdContact, ConvergedStepKeepsMomentum) {
   scene.replace(scene.find("-9.81"), 5, "0");
   sim::World world = vbd_world(scene, 1000);
   constexpr double kDt = 1.0 / 240.0;
-  const int right = world.model.bodies[1].first_vertex;
-  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
-    world.state.v[i] = static_cast<int>(i) < right ? Vec3(0.5, 0.2, 0.0) : Vec3(-0.5, -0.3, 0.4);
-  }
-  give_history(world, kDt);
+  slide_past_each_other(world, kDt);
   const Vec3 before = momentum(world);
   double speed = 0.0;  // Σ m |v| [kg m/s]
   for (std::size_t i = 0; i < world.state.v.size(); ++i) speed += world.model.mass_kg[i] * world.state.v[i].norm();
