@@ -122,7 +122,8 @@ TEST(SelfCollision, FoldedTubeNoVertexInsideVbdAtTheTravelLimitsStep) {
   const Inside with = run_fold(fold_scene("vbd", "impulse", true, 0.4));
   const Inside without = run_fold(fold_scene("vbd", "impulse", false, 0.4, 220));
   std::printf(
-      "vbd, auto steps (with) and 220 steps per frame (without): with self-collision %d vertex-frames inside (winding %.3f..%.3f), without %d\n",
+      "vbd, auto steps (with) and 220 steps per frame (without): with self-collision %d vertex-frames inside (winding "
+      "%.3f..%.3f), without %d\n",
       with.vertices, with.lowest, with.highest, without.vertices);
   EXPECT_EQ(with.vertices, 0);
   EXPECT_GT(without.vertices, 100);  // the same scene shows vertices inside without it: the test can fail
