@@ -38,7 +38,8 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
     std::snprintf(limit, sizeof limit, "%.4g s", step.travel_dt_s);
     const std::string why =
         vbd ? std::string("; the contact travel limit ") + limit +
-                  " applies to the paper's and the friction floor; vbd shrinks its steps itself around smooth impacts)"
+                  " applies where a contact acts after the step: a paper or friction floor, a keyframed collider, the"
+                  " impulse contact between bodies; vbd shrinks its steps itself around smooth impacts)"
             : std::string(": within the carried form's limit and the contact travel limit ") + limit + ")";
     notes.insert(notes.begin(), head + why);
   } else if (step.dt_chosen) {

@@ -190,8 +190,10 @@ struct Table {
         key_without_default(
             "substeps", {substeps, choice({"auto"})}, "",
             "xpbd and vbd: steps per frame interval, so dt = (1/fps) / substeps. \"auto\": xpbd, the "
-            "fewest that keep its stated accuracy; vbd, one per frame (at most 1/30 s; with the paper's or the "
-            "friction floor, that floor's contact travel limit).",
+            "fewest that keep its stated accuracy; vbd, one per frame (at most 1/30 s; where a contact acts "
+            "after the step, a paper or friction floor, a keyframed collider or the impulse contact between "
+            "bodies or with itself, the contact travel limit; vbd shrinks its steps itself around smooth "
+            "impacts).",
             "none: dt decides"),
         key("iterations", {integer(1, 10000)}, "", "vbd: Gauss-Seidel sweeps over the vertices per step.", 4),
         key("coarse_space", {integer(0, 512)}, "",
