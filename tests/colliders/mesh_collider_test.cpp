@@ -185,7 +185,7 @@ TEST(MeshCollider, OpenQuadIsASheetOfItsThickness) {
 TEST(MeshCollider, BallOnACubeMeshMovesAsOnTheBox) {
   for (const char* contact : {"paper", "friction", "smooth"}) {
     const auto ball_on = [&](const std::string& shape) {
-      return R"({ "duration": 1.0, "solver": { "integrator": "vbd", "dt": "auto" },
+      return R"({ "duration": 1.0, "solver": { "integrator": "xpbd", "dt": "auto" },
                   "floor": { "height": -2, "contact": ")" +
              std::string(contact) + R"(", "restitution": 0.2, "friction": 0.5 },
                   "colliders": [ )" +
@@ -221,7 +221,7 @@ TEST(MeshCollider, BallOnACubeMeshMovesAsOnTheBox) {
 TEST(MeshCollider, OpenQuadStopsAFallingBody) {
   for (const char* contact : {"paper", "friction", "smooth"}) {
     sim::World world = testing_support::world_from_text(
-        R"({ "solver": { "integrator": "vbd", "dt": "auto" }, "colliders": [
+        R"({ "solver": { "integrator": "xpbd", "dt": "auto" }, "colliders": [
               { "shape": "mesh", "mesh": "data/quad.obj", "position": [0, 1, 0], "contact": ")" +
         std::string(contact) + R"(", "restitution": 0.0 } ],
             "bodies": [ { "mesh": "icosphere:2", "scale": 0.2, "position": [0, 1.7, 0], "stiffness": 800,
