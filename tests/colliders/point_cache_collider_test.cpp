@@ -96,6 +96,27 @@ std::string cube_on_platform(const std::string& platform, const std::string& con
 constexpr double kPlatformSpeed_m_per_s = 0.5;
 const Vec3 kPlatformHalf(1.0, 0.05, 1.0);
 
+// Body 0's centre of mass at every frame of a scene, and its velocity at the end.
+struct CentrePath {
+  std::vector<Vec3> centres;
+  Vec3 end_velocity = Vec3::Zero();
+};
+CentrePath centre_path(const std::string& text) {
+  CentrePath path;
+  const sim::World end = testing_support::run_scene_frames(
+      text, [&](double, const sim::World& w) { path.centres.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
+  path.end_velocity = sim::diagnose(end.model, end.state, 0).com_velocity_m_per_s;
+  return path;
+}
+
+// The largest distance between two paths' centres at the same frame [m].
+double farthest_apart(const CentrePath& a, const CentrePath& b) {
+  double apart = 0.0;
+  for (std::size_t f = 0; f < a.centres.size() && f < b.centres.size(); ++f)
+    apart = std::max(apart, (a.centres[f] - b.centres[f]).norm());
+  return apart;
+}
+
 // The cube on a keyframed mesh platform (dir/platform.obj) sliding 1.5 m along x in 3 s, also written as
 // dir/keyed.json: its text.
 std::string keyed_platform_scene(const fs::path& dir) {
@@ -120,18 +141,13 @@ TEST(PointCacheCollider, ExportedCacheOfAKeyframedMeshMovesABodyAsTheKeysDid) {
   const std::string cached = cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "out/collider_0.obj").string() +
                                                   R"(", "cache": ")" + (dir / "out/collider_0.pc2").string() + "\"",
                                               "friction", step_keys(sim::kIntegrators[0]));
-  std::vector<Vec3> keyed_path, cached_path;
-  testing_support::run_scene_frames(
-      keyed, [&](double, const sim::World& w) { keyed_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
-  const sim::World end = testing_support::run_scene_frames(
-      cached, [&](double, const sim::World& w) { cached_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
-  ASSERT_EQ(keyed_path.size(), cached_path.size());
-  double apart = 0.0;
-  for (std::size_t f = 0; f < keyed_path.size(); ++f) apart = std::max(apart, (keyed_path[f] - cached_path[f]).norm());
+  const CentrePath keyed_path = centre_path(keyed), cached_path = centre_path(cached);
+  ASSERT_EQ(keyed_path.centres.size(), cached_path.centres.size());
+  const double apart = farthest_apart(keyed_path, cached_path);
   std::printf("the body's centre on the cached platform and on the keyframed one: at most %.3g m apart\n", apart);
   // The cache holds float positions (about 1e-7 m here); the contact passes on such differences without growing them.
   EXPECT_LT(apart, 1e-5);
-  EXPECT_NEAR(sim::diagnose(end.model, end.state, 0).com_velocity_m_per_s.x(), kPlatformSpeed_m_per_s, 0.02);
+  EXPECT_NEAR(cached_path.end_velocity.x(), kPlatformSpeed_m_per_s, 0.02);
 }
 
 // The same through a numbered OBJ sequence: `softbody export` writes the keyframed collider as collider_0_%04d.obj,
@@ -146,14 +162,9 @@ TEST(PointCacheCollider, ExportedMeshSequenceOfAKeyframedMeshMovesABodyAsTheKeys
       cube_on_platform(R"("shape": "mesh", "mesh": ")" + (dir / "out/collider_0_0000.obj").string() +
                            R"(", "cache": ")" + (dir / "out/collider_0_%04d.obj").string() + "\"",
                        "friction", step_keys(sim::kIntegrators[0]));
-  std::vector<Vec3> keyed_path, cached_path;
-  testing_support::run_scene_frames(
-      keyed, [&](double, const sim::World& w) { keyed_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
-  testing_support::run_scene_frames(
-      cached, [&](double, const sim::World& w) { cached_path.push_back(sim::diagnose(w.model, w.state, 0).com_m); });
-  ASSERT_EQ(keyed_path.size(), cached_path.size());
-  double apart = 0.0;
-  for (std::size_t f = 0; f < keyed_path.size(); ++f) apart = std::max(apart, (keyed_path[f] - cached_path[f]).norm());
+  const CentrePath keyed_path = centre_path(keyed), cached_path = centre_path(cached);
+  ASSERT_EQ(keyed_path.centres.size(), cached_path.centres.size());
+  const double apart = farthest_apart(keyed_path, cached_path);
   std::printf("the body's centre on the sequence's platform and on the keyframed one: at most %.3g m apart\n", apart);
   EXPECT_LT(apart, 1e-5);
 }

@@ -135,19 +135,26 @@ void add_vertex_normals(ColliderMesh& m) {
   }
 }
 
-// Splits order[first, first + count) at the median of the triangles' centroids along the box's longest axis (ties
-// by triangle index, so the tree is the same on every run), until a leaf holds at most kLeafTriangles. An inner node
-// keeps its left child's index in `first` and its right child's, negated, in `count`.
-int build_tree(ColliderMesh& m, const std::vector<Vec3>& centroid, int first, int count) {
-  const int index = static_cast<int>(m.nodes.size());
-  m.nodes.push_back({});
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+// The box around the corners of the triangles order[first, first + count).
+void triangles_box(const ColliderMesh& m, int first, int count, Vec3& lo, Vec3& hi) {
+  lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  hi = -lo;
   for (int i = first; i < first + count; ++i) {
     for (int v : m.triangles[static_cast<std::size_t>(m.order[static_cast<std::size_t>(i)])]) {
       lo = lo.cwiseMin(m.vertices_m[static_cast<std::size_t>(v)]);
       hi = hi.cwiseMax(m.vertices_m[static_cast<std::size_t>(v)]);
     }
   }
+}
+
+// Splits order[first, first + count) at the median of the triangles' centroids along the box's longest axis (ties
+// by triangle index, so the tree is the same on every run), until a leaf holds at most kLeafTriangles. An inner node
+// keeps its left child's index in `first` and its right child's, negated, in `count`.
+int build_tree(ColliderMesh& m, const std::vector<Vec3>& centroid, int first, int count) {
+  const int index = static_cast<int>(m.nodes.size());
+  m.nodes.push_back({});
+  Vec3 lo, hi;
+  triangles_box(m, first, count, lo, hi);
   ColliderMesh::Node node{lo, hi, first, count};
   if (count > kLeafTriangles) {
     int axis = 0;
@@ -274,14 +281,7 @@ void refit_tree(ColliderMesh& m) {
       node.hi = left.hi.cwiseMax(right.hi);
       continue;
     }
-    node.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-    node.hi = -node.lo;
-    for (int k = node.first; k < node.first + node.count; ++k) {
-      for (int v : m.triangles[static_cast<std::size_t>(m.order[static_cast<std::size_t>(k)])]) {
-        node.lo = node.lo.cwiseMin(m.vertices_m[static_cast<std::size_t>(v)]);
-        node.hi = node.hi.cwiseMax(m.vertices_m[static_cast<std::size_t>(v)]);
-      }
-    }
+    triangles_box(m, node.first, node.count, node.lo, node.hi);
   }
 }
 
@@ -320,11 +320,15 @@ MeshPoint mesh_nearest_point_local(const ColliderMesh& m, const Vec3& q) {
                       m.vertices_m[static_cast<std::size_t>(tri[1])], m.vertices_m[static_cast<std::size_t>(tri[2])])};
 }
 
-Vec3 mesh_point_position(const ColliderMesh& m, const MeshPoint& point) {
+Vec3 at_mesh_point(const ColliderMesh& m, const MeshPoint& point, std::span<const Vec3> per_vertex) {
   const softbody::Triangle& tri = m.triangles[static_cast<std::size_t>(point.triangle)];
-  Vec3 p = Vec3::Zero();
-  for (std::size_t k = 0; k < 3; ++k) p += point.weights[k] * m.vertices_m[static_cast<std::size_t>(tri[k])];
-  return p;
+  Vec3 value = Vec3::Zero();
+  for (std::size_t k = 0; k < 3; ++k) value += point.weights[k] * per_vertex[static_cast<std::size_t>(tri[k])];
+  return value;
+}
+
+Vec3 mesh_point_position(const ColliderMesh& m, const MeshPoint& point) {
+  return at_mesh_point(m, point, m.vertices_m);
 }
 
 bool mesh_segment_entry_local(const ColliderMesh& m, const Vec3& a, const Vec3& b, Vec3& point, Vec3& normal) {

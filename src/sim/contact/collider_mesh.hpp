@@ -8,6 +8,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "sim/contact/collider_shape.hpp"
@@ -69,6 +70,8 @@ struct MeshPoint {
 MeshPoint mesh_nearest_point_local(const ColliderMesh& mesh, const Vec3& q);
 
 // The local position of that point (Σ weight × corner).
+// Σ_k w_k value_k over the point's triangle's corners, for any per-vertex value (positions, velocities).
+Vec3 at_mesh_point(const ColliderMesh& mesh, const MeshPoint& point, std::span<const Vec3> per_vertex);
 Vec3 mesh_point_position(const ColliderMesh& mesh, const MeshPoint& point);
 
 }  // namespace sim

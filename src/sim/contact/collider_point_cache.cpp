@@ -77,10 +77,7 @@ std::shared_ptr<const ColliderMesh> mesh_at(const ColliderPointCache& cache, dou
 Vec3 cached_surface_velocity(const ColliderGeometry& g, const Vec3& x) {
   const ColliderMesh& m = *g.mesh;
   const MeshPoint point = mesh_nearest_point_local(m, g.rotation.transpose() * (x - g.position_m));
-  const softbody::Triangle& tri = m.triangles[static_cast<std::size_t>(point.triangle)];
-  Vec3 u = Vec3::Zero();
-  for (std::size_t k = 0; k < 3; ++k) u += point.weights[k] * m.vertex_velocities[static_cast<std::size_t>(tri[k])];
-  return g.rotation * u;
+  return g.rotation * at_mesh_point(m, point, m.vertex_velocities);
 }
 
 double largest_vertex_travel(const ColliderGeometry& from, const ColliderGeometry& to) {

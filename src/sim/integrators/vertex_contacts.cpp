@@ -109,14 +109,8 @@ void VertexContacts::add_terms(int vertex, Vec3& gradient, Block3& hessian) cons
     Vec3 g;
     Block3 k;
     derivatives(c, relative(c), g, k);
-    gradient += coefficient * g;  // c_j ∇_r E_c
-    const double c2 = coefficient * coefficient;
-    hessian.xx += c2 * k.xx;  // c_j² K
-    hessian.xy += c2 * k.xy;
-    hessian.xz += c2 * k.xz;
-    hessian.yy += c2 * k.yy;
-    hessian.yz += c2 * k.yz;
-    hessian.zz += c2 * k.zz;
+    gradient += coefficient * g;                       // c_j ∇_r E_c
+    hessian.add_scaled(coefficient * coefficient, k);  // c_j² K
   }
 }
 

@@ -62,12 +62,7 @@ ColliderLag add_collider_terms(const SmoothCollider& collider, double m, const V
   const ColliderLag lag = lag_smooth_collider(collider, m, x);
   Mat3 block = Mat3::Zero();
   add_smooth_collider_derivatives(collider, lag, m, x, base, h_hat, gradient, block);
-  hessian.xx += block(0, 0);
-  hessian.xy += block(0, 1);
-  hessian.xz += block(0, 2);
-  hessian.yy += block(1, 1);
-  hessian.yz += block(1, 2);
-  hessian.zz += block(2, 2);
+  hessian.add(block);
   return lag;
 }
 

@@ -50,6 +50,22 @@ struct Block3 {
     yy += a;
     zz += a;
   }
+  void add_scaled(double a, const Block3& b) {  // += a b
+    xx += a * b.xx;
+    xy += a * b.xy;
+    xz += a * b.xz;
+    yy += a * b.yy;
+    yz += a * b.yz;
+    zz += a * b.zz;
+  }
+  void add(const Mat3& m) {  // += m's upper triangle (m symmetric)
+    xx += m(0, 0);
+    xy += m(0, 1);
+    xz += m(0, 2);
+    yy += m(1, 1);
+    yz += m(1, 2);
+    zz += m(2, 2);
+  }
   void add_outer(double a, const Vec3& u) {  // += a u uᵀ
     xx += a * u.x() * u.x();
     xy += a * u.x() * u.y();
