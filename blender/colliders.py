@@ -71,17 +71,6 @@ def deforms(obj, samples):
                for a, b in zip(p, q))
 
 
-def world_points(sample, metres_per_unit):
-    return [tuple(Y_UP @ (sample.matrix @ p) * metres_per_unit) for p in sample.points]
-
-
-def facing_out(sample):
-    """The triangles, turned back where a mirroring transform turns them inside out."""
-    if sample.matrix.determinant() < 0.0:
-        return [(a, c, b) for a, b, c in sample.triangles]
-    return sample.triangles
-
-
 def constant_scale(obj, matrices):
     """The scale the object keeps over the range (checked: positive, unchanged)."""
     scales = [m.decompose()[2] for m in matrices]
@@ -102,7 +91,7 @@ def key_at(time_s, matrix, metres_per_unit, previous_euler):
     turned = Y_UP @ rotation.to_matrix() @ Y_UP.transposed()  # the same turn seen in softbody's axes
     euler = turned.to_euler("XYZ", previous_euler) if previous_euler is not None else turned.to_euler("XYZ")
     key = {"time": scene_writer.number(time_s),
-           "position": [scene_writer.number(p) for p in Y_UP @ location * metres_per_unit],
+           "position": [scene_writer.number(p) for p in scene_writer.to_softbody(location, metres_per_unit)],
            "rotation": [scene_writer.number(math.degrees(a)) for a in euler]}
     return key, euler
 
@@ -118,17 +107,18 @@ def collider_entry(scene, obj, paths, metres_per_unit):
     if deforms(obj, samples):  # an OBJ (the cache follows its v lines) and a PC2 of world points, frame 0 at 0 s
         mesh_path, entry["mesh"] = paths(".obj")
         cache_path, entry["cache"] = paths(".pc2")
-        scene_writer.write_obj(mesh_path, world_points(samples[0], metres_per_unit), facing_out(samples[0]))
-        scene_writer.write_pc2(cache_path, [world_points(sample, metres_per_unit) for sample in samples])
+        placed = [scene_writer.placed_mesh(s.matrix, s.points, s.triangles, metres_per_unit) for s in samples]
+        scene_writer.write_obj(mesh_path, *placed[0])
+        scene_writer.write_pc2(cache_path, [points for points, _ in placed])
         return entry
     mesh_path, entry["mesh"] = paths(".ply")
     matrices = [sample.matrix for sample in samples]
     if is_static(matrices):
-        scene_writer.write_ply(mesh_path, world_points(samples[0], metres_per_unit), facing_out(samples[0]))
+        scene_writer.write_ply(mesh_path, *scene_writer.placed_mesh(samples[0].matrix, samples[0].points,
+                                                                    samples[0].triangles, metres_per_unit))
         return entry
     scale = constant_scale(obj, matrices)
-    points = [tuple(Y_UP @ mathutils.Vector([c * s for c, s in zip(p, scale)]) * metres_per_unit)
-              for p in samples[0].points]
+    points = [scene_writer.to_softbody([c * s for c, s in zip(p, scale)], metres_per_unit) for p in samples[0].points]
     scene_writer.write_ply(mesh_path, points, samples[0].triangles)
     fps = scene.render.fps / scene.render.fps_base
     keys, euler = [], None

@@ -187,13 +187,17 @@ def write_scene(path, keys, bodies, colliders=()):
         f.write("\n")
 
 
+def placed_mesh(matrix, local_points, triangles, metres_per_unit=1.0):
+    """Local points placed by a Blender world matrix, in softbody's axes and metres, and the triangles facing out."""
+    points = [to_softbody(matrix @ p, metres_per_unit) for p in local_points]
+    if matrix.determinant() < 0.0:  # a mirroring transform turns the faces inside out: keep them facing out
+        triangles = [(a, c, b) for a, b, c in triangles]
+    return points, triangles
+
+
 def world_mesh(obj, metres_per_unit=1.0):
     """The object's mesh (without its modifiers) in world space, in softbody's axes and metres, triangulated."""
     mesh = obj.data
-    world = obj.matrix_world
-    points = [to_softbody(world @ v.co, metres_per_unit) for v in mesh.vertices]
     mesh.calc_loop_triangles()
     triangles = [tuple(t.vertices) for t in mesh.loop_triangles]
-    if world.determinant() < 0.0:  # a mirroring transform turns the faces inside out: keep them facing out
-        triangles = [(a, c, b) for a, b, c in triangles]
-    return points, triangles
+    return placed_mesh(obj.matrix_world, [v.co for v in mesh.vertices], triangles, metres_per_unit)

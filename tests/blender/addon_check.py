@@ -232,14 +232,18 @@ def check_clear(ball, before, matrix_before):
         fail("Clear did not give the object back as it was")
 
 
-def check_error_report(ball):
-    ball.softbody_pressure.mass = 0.0
+def bake_error(what):
+    """The error report of a bake that must fail (`what`: the setting that makes it fail)."""
     try:
         bpy.ops.softbody.bake()
     except RuntimeError as error:
-        message = str(error)
-    else:
-        fail("a bake with mass 0 did not report an error")
+        return str(error)
+    fail("a bake with %s did not report an error" % what)
+
+
+def check_error_report(ball):
+    ball.softbody_pressure.mass = 0.0
+    message = bake_error("mass 0")
     print("blender addon: mass 0: the report is %r" % message.strip())
     if "bodies.0.mass" not in message or "> 0" not in message:
         fail("the error report does not carry the program's message")
@@ -318,12 +322,7 @@ def check_colliders(program, bake_dir, scratch):
     if lowest < 0.45:
         fail("the ball did not land on the block collider")
     paddle.softbody_pressure.enabled = True
-    try:
-        bpy.ops.softbody.bake()
-    except RuntimeError as error:
-        message = str(error)
-    else:
-        fail("a bake with an object both body and collider did not report an error")
+    message = bake_error("an object both body and collider")
     if "both a soft body and a collider" not in message:
         fail("the error report does not say what is wrong: %r" % message)
 
