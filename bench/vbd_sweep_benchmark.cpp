@@ -16,12 +16,12 @@ constexpr int kSweeps = 4;  // sweeps per measured step (the bench's default set
 
 // bounce_smooth.json's ball at icosphere:level, stepped by vbd for 0.1 s from its start 3 m up: in flight, its BDF2
 // history made by vbd's own steps.
-sim::World flying_ball(int level) {
+sim::World flying_ball(int level, int threads) {
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce_smooth.json");
   s.bodies.at(0).mesh = "icosphere:" + std::to_string(level);
   s.solver.integrator = sim::IntegratorKind::Vbd;
   s.solver.iterations = kSweeps;
-  s.solver.threads = 1;
+  s.solver.threads = threads;
   std::vector<std::string> notes;
   sim::World world = setup::build_world(s, notes);
   for (int frame = 0; frame < 3; ++frame) world.step(1.0 / 30.0);
@@ -29,11 +29,12 @@ sim::World flying_ball(int level) {
 }
 
 // One BDF2 step (ratio 1: h is the last step's, so vbd takes it whole) per iteration from the same state.
-// Args: {level, affine correction 1/0}.
+// Args: {level, affine correction 1/0, threads}; CPU time is summed over the threads, so compare wall time (real_time).
 void BM_VbdSweep(benchmark::State& st) {
   const int level = static_cast<int>(st.range(0));
   const bool affine = st.range(1) == 1;
-  sim::World world = flying_ball(level);
+  const int threads = static_cast<int>(st.range(2));
+  sim::World world = flying_ball(level, threads);
   const sim::State start = world.state;
   const double h = start.carry.previous_dt_s;
   sim::VertexBlockDescent vbd(kSweeps, affine);
@@ -47,7 +48,8 @@ void BM_VbdSweep(benchmark::State& st) {
   }
   const auto vertices = static_cast<double>(state.x.size());
   const double vertex_sweeps = vertices * kSweeps * static_cast<double>(vbd.statistics().steps);
-  st.SetLabel(std::string(affine ? "with" : "without") + " affine correction, h " + std::to_string(h) + " s");
+  st.SetLabel(std::string(affine ? "with" : "without") + " affine correction, " + std::to_string(threads) +
+              " thread(s), h " + std::to_string(h) + " s");
   st.counters["vertices"] = vertices;
   st.counters["steps_per_call"] = static_cast<double>(vbd.statistics().steps) / static_cast<double>(st.iterations());
   st.counters["ns_per_vertex_sweep"] =
@@ -60,6 +62,6 @@ void BM_VbdSweep(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(BM_VbdSweep)->ArgsProduct({{3, 5}, {1, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VbdSweep)->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

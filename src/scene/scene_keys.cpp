@@ -205,7 +205,10 @@ struct Table {
         key("tolerance", {positive()}, "m",
             "rk45 only: per-step error bound, absolute and relative, on positions and velocities.", 1e-6),
         key("threads", {integer(0, 256)}, "",
-            "Threads for the force passes of large bodies; 0: one per core. Results do not depend on it.", 0),
+            "Threads for the force passes of large bodies and for vbd's sweeps and coarse corrections; 0: one per "
+            "core. "
+            "Results do not depend on it.",
+            0),
     };
   }
 

@@ -57,6 +57,8 @@ class Dynamics {
   Dynamics(const Model& model, ForceScratch& scratch);
 
   const Model& model() const { return model_; }
+  // The workspace's threads (solver.threads, at most kMostForceThreads), for integrators that split their own loops.
+  PartRunner& runner() const { return *scratch_.runner; }
 
   // f_i(x, v) for every vertex of `state` [N]; `force` is resized here.
   void forces(const State& state, std::vector<Vec3>& force);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/step/chunked_sum.hpp"
+
 namespace sim {
 
 void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
@@ -87,6 +89,19 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
     const Vec3 a = x[f[0]] - origin, b = x[f[1]] - origin, c = x[f[2]] - origin;
     six_volume += a.dot(b.cross(c));
   }
+  return six_volume / 6.0;
+}
+
+double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                       std::vector<double>& partials) {
+  const Vec3 origin = x[0];
+  const double six_volume =
+      chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
+        for (std::size_t f = first; f < last; ++f) {
+          const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
+          part += a.dot(b.cross(c));
+        }
+      });
   return six_volume / 6.0;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/vec.hpp"
 #include "sim/model/body.hpp"
+#include "sim/step/part_runner.hpp"
 
 namespace sim {
 
@@ -33,6 +34,10 @@ void add_spring_dampers(const DistanceConstraints& constraints, std::span<const 
 // Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);
+// The same sum in chunks of faces on runner's threads (none: in turn), added in chunk order: the same bits on any
+// number of threads, not the same bits as the one-pass sum. `partials`: scratch.
+double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                       std::vector<double>& partials);
 
 // ∂V/∂x_i = Σ_{f ∋ i} A_f n̂_f / 3 for every vertex [m²] (sized here): the reference form that intent and the
 // stability estimate use. The gas's face pass below computes the same gradient fused with the volume, as

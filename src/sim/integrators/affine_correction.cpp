@@ -5,6 +5,7 @@
 
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
+#include "sim/step/chunked_sum.hpp"
 
 namespace sim {
 namespace {
@@ -23,6 +24,13 @@ struct CoarseMoments {
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();                         // Σ w r rᵀ + Σ_e T d dᵀ
   Eigen::Matrix<double, 6, 6> along = Eigen::Matrix<double, 6, 6>::Zero();  // Σ (α/|d|²) p pᵀ (upper triangle)
 
+  CoarseMoments& operator+=(const CoarseMoments& other) {
+    mass += other.mass;
+    first += other.first;
+    second += other.second;
+    along += other.along;
+    return *this;
+  }
   void add_inertia(double w, const Vec3& r) {
     mass += w;
     first += w * r;
@@ -96,51 +104,82 @@ Vec3 affine_motion(const Vector12& q, const Vec3& r) {
 
 }  // namespace
 
-AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
-                           bool assemble) {
-  const std::size_t n = x.size();
-  Vec3 centre = Vec3::Zero();
-  double mass = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    centre += s.mass_kg[i] * x[i];
-    mass += s.mass_kg[i];
+// Σ m_i x_i and Σ m_i over a range of vertices.
+struct MassSums {
+  Vec3 moment = Vec3::Zero();  // [kg m]
+  double mass = 0.0;           // [kg]
+  MassSums& operator+=(const MassSums& other) {
+    moment += other.moment;
+    mass += other.mass;
+    return *this;
   }
-  centre /= mass;
-  Matrix12 K = Matrix12::Zero();
-  Vector12 G = Vector12::Zero();
+};
+
+// A range's part of the coarse system: its gradient, its moments and the contact blocks spread into K directly.
+struct CoarseSums {
+  Vector12 gradient = Vector12::Zero();
+  Matrix12 contact_blocks = Matrix12::Zero();
   CoarseMoments moments;
-  // Vertices: inertia, floor, colliders and contacts with bodies.
-  for (std::size_t i = 0; i < n; ++i) {
+  CoarseSums& operator+=(const CoarseSums& other) {
+    gradient += other.gradient;
+    contact_blocks += other.contact_blocks;
+    moments += other.moments;
+    return *this;
+  }
+};
+
+AffineScratch::AffineScratch() = default;
+AffineScratch::~AffineScratch() = default;
+AffineScratch::AffineScratch(AffineScratch&&) noexcept = default;
+AffineScratch& AffineScratch::operator=(AffineScratch&&) noexcept = default;
+
+namespace {
+
+Vec3 centre_of_mass(const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch) {
+  const MassSums sums = chunked_sum(s.runner, x.size(), MassSums{}, scratch.mass_sums,
+                                    [&](std::size_t first, std::size_t last, MassSums& part) {
+                                      for (std::size_t i = first; i < last; ++i) {
+                                        part.moment += s.mass_kg[i] * x[i];
+                                        part.mass += s.mass_kg[i];
+                                      }
+                                    });
+  return sums.moment / sums.mass;
+}
+
+// Vertices [first, last): inertia, floor, colliders and contacts with bodies.
+void add_vertex_terms(const BodySolve& s, std::span<const Vec3> x, const Vec3& centre, bool assemble, std::size_t first,
+                      std::size_t last, CoarseSums& sums) {
+  for (std::size_t i = first; i < last; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
-    if (assemble) moments.add_inertia(m * s.inverse_h2, r);
+    if (assemble) sums.moments.add_inertia(m * s.inverse_h2, r);
     Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
     if (s.floor && x[i].y() < s.floor->height_m) {
       Block3 hessian;
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      if (assemble) add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, sums.contact_blocks);
     }
     for (const SmoothCollider& collider : s.colliders) {
       Block3 hessian;
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      if (assemble) add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, sums.contact_blocks);
     }
     if (s.contacts) {  // each vertex's own block c_j² K (a self-contact's cross terms left out: still a descent)
       Block3 hessian;
       s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, hessian);
-      if (assemble) add_block(hessian, r, K);
+      if (assemble) add_block(hessian, r, sums.contact_blocks);
     }
-    add_gradient(gradient, r, G);
+    add_gradient(gradient, r, sums.gradient);
   }
-  // Constraints: (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part.
-  // Each edge's length, inverse and rate are kept for the line search (MotionScratch::edges_lagged).
+}
+
+// Constraints [first, last): (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part. Each
+// edge's length, inverse and rate are kept for the line search (MotionScratch::edges_lagged).
+void add_constraint_terms(const Body& body, const BodySolve& s, std::span<const Vec3> x, bool assemble,
+                          std::size_t first, std::size_t last, MotionScratch& search, CoarseSums& sums) {
   const DistanceConstraints& constraints = body.constraints;
   const double inverse_h = 1.0 / s.h_hat;
-  MotionScratch& search = scratch.search;
-  search.edge_length_m.resize(constraints.size());
-  search.edge_inverse_length.resize(constraints.size());
-  search.edge_rate_m.resize(constraints.size());
-  for (std::size_t e = 0; e < constraints.size(); ++e) {
+  for (std::size_t e = first; e < last; ++e) {
     const auto [i, j] = constraints.ends[e];
     const Vec3 d = x[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(j)];
     const double length = d.norm();
@@ -158,19 +197,44 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
     search.edge_rate_m[e] = rate;
     const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
     for (int row = 0; row < 3; ++row) {
-      for (int a = 0; a < 3; ++a) G(3 * row + a) += f[row] * d[a];
+      for (int a = 0; a < 3; ++a) sums.gradient(3 * row + a) += f[row] * d[a];
     }
     if (!assemble) continue;
     const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] * inverse_length);
     const double along = k + c_over_h - transverse;
-    moments.add_edge(transverse, along * inverse_length * inverse_length, d);
+    sums.moments.add_edge(transverse, along * inverse_length * inverse_length, d);
   }
-  if (assemble) moments.spread_into(K);
+}
+
+}  // namespace
+
+AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
+                           bool assemble) {
+  const Vec3 centre = centre_of_mass(s, x, scratch);
+  CoarseSums sums = chunked_sum(s.runner, x.size(), CoarseSums{}, scratch.sums,
+                                [&](std::size_t first, std::size_t last, CoarseSums& part) {
+                                  add_vertex_terms(s, x, centre, assemble, first, last, part);
+                                });
+  MotionScratch& search = scratch.search;
+  const std::size_t edges = body.constraints.size();
+  search.edge_length_m.resize(edges);
+  search.edge_inverse_length.resize(edges);
+  search.edge_rate_m.resize(edges);
+  sums += chunked_sum(s.runner, edges, CoarseSums{}, scratch.sums,
+                      [&](std::size_t first, std::size_t last, CoarseSums& part) {
+                        add_constraint_terms(body, s, x, assemble, first, last, search, part);
+                      });
+  Matrix12 K = Matrix12::Zero();
+  Vector12 G = sums.gradient;
+  if (assemble) {
+    K = sums.contact_blocks;
+    sums.moments.spread_into(K);
+  }
   // Gas: ∇E = −P ∇V, and the rank-one part of its curvature, nRT/V² (Bᵀ∇V)(Bᵀ∇V)ᵀ. For a closed surface
   // V(x + A (x − c) + t) = det(I + A) V(x), so Bᵀ∇V = V vec(I): V on A's diagonal, 0 on t.
   double volume = 0.0;
   if (s.gas) {
-    volume = enclosed_volume(body.topology.faces, x);
+    volume = enclosed_volume(body.topology.faces, x, s.runner, scratch.volume_sums);
     static constexpr int kDiagonal[3] = {0, 4, 8};  // A_aa in q
     for (const int a : kDiagonal) {
       G(a) -= s.gas->pressure(volume) * volume;
@@ -183,9 +247,12 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
   return AffineSystem{K, G, centre, volume};
 }
 
-void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centre, MotionScratch& search) {
+void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centre, MotionScratch& search,
+                   PartRunner* runner) {
   search.motion.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) search.motion[i] = affine_motion(q, x[i] - centre);
+  chunked_for(runner, x.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) search.motion[i] = affine_motion(q, x[i] - centre);
+  });
   search.linear_part = (Eigen::Matrix3d() << q(0), q(1), q(2), q(3), q(4), q(5), q(6), q(7), q(8)).finished();
 }
 
@@ -195,7 +262,7 @@ bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, 
   const Vector12 q = scratch.factor.solve(-system.gradient);
   const double slope = system.gradient.dot(q);
   if (!(slope < 0.0)) return false;
-  affine_motion(q, x, system.centre, scratch.search);
+  affine_motion(q, x, system.centre, scratch.search, s.runner);
   return search_along_motion(body, s, x, system.volume, slope, scratch.search);
 }
 

@@ -21,9 +21,18 @@ namespace sim {
 // (Bᵀ H B) q = −Bᵀ ∇E with the sweeps' clamped, lagged H (Bᵀ H B is positive definite: its inertia part alone is),
 // then searches α on E's change along B q as a vertex does (sim/integrators/motion_search.hpp).
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
+struct CoarseSums;  // a chunk's part of the assembly (affine_correction.cpp)
+struct MassSums;    // a chunk's part of the centre of mass
 struct AffineScratch {
+  AffineScratch();
+  ~AffineScratch();
+  AffineScratch(AffineScratch&&) noexcept;
+  AffineScratch& operator=(AffineScratch&&) noexcept;
   MotionScratch search;  // B q per vertex [m], the line search's buffers, and V after the call
   Eigen::LDLT<Eigen::Matrix<double, 12, 12>> factor;  // of Bᵀ H B, as the last assembly left it
+  std::vector<CoarseSums> sums;                       // the assembly's partial sums, per chunk
+  std::vector<MassSums> mass_sums;                    // the centre of mass's, per chunk
+  std::vector<double> volume_sums;                    // the volume's, per chunk
 };
 
 // One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved. `assemble`:
@@ -47,6 +56,6 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
                            bool assemble = true);
 // B q: the motion A (x_i − c) + t of every vertex into search.motion, and A into search.linear_part.
 void affine_motion(const Eigen::Matrix<double, 12, 1>& q, std::span<const Vec3> x, const Vec3& centre,
-                   MotionScratch& search);
+                   MotionScratch& search, PartRunner* runner = nullptr);
 
 }  // namespace sim

@@ -3,6 +3,7 @@
 
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
+#include "sim/step/chunked_sum.hpp"
 
 namespace sim {
 namespace {
@@ -10,22 +11,23 @@ namespace {
 // The floor's and the smooth colliders' lags of every vertex at x, as the vertex's own terms take them.
 void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
   const std::size_t n = x.size();
-  Vec3 unused_gradient = Vec3::Zero();
-  Block3 unused_hessian;
-  if (s.floor) {
-    scratch.floor_lags.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      scratch.floor_lags[i] =
-          add_floor_terms(*s.floor, s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
-    }
-  }
+  if (s.floor) scratch.floor_lags.resize(n);
   scratch.collider_lags.resize(s.colliders.size() * n);
-  for (std::size_t c = 0; c < s.colliders.size(); ++c) {
-    for (std::size_t i = 0; i < n; ++i) {
-      scratch.collider_lags[c * n + i] =
-          add_collider_terms(s.colliders[c], s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+  if (!s.floor && s.colliders.empty()) return;
+  chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
+    Vec3 unused_gradient = Vec3::Zero();
+    Block3 unused_hessian;
+    for (std::size_t i = first; i < last; ++i) {
+      if (s.floor) {
+        scratch.floor_lags[i] =
+            add_floor_terms(*s.floor, s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+      }
+      for (std::size_t c = 0; c < s.colliders.size(); ++c) {
+        scratch.collider_lags[c * n + i] =
+            add_collider_terms(s.colliders[c], s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
+      }
     }
-  }
+  });
 }
 
 // Each constraint's length, its inverse and its ĥ × approach speed at x.
@@ -34,15 +36,17 @@ void take_edge_lags(const Body& body, const BodySolve& s, std::span<const Vec3> 
   scratch.edge_length_m.resize(constraints.size());
   scratch.edge_inverse_length.resize(constraints.size());
   scratch.edge_rate_m.resize(constraints.size());
-  for (std::size_t e = 0; e < constraints.size(); ++e) {
-    const auto [i, j] = constraints.ends[e];
-    const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
-    const Vec3 d = x[vi] - x[vj];
-    const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
-    scratch.edge_length_m[e] = length;
-    scratch.edge_inverse_length[e] = inverse_length;
-    scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
-  }
+  chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t e = first; e < last; ++e) {
+      const auto [i, j] = constraints.ends[e];
+      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+      const Vec3 d = x[vi] - x[vj];
+      const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
+      scratch.edge_length_m[e] = length;
+      scratch.edge_inverse_length[e] = inverse_length;
+      scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
+    }
+  });
 }
 
 // det(I + M) − 1 without the cancellation of forming det(I + M) where M is small: tr M + ½(tr² M − tr M²) + det M.
@@ -52,21 +56,24 @@ double determinant_change(const Eigen::Matrix3d& M) {
 }
 
 // V(x + α motion) − V(x) [m³].
-double volume_change(const Body& body, std::span<const Vec3> x, double volume, double alpha, MotionScratch& scratch) {
+double volume_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
+                     MotionScratch& scratch) {
   if (scratch.linear_part) return volume * determinant_change(alpha * *scratch.linear_part);
   std::vector<Vec3>& trial = scratch.trial;
   trial.resize(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) trial[i] = x[i] + alpha * scratch.motion[i];
-  return enclosed_volume(body.topology.faces, trial) - volume;
+  chunked_for(s.runner, x.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) trial[i] = x[i] + alpha * scratch.motion[i];
+  });
+  return enclosed_volume(body.topology.faces, trial, s.runner, scratch.volume_sums) - volume;
 }
 
-// E(x + α motion) − E(x) [J], with the lags in scratch; `volume_step`: V's change [m³].
-double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
-                     double volume_step, const MotionScratch& scratch) {
+// The vertices' part of E's change along α motion (inertia, floor, colliders) over [first, last) [J].
+double vertex_energy_changes(const BodySolve& s, std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
+                             std::size_t first, std::size_t last) {
   const std::vector<Vec3>& motion = scratch.motion;
   const std::size_t n = x.size();
   double change = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     const Vec3 step = alpha * motion[i];
     const double m = s.mass_kg[i];
     change += 0.5 * m * s.inverse_h2 * step.dot(2.0 * (x[i] - s.target[i]) + step);
@@ -78,9 +85,17 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
           collider_energy_change(s.colliders[c], scratch.collider_lags[c * n + i], m, x[i], step, s.base[i], s.h_hat);
     }
   }
+  return change;
+}
+
+// The constraints' part (springs and dampers) over [first, last) [J].
+double constraint_energy_changes(const Body& body, const BodySolve& s, std::span<const Vec3> x, double alpha,
+                                 const MotionScratch& scratch, std::size_t first, std::size_t last) {
+  const std::vector<Vec3>& motion = scratch.motion;
   const DistanceConstraints& constraints = body.constraints;
   const double half_over_h = 0.5 / s.h_hat;
-  for (std::size_t e = 0; e < constraints.size(); ++e) {
+  double change = 0.0;
+  for (std::size_t e = first; e < last; ++e) {
     const double before = scratch.edge_length_m[e];
     if (before == 0.0) continue;
     const auto [i, j] = constraints.ends[e];
@@ -93,8 +108,22 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
     const double rate = scratch.edge_rate_m[e], along = relative.dot(d) * scratch.edge_inverse_length[e];
     change += half_over_h * constraints.damping_N_s_per_m[e] * along * (2.0 * rate + along);
   }
+  return change;
+}
+
+// E(x + α motion) − E(x) [J], with the lags in scratch; `volume_step`: V's change [m³].
+double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
+                     double volume_step, MotionScratch& scratch) {
+  double change =
+      chunked_sum(s.runner, x.size(), 0.0, scratch.energy_sums, [&](std::size_t first, std::size_t last, double& part) {
+        part = vertex_energy_changes(s, x, alpha, scratch, first, last);
+      });
+  change += chunked_sum(s.runner, body.constraints.size(), 0.0, scratch.energy_sums,
+                        [&](std::size_t first, std::size_t last, double& part) {
+                          part = constraint_energy_changes(body, s, x, alpha, scratch, first, last);
+                        });
   if (s.gas) change += s.gas->energy_change(volume, volume_step);
-  if (s.contacts) change += s.contacts->motion_energy_change(s.first_vertex, motion, alpha);
+  if (s.contacts) change += s.contacts->motion_energy_change(s.first_vertex, scratch.motion, alpha);
   return change;
 }
 
@@ -107,7 +136,7 @@ void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3
 
 double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
                             MotionScratch& scratch) {
-  const double volume_step = s.gas ? volume_change(body, x, volume, alpha, scratch) : 0.0;
+  const double volume_step = s.gas ? volume_change(body, s, x, volume, alpha, scratch) : 0.0;
   return energy_change(body, s, x, volume, alpha, volume_step, scratch);
 }
 
@@ -116,9 +145,11 @@ bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x
   take_motion_lags(body, s, x, scratch);  // once: they do not depend on α
   scratch.volume_after = volume;
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
-    const double volume_step = s.gas ? volume_change(body, x, volume, alpha, scratch) : 0.0;
+    const double volume_step = s.gas ? volume_change(body, s, x, volume, alpha, scratch) : 0.0;
     if (energy_change(body, s, x, volume, alpha, volume_step, scratch) <= kArmijo * alpha * slope) {
-      for (std::size_t i = 0; i < x.size(); ++i) x[i] += alpha * scratch.motion[i];
+      chunked_for(s.runner, x.size(), [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) x[i] += alpha * scratch.motion[i];
+      });
       scratch.volume_after = volume + volume_step;
       return true;
     }

@@ -23,10 +23,11 @@ struct MotionScratch {
   // set (the affine correction's gradient pass computes them anyway), else by the search.
   std::vector<double> edge_length_m, edge_inverse_length, edge_rate_m;
   bool edges_lagged = false;
-  double volume_after = 0.0;               // V where the search left x [m³]
-  std::vector<Vec3> trial;                 // x + α motion, for the gas's volume [m]
-  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
-  std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
+  double volume_after = 0.0;                     // V where the search left x [m³]
+  std::vector<Vec3> trial;                       // x + α motion, for the gas's volume [m]
+  std::vector<FloorLag> floor_lags;              // per vertex, taken at x for the whole line search
+  std::vector<ColliderLag> collider_lags;        // per smooth collider, per vertex: collider c's at [c n + i]
+  std::vector<double> energy_sums, volume_sums;  // partial sums per chunk (sim/step/chunked_sum.hpp)
 };
 
 // Moves body `body`'s positions x by α scratch.motion with the largest α of 1, ½, ¼, … (down to 1e-3) whose change of

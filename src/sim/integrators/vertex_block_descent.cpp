@@ -14,7 +14,6 @@
 namespace sim {
 namespace {
 
-constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this visit
 // A Newton step shorter than this fraction of the body's mean edge is taken without a line search: E's change is then
 // below its own round-off (about k ε l |l − L0| for a spring), so the test could only refuse a harmless move.
 constexpr double kNegligibleStep = 1e-8;
@@ -38,6 +37,8 @@ constexpr double kGrowthTolerance = 1e-2;
 // BDF2 of the contact force. Lagged once per step (at its start) two stacked balls cost 10-25 % less at 4-8 sweeps and
 // stack as well, but 1000 sweeps then leave a BDF2 residual of 168 N of 179 N (docs/notes/2026-12-05-vbd-contact.md).
 constexpr bool kLagEverySweep = true;
+// A colour's vertices go to several threads only where each gets at least this many.
+constexpr std::size_t kLeastVerticesPerThread = 256;
 
 // Whether a and b are the same step size (both made by std::ldexp of one dt).
 bool same_step(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(a, b); }
@@ -116,13 +117,13 @@ BodySolve VertexBlockDescent::body_solve(const Model& model, std::size_t b, doub
               smooth_colliders_};
   if (body.params.pressure_J != 0.0) s.gas = GasLaw{body.params.pressure_J, guarded_volume(0.0, body.rest.volume_m3)};
   s.first_vertex = body.first_vertex;
+  s.runner = runner_;
   return s;
 }
 
 void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& all_x,
                                     int first_sweep, int count) {
   const Body& body = model.bodies[b];
-  const VertexBlocks& blocks = blocks_[b];
   BodySolve s = body_solve(model, b, h_hat);
   if (contacts_.active()) s.contacts = &contacts_;
   const std::span<Vec3> x = Model::of(body, all_x);
@@ -140,9 +141,9 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
     double volume = 0.0;
     if (s.gas) {
       volume = own_affine && aggregates_ == 0 ? coarse_scratch_.search.volume_after
-                                              : enclosed_volume(body.topology.faces, x);
+                                              : enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
     }
-    for (const int i : blocks.colouring.vertices) visit_vertex(s, i, x, volume);
+    sweep_colours(s, shares_[b], x, volume);
   }
 }
 
@@ -165,31 +166,35 @@ void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std:
   }
 }
 
-void VertexBlockDescent::visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume) {
-  const auto vi = static_cast<std::size_t>(i);
-  // 1. ∇_i E and H_i at x_i.
-  const VertexTerms terms = vertex_terms(s, i, x, volume, lags_);
-  // 2. The Newton step and its line search on E's change.
-  ++statistics_.vertex_solves;
-  const Vec3 direction = -terms.hessian.solve(terms.gradient);
-  const double slope = terms.gradient.dot(direction);  // ∇E·Δ < 0
-  if (!(slope < 0.0)) return;                          // converged to round-off (or not finite): stay
-  double alpha = 1.0;
-  const bool negligible = direction.squaredNorm() <= s.negligible_step_m * s.negligible_step_m;
-  const bool sure = !negligible && sure_descent(s, terms, x[vi], volume, direction, slope);
-  statistics_.sure_steps += sure ? 1 : 0;
-  if (!negligible && !sure) {
-    for (int halving = 0;; ++halving, alpha *= 0.5) {
-      if (halving > kMostHalvings) {
-        ++statistics_.refused_moves;
-        return;
+void VertexBlockDescent::sweep_colours(const BodySolve& s, const ThreadShares& shares, std::span<Vec3> x,
+                                       double& volume) {
+  const VertexColouring& colouring = s.blocks.colouring;
+  for (int c = 0; c < colouring.colours(); ++c) {
+    const auto first = static_cast<std::size_t>(colouring.colour_start[static_cast<std::size_t>(c)]);
+    const auto last = static_cast<std::size_t>(colouring.colour_start[static_cast<std::size_t>(c) + 1]);
+    if (s.contacts == nullptr) {
+      // One part per thread, each the colour's vertices in the thread's patches of the surface (ThreadShares), where
+      // each gets at least kLeastVerticesPerThread: a hand-over costs a few microseconds.
+      const std::span<const int> colour(colouring.vertices.data() + first, last - first);
+      ColourParts parts;
+      if (shares.threads > 1 && colour.size() >= kLeastVerticesPerThread * static_cast<std::size_t>(shares.threads)) {
+        parts.slots = std::span<const int>(shares.slots.data() + first, last - first);
+        parts.bounds =
+            std::span<const int>(shares.part_start.data() + static_cast<std::size_t>(c * (shares.threads + 1)),
+                                 static_cast<std::size_t>(shares.threads + 1));
       }
-      if (vertex_energy_change(s, i, x, volume, terms, lags_, alpha * direction) <= kArmijo * alpha * slope) break;
-      ++statistics_.halvings;
+      ++statistics_.colours_at_once;
+      if (move_colour_at_once(s, colour, x, volume, *runner_, parts, colour_scratch_, statistics_)) continue;
+      ++statistics_.colours_one_by_one;
     }
+    for (std::size_t k = first; k < last; ++k) visit_vertex(s, colouring.vertices[k], x, volume);
   }
-  x[vi] += alpha * direction;
-  if (s.gas) volume += terms.volume_gradient.dot(alpha * direction);  // exact: V is affine in x_i
+}
+
+void VertexBlockDescent::visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume) {
+  const VertexMove move = vertex_move(s, i, x, volume, lags_, statistics_);
+  x[static_cast<std::size_t>(i)] += move.step;
+  volume += move.volume_change_m3;  // exact: V is affine in x_i
 }
 
 double VertexBlockDescent::impact_omega(const Model& model, const State& state, double h) const {
@@ -279,6 +284,11 @@ int previous_level(const State& state, double dt) {
 void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   const Model& model = dynamics.model();
   prepare_once(model);
+  runner_ = &dynamics.runner();
+  if (shares_.size() != blocks_.size() || (!shares_.empty() && shares_.front().threads != runner_->threads())) {
+    shares_.clear();
+    for (const VertexBlocks& blocks : blocks_) shares_.push_back(thread_shares(blocks, runner_->threads()));
+  }
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);
   const long long whole = 1LL << kDeepestLevel;  // dt in ticks of dt / 2^kDeepestLevel

@@ -13,6 +13,7 @@
 #include "sim/integrators/vertex_blocks.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/integrators/vertex_energy.hpp"
+#include "sim/integrators/vertex_moves.hpp"
 
 namespace sim {
 
@@ -33,10 +34,12 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // vertex i moves by one Newton step on E as a function of x_i alone, H_i Δ = −∇_i E, with the 3×3 block
 //   H_i = m/ĥ² I + Σ_e [k (n̂n̂ᵀ + max(0, 1 − L0/l)(I − n̂n̂ᵀ)) + (c/ĥ) n̂n̂ᵀ] + nRT g_i g_iᵀ / V² + floor terms,
 // g_i = ∂V/∂x_i = Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) / 6. V is affine in x_i, so the gas term is its exact local
-// Hessian and V is updated exactly after each move (V += g_i·Δ); a compressed spring's negative transverse
-// curvature is clamped at zero, so H_i is positive definite and Δ a descent direction. A backtracking line search
-// on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers E: no setting can make a sweep add
-// energy, whatever h. Then v' = (x' − x̃)/ĥ.
+// Hessian; a compressed spring's negative transverse curvature is clamped at zero, so H_i is positive definite and Δ a
+// descent direction. A backtracking line search on E's change (Armijo, α = 1, ½, ...) accepts only a move that lowers
+// E. A colour's vertices move at once (on solver.threads), each from V at the colour's start, and V is updated
+// exactly after the colour (V += Σ g_i·Δ_i); only the gas couples them, and a bound on that coupling refuses a joint
+// move that might raise E (vertex_moves.hpp): the colour is then visited a vertex at a time, V updated after each
+// move. So no setting can make a sweep add energy, whatever h. Then v' = (x' − x̃)/ĥ.
 // Before each sweep, corrections on coarse spaces carry what a sweep, which moves information by one ring of vertices,
 // cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
 // is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
@@ -52,13 +55,11 @@ inline constexpr double kVbdImpactPhase = 0.5;
 class VertexBlockDescent final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
-  struct Statistics {
+  struct Statistics : MoveCounts {  // MoveCounts: the local solves, searches and refusals
     long long steps = 0;
-    long long bdf2_steps = 0;     // the others were backward Euler
-    long long vertex_solves = 0;  // local Newton steps tried
-    long long sure_steps = 0;     // of those, steps taken without a line search (sure_descent)
-    long long halvings = 0;       // line-search step halvings
-    long long refused_moves = 0;  // local steps no halving made lower E: the vertex stayed
+    long long bdf2_steps = 0;          // the others were backward Euler
+    long long colours_at_once = 0;     // colours whose vertices moved at once (move_colour_at_once)
+    long long colours_one_by_one = 0;  // of those, colours its safeguard refused: then visited a vertex at a time
   };
 
   // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
@@ -95,6 +96,9 @@ class VertexBlockDescent final : public Integrator {
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count);
   // solver.iterations sweeps over every body in turn, the smooth body contacts lagged before each.
   void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
+  // One sweep over body s's vertices, colour by colour: each colour at once on the threads (move_colour_at_once)
+  // unless body contacts couple its vertices or the safeguard refuses, then one vertex at a time.
+  void sweep_colours(const BodySolve& s, const ThreadShares& shares, std::span<Vec3> x, double& volume);
   // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
   void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
@@ -107,6 +111,7 @@ class VertexBlockDescent final : public Integrator {
   std::size_t coarse_level_body_ = 0;             // the body whose matrix coarse_level_scratch_ holds
   std::size_t affine_body_ = 0;                   // the body whose affine matrix coarse_scratch_ holds
   std::vector<VertexBlocks> blocks_;              // per body
+  std::vector<ThreadShares> shares_;              // per body, for the runner's threads
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
   VertexContacts contacts_;                       // the smooth contact between bodies
@@ -117,6 +122,9 @@ class VertexBlockDescent final : public Integrator {
   std::vector<Vec3> base_;     // x̃ per vertex [m]
   std::vector<Vec3> start_x_, start_v_;  // x_n, v_n (then the next step's history)
   ConstraintLags lags_;                  // scratch: one vertex's constraints as its visit found them
+  ColourScratch colour_scratch_;         // scratch of the colours moved at once
+  PartRunner* runner_ = nullptr;         // the workspace's threads, set by step()
+  std::vector<double> volume_sums_;      // scratch: the volume's partial sums
   Statistics statistics_;
 };
 

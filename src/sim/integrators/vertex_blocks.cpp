@@ -2,6 +2,7 @@
 #include "sim/integrators/vertex_blocks.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace sim {
 namespace {
@@ -71,7 +72,84 @@ void find_face_slots(VertexBlocks& blocks) {
   }
 }
 
+// Breadth-first distances (in edges) from the seeds at once over the constraint rows; `nearest`, where given, gets
+// each vertex's seed (the first seed to reach it). Vertices no seed reaches keep −1.
+std::vector<int> distances_from(const VertexBlocks& blocks, std::span<const int> seeds, std::vector<int>* nearest) {
+  const std::size_t n = blocks.constraint_start.size() - 1;
+  std::vector<int> distance(n, -1), queue;
+  queue.reserve(n);
+  if (nearest != nullptr) nearest->assign(n, -1);
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const auto seed = static_cast<std::size_t>(seeds[k]);
+    if (distance[seed] >= 0) continue;
+    distance[seed] = 0;
+    if (nearest != nullptr) (*nearest)[seed] = static_cast<int>(k);
+    queue.push_back(seeds[k]);
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const auto i = static_cast<std::size_t>(queue[head]);
+    for (int e = blocks.constraint_start[i]; e < blocks.constraint_start[i + 1]; ++e) {
+      const auto j = static_cast<std::size_t>(blocks.other_end[static_cast<std::size_t>(e)]);
+      if (distance[j] >= 0) continue;
+      distance[j] = distance[i] + 1;
+      if (nearest != nullptr) (*nearest)[j] = (*nearest)[i];
+      queue.push_back(static_cast<int>(j));
+    }
+  }
+  return distance;
+}
+
+// kSurfacePatches seeds by farthest-point sampling (each the vertex farthest from those before, lowest index on ties;
+// an unreached vertex counts as farthest, so every piece of a body gets a seed), and each vertex's nearest seed.
+std::vector<int> surface_patches(const VertexBlocks& blocks) {
+  const std::size_t n = blocks.constraint_start.size() - 1;
+  std::vector<int> seeds, patch;
+  if (n == 0) return patch;
+  seeds.push_back(0);
+  std::vector<int> distance = distances_from(blocks, seeds, nullptr);
+  while (seeds.size() < static_cast<std::size_t>(kSurfacePatches) && seeds.size() < n) {
+    std::size_t farthest = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      const bool unreached = distance[i] < 0, best_unreached = distance[farthest] < 0;
+      if (best_unreached) break;
+      if (unreached || distance[i] > distance[farthest]) farthest = i;
+    }
+    if (distance[farthest] == 0) break;  // every vertex is a seed's own
+    seeds.push_back(static_cast<int>(farthest));
+    const std::vector<int> from_new = distances_from(blocks, std::span<const int>(&seeds.back(), 1), nullptr);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (from_new[i] >= 0 && (distance[i] < 0 || from_new[i] < distance[i])) distance[i] = from_new[i];
+    }
+  }
+  distances_from(blocks, seeds, &patch);
+  return patch;
+}
+
 }  // namespace
+
+ThreadShares thread_shares(const VertexBlocks& blocks, int threads) {
+  const VertexColouring& colouring = blocks.colouring;
+  ThreadShares shares;
+  shares.threads = threads;
+  shares.slots.resize(colouring.vertices.size());
+  shares.part_start.assign(static_cast<std::size_t>(colouring.colours() * (threads + 1)), 0);
+  for (int c = 0; c < colouring.colours(); ++c) {
+    const int first = colouring.colour_start[static_cast<std::size_t>(c)];
+    const int size = colouring.colour_start[static_cast<std::size_t>(c) + 1] - first;
+    const auto thread_of = [&](int slot) {
+      const auto vertex = static_cast<std::size_t>(colouring.vertices[static_cast<std::size_t>(first + slot)]);
+      return std::max(blocks.surface_patch[vertex], 0) % threads;
+    };
+    int* starts = &shares.part_start[static_cast<std::size_t>(c * (threads + 1))];
+    for (int slot = 0; slot < size; ++slot) ++starts[thread_of(slot) + 1];
+    for (int t = 0; t < threads; ++t) starts[t + 1] += starts[t];
+    std::vector<int> next(starts, starts + threads);
+    for (int slot = 0; slot < size; ++slot) {
+      shares.slots[static_cast<std::size_t>(first + next[static_cast<std::size_t>(thread_of(slot))]++)] = slot;
+    }
+  }
+  return shares;
+}
 
 VertexBlocks vertex_blocks(const Body& body) {
   VertexBlocks blocks;
@@ -79,6 +157,7 @@ VertexBlocks vertex_blocks(const Body& body) {
   lay_out_constraints(body.constraints, body.vertex_count, blocks);
   lay_out_faces(body.topology.faces, body.vertex_count, blocks);
   find_face_slots(blocks);
+  blocks.surface_patch = surface_patches(blocks);
   return blocks;
 }
 

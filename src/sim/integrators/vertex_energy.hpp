@@ -13,6 +13,7 @@
 #include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
+#include "sim/step/part_runner.hpp"
 
 namespace sim {
 
@@ -99,6 +100,9 @@ struct BodySolve {
   // The smooth contact between bodies (sim/integrators/vertex_contacts.hpp), lagged for this sweep; none without.
   const VertexContacts* contacts = nullptr;
   int first_vertex = 0;  // the body's first vertex in the model (the contacts' vertices are the model's)
+  // Threads for the whole-body loops (the coarse corrections' sums and searches, sim/step/chunked_sum.hpp); none: the
+  // caller's. The result is the same bits either way.
+  PartRunner* runner = nullptr;
 };
 
 // The smooth floor's terms of one vertex, with the dashpot's weight w and friction's normal force N lagged at the

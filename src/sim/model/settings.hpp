@@ -165,8 +165,8 @@ struct Solver {
                             // State::retry_substeps)
   double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
                             // and velocities [m/s]
-  int threads = 0;          // threads for the force passes of large bodies; 0: one per core. Results do not depend
-                            // on it (sim::kParallelMinVertices)
+  int threads = 0;          // threads for the force passes of large bodies (sim::kParallelMinVertices) and vbd's
+                            // sweeps and coarse corrections; 0: one per core. Results do not depend on it
 };
 
 }  // namespace sim

@@ -1,0 +1,131 @@
+// One vertex's Newton step with its line search, and a colour's steps taken at once with their joint safeguard.
+#include "sim/integrators/vertex_moves.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace sim {
+namespace {
+
+constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this visit
+
+}  // namespace
+
+MoveCounts& MoveCounts::operator+=(const MoveCounts& other) {
+  vertex_solves += other.vertex_solves;
+  sure_steps += other.sure_steps;
+  halvings += other.halvings;
+  refused_moves += other.refused_moves;
+  return *this;
+}
+
+VertexMove vertex_move(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags,
+                       MoveCounts& counts) {
+  const auto vi = static_cast<std::size_t>(i);
+  // 1. ∇_i E and H_i at x_i.
+  const VertexTerms terms = vertex_terms(s, i, x, volume, lags);
+  // 2. The Newton step and its line search on E's change.
+  ++counts.vertex_solves;
+  const Vec3 direction = -terms.hessian.solve(terms.gradient);
+  const double slope = terms.gradient.dot(direction);  // ∇E·Δ < 0
+  if (!(slope < 0.0)) return {};                       // converged to round-off (or not finite): stay
+  VertexMove move;
+  double alpha = 1.0;
+  const bool negligible = direction.squaredNorm() <= s.negligible_step_m * s.negligible_step_m;
+  const bool sure = !negligible && sure_descent(s, terms, x[vi], volume, direction, slope);
+  counts.sure_steps += sure ? 1 : 0;
+  if (sure) move.energy_bound_J = 0.25 * slope;
+  if (!negligible && !sure) {
+    for (int halving = 0;; ++halving, alpha *= 0.5) {
+      if (halving > kMostHalvings) {
+        ++counts.refused_moves;
+        return {};
+      }
+      const double change = vertex_energy_change(s, i, x, volume, terms, lags, alpha * direction);
+      if (change <= kArmijo * alpha * slope) {
+        move.energy_bound_J = change;
+        break;
+      }
+      ++counts.halvings;
+    }
+  }
+  move.step = alpha * direction;
+  if (s.gas) move.volume_change_m3 = terms.volume_gradient.dot(move.step);
+  return move;
+}
+
+namespace {
+
+void size_scratch(const BodySolve& s, std::size_t vertices, int parts, ColourScratch& scratch) {
+  if (scratch.lags.size() < static_cast<std::size_t>(parts)) scratch.lags.resize(static_cast<std::size_t>(parts));
+  for (ConstraintLags& lags : scratch.lags) {
+    if (lags.offset.size() < static_cast<std::size_t>(s.blocks.most_constraints)) {
+      lags.resize(static_cast<std::size_t>(s.blocks.most_constraints));
+    }
+    if (lags.colliders.size() < s.colliders.size()) lags.colliders.resize(s.colliders.size());
+  }
+  scratch.counts.assign(static_cast<std::size_t>(parts), MoveCounts{});
+  if (scratch.start.size() < vertices) {
+    scratch.start.resize(vertices);
+    scratch.volume_change.resize(vertices);
+    scratch.energy_bound.resize(vertices);
+  }
+}
+
+// R(S) = E_gas(V + S) − E_gas(V) − E_gas'(V) S ≥ 0 and the round-off of computing it (E_gas' = −P) [J].
+struct GasCoupling {
+  double excess_J = 0.0;
+  double round_off_J = 0.0;
+};
+GasCoupling gas_coupling(const GasLaw& gas, double volume, double volume_step) {
+  const double pressure = gas.pressure(volume);
+  return {gas.energy_change(volume, volume_step) + pressure * volume_step,
+          8.0 * std::numeric_limits<double>::epsilon() * pressure * std::abs(volume_step)};
+}
+
+}  // namespace
+
+bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::span<Vec3> x, double& volume,
+                         PartRunner& runner, const ColourParts& parts, ColourScratch& scratch, MoveCounts& counts) {
+  const std::size_t n = colour.size();
+  const int part_count = parts.bounds.empty() ? 1 : static_cast<int>(parts.bounds.size()) - 1;
+  size_scratch(s, n, part_count, scratch);
+  const double start_volume = volume;
+  runner.run(part_count, [&](int part) {
+    ConstraintLags& lags = scratch.lags[static_cast<std::size_t>(part)];
+    MoveCounts part_counts;  // on this thread's stack: the parts' counts share cache lines
+    const auto move_slot = [&](std::size_t slot) {
+      const auto vi = static_cast<std::size_t>(colour[slot]);
+      scratch.start[slot] = x[vi];
+      const VertexMove move = vertex_move(s, colour[slot], x, start_volume, lags, part_counts);
+      x[vi] += move.step;
+      scratch.volume_change[slot] = move.volume_change_m3;
+      scratch.energy_bound[slot] = move.energy_bound_J;
+    };
+    if (parts.bounds.empty()) {
+      for (std::size_t slot = 0; slot < n; ++slot) move_slot(slot);
+    } else {
+      for (int k = parts.bounds[static_cast<std::size_t>(part)]; k < parts.bounds[static_cast<std::size_t>(part) + 1];
+           ++k) {
+        move_slot(static_cast<std::size_t>(parts.slots[static_cast<std::size_t>(k)]));
+      }
+    }
+    scratch.counts[static_cast<std::size_t>(part)] = part_counts;
+  });
+  for (const MoveCounts& part_counts : scratch.counts) counts += part_counts;
+  if (!s.gas) return true;
+  double volume_step = 0.0, bound = 0.0;  // S [m³], Σ bound_i [J], in the colour's order
+  for (std::size_t slot = 0; slot < n; ++slot) {
+    volume_step += scratch.volume_change[slot];
+    bound += scratch.energy_bound[slot];
+  }
+  const GasCoupling coupling = gas_coupling(*s.gas, start_volume, volume_step);
+  if (bound + coupling.excess_J > coupling.round_off_J) {  // the joint move may raise E: undo it
+    for (std::size_t slot = 0; slot < n; ++slot) x[static_cast<std::size_t>(colour[slot])] = scratch.start[slot];
+    return false;
+  }
+  volume = start_volume + volume_step;
+  return true;
+}
+
+}  // namespace sim

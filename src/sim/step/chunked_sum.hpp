@@ -1,0 +1,55 @@
+// Loops over an index range split into chunks whose number depends only on the range's length: the chunks run on a
+// PartRunner's threads (or in turn without one) and their partial sums are added in chunk order, so that a sum has the
+// same bits on any number of threads.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "sim/step/part_runner.hpp"
+
+namespace sim {
+
+inline constexpr std::size_t kLeastChunk = 512;  // indices per chunk at least (a hand-over costs a few microseconds)
+inline constexpr int kMostChunks = 8;            // chunks at most, so that 2 to 8 threads share them evenly
+
+inline int chunk_count(std::size_t n) {
+  return static_cast<int>(std::clamp<std::size_t>(n / kLeastChunk, 1, kMostChunks));
+}
+
+// Calls visit(c, first, last) for every chunk c, [first, last) of [0, n), on runner's threads where runner is set.
+template <class Visit>
+void for_each_chunk(PartRunner* runner, std::size_t n, Visit&& visit) {
+  const auto chunks = static_cast<std::size_t>(chunk_count(n));
+  auto body = [&](int part) {
+    const auto c = static_cast<std::size_t>(part);
+    visit(c, n * c / chunks, n * (c + 1) / chunks);
+  };
+  if (runner != nullptr) {
+    runner->run(static_cast<int>(chunks), body);
+  } else {
+    for (std::size_t c = 0; c < chunks; ++c) body(static_cast<int>(c));
+  }
+}
+
+// Calls visit(first, last) for every chunk [first, last) of [0, n), on runner's threads where runner is set.
+template <class Visit>
+void chunked_for(PartRunner* runner, std::size_t n, Visit&& visit) {
+  for_each_chunk(runner, n, [&](std::size_t, std::size_t first, std::size_t last) { visit(first, last); });
+}
+
+// Σ over the chunks of visit(first, last, partial), each partial starting at `zero`, added in chunk order; `partials`
+// is scratch (no allocation once its capacity settles).
+template <class Partial, class Visit>
+Partial chunked_sum(PartRunner* runner, std::size_t n, const Partial& zero, std::vector<Partial>& partials,
+                    Visit&& visit) {
+  partials.assign(static_cast<std::size_t>(chunk_count(n)), zero);
+  for_each_chunk(runner, n,
+                 [&](std::size_t c, std::size_t first, std::size_t last) { visit(first, last, partials[c]); });
+  Partial total = partials[0];
+  for (std::size_t c = 1; c < partials.size(); ++c) total += partials[c];
+  return total;
+}
+
+}  // namespace sim
