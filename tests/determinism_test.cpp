@@ -97,6 +97,7 @@ sim::World landing_ball(int threads, int coarse_cells) {
   s.bodies.at(0).velocity_m_per_s = softbody::Vec3(2.0, -3.0, 0.0);
   s.solver.integrator = sim::IntegratorKind::Vbd;
   s.solver.coarse_space = coarse_cells;
+  s.solver.coarse_space_auto = false;
   s.solver.threads = threads;
   std::vector<std::string> notes;
   return setup::build_world(s, notes);

@@ -50,6 +50,7 @@ TEST(SceneKeys, ParserFillsInTheStructDefaultsOfEveryObject) {
   EXPECT_EQ(s.solver.tolerance, solver.tolerance);
   EXPECT_EQ(s.solver.threads, solver.threads);
   EXPECT_EQ(s.solver.coarse_space, solver.coarse_space);
+  EXPECT_EQ(s.solver.coarse_space_auto, solver.coarse_space_auto);
 
   const sim::Floor floor;
   ASSERT_TRUE(s.floor.has_value());

@@ -12,6 +12,7 @@
 #include "sim/contact/body_collision.hpp"
 #include "sim/contact/smooth_collider.hpp"
 #include "sim/contact/smooth_contact.hpp"
+#include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/step/stability.hpp"
 
@@ -117,6 +118,33 @@ double stiffest_smooth_contact(const sim::Model& model) {
   return std::sqrt(omega2);
 }
 
+// vbd's coarse level per body (solver.coarse_space, or "auto" by the body's size) and what it cost on the bounce
+// with 128 cells: 1.8x the run without at icosphere:5 and :6, 2.7x at :4 (bench/run_vbd_levels.sh,
+// docs/notes/2026-12-05-vbd-levels.md).
+void print_vbd_coarse_level(const sim::Model& model) {
+  const sim::Solver& solver = model.solver;
+  std::string cells;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int count =
+        solver.coarse_space_auto ? sim::auto_coarse_cells(model.bodies[b].vertex_count) : solver.coarse_space;
+    if (count > 0) {
+      cells += (cells.empty() ? "" : ", ") + std::to_string(count) + " cells for body " + std::to_string(b) + " (" +
+               std::to_string(model.bodies[b].vertex_count) + " vertices)";
+    }
+  }
+  if (cells.empty()) {
+    cells = "none";
+  } else {
+    cells += "; not in the cost above (on the bounce it took 1.8x at 10,000-41,000 vertices, 2.7x at 2,562)";
+  }
+  std::string rule;
+  if (solver.coarse_space_auto) {
+    rule = " (coarse_space auto: " + std::to_string(sim::kAutoCoarseCells) + " cells for bodies of at least " +
+           std::to_string(sim::kAutoCoarseFromVertices) + " vertices)";
+  }
+  std::printf("  vbd's coarse level: %s%s\n", cells.c_str(), rule.c_str());
+}
+
 // vbd's line: the steps per frame `substeps: auto` picks and what they cost in flight; around impacts on a smooth
 // contact vbd takes smaller steps of its own, which the line names but does not price (their number depends on the
 // motion).
@@ -139,6 +167,7 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
     std::printf("; impacts add steps of at most %.2g ms while they last", 1e3 * sim::kVbdImpactPhase / omega);
   }
   std::printf("\n");
+  print_vbd_coarse_level(model);
 }
 
 struct InfoOptions {

@@ -248,7 +248,16 @@ sim::Solver read_solver(const ObjectReader& top) {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
   solver.iterations = r.integer("iterations");
-  solver.coarse_space = r.integer("coarse_space");
+  // vbd's coarse level: cells per body, or "auto" (the default; sim::auto_coarse_cells).
+  if (!r.has("coarse_space") || r.at("coarse_space").is_string()) {
+    if (r.has("coarse_space") && r.at("coarse_space").get<std::string>() != "auto") {
+      r.fail(r.child("coarse_space"), "expected a whole number 0..512 or \"auto\"", &r.at("coarse_space"));
+    }
+    solver.coarse_space_auto = true;
+  } else {
+    solver.coarse_space = r.integer("coarse_space", 0);
+    solver.coarse_space_auto = false;
+  }
   solver.retry = r.boolean("retry");
   solver.tolerance = r.number("tolerance");
   solver.threads = r.integer("threads");

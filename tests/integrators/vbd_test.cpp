@@ -28,6 +28,7 @@ sim::World vbd_world(const std::string& json_text, int sweeps, int coarse_cells 
   solver.integrator = sim::IntegratorKind::Vbd;
   solver.iterations = sweeps;
   solver.coarse_space = coarse_cells;
+  solver.coarse_space_auto = false;
   return integrator_tests::make_world(json_text, solver);
 }
 

@@ -34,6 +34,17 @@ struct CoarseSpace {
 // passes, 0.047 with 4 and 0.039 with 8, whose assembly costs about twice as much.
 inline constexpr int kCoarseSmoothingPasses = 4;
 
+// `solver.coarse_space: "auto"`: kAutoCoarseCells cells for a body of at least kAutoCoarseFromVertices vertices, none
+// below. Measured on scenes/bounce_smooth.json through the first impact, 4 sweeps
+// (docs/notes/2026-12-05-vbd-threads.md): at icosphere:5 and :6 the cells bring the centre of mass from 4.2 and 3.3 cm
+// to 0.47 and 0.17 cm and the volume at :6 from 1.7 % to 0.42 %, for 1.8x the cost; at :3 and :4 the sweeps alone are
+// within the goals (0.10 and 0.95 cm), and with cells :4 is no closer (the converged step is 2.5 cm off there).
+inline constexpr int kAutoCoarseCells = 128;
+inline constexpr int kAutoCoarseFromVertices = 5000;
+inline int auto_coarse_cells(int vertex_count) {
+  return vertex_count >= kAutoCoarseFromVertices ? kAutoCoarseCells : 0;
+}
+
 // The coarse space of a body laid out as `blocks` with `aggregates` cells (at most its vertex count) and `smoothing`
 // passes.
 CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing = kCoarseSmoothingPasses);

@@ -21,7 +21,10 @@ std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
     case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(solver.tolerance);
     case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
-    case IntegratorKind::Vbd: return std::make_unique<VertexBlockDescent>(solver.iterations, true, solver.coarse_space);
+    case IntegratorKind::Vbd:
+      return std::make_unique<VertexBlockDescent>(
+          solver.iterations, true,
+          solver.coarse_space_auto ? VertexBlockDescent::kAutoAggregates : solver.coarse_space);
   }
   return nullptr;
 }

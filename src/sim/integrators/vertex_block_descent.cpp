@@ -57,7 +57,8 @@ void VertexBlockDescent::prepare_once(const Model& model) {
   for (const Body& body : model.bodies) {
     blocks_.push_back(vertex_blocks(body));
     most_constraints = std::max(most_constraints, blocks_.back().most_constraints);
-    if (aggregates_ > 0) coarse_spaces_.push_back(smooth_coarse_space(blocks_.back(), aggregates_));
+    const int cells = aggregates_ == kAutoAggregates ? auto_coarse_cells(body.vertex_count) : aggregates_;
+    coarse_spaces_.push_back(cells > 0 ? smooth_coarse_space(blocks_.back(), cells) : CoarseSpace{});
   }
   lags_.resize(static_cast<std::size_t>(most_constraints));
   smooth_floor_.reset();
@@ -133,15 +134,16 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
       affine_correction(body, s, x, coarse_scratch_, sweep == 0 || affine_body_ != b);
       affine_body_ = b;
     }
-    if (aggregates_ > 0) {  // the matrix assembled at the step's first sweep, or where the scratch holds another body's
+    const bool coarse_level = coarse_spaces_[b].aggregates > 0;
+    if (coarse_level) {  // the matrix assembled at the step's first sweep, or where the scratch holds another body's
       coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0 || coarse_level_body_ != b, coarse_level_scratch_);
       coarse_level_body_ = b;
     }
     // V afresh each sweep (no drift): the affine correction's, where it made the last move.
     double volume = 0.0;
     if (s.gas) {
-      volume = own_affine && aggregates_ == 0 ? coarse_scratch_.search.volume_after
-                                              : enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
+      volume = own_affine && !coarse_level ? coarse_scratch_.search.volume_after
+                                           : enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
     }
     sweep_colours(s, shares_[b], x, volume);
   }

@@ -63,7 +63,8 @@ class VertexBlockDescent final : public Integrator {
   };
 
   // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
-  // (sim/integrators/coarse_space.hpp), 0 for none.
+  // (sim/integrators/coarse_space.hpp), 0 for none, kAutoAggregates for auto_coarse_cells by each body's size.
+  static constexpr int kAutoAggregates = -1;
   explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0)
       : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates) {}
   void step(Dynamics& dynamics, State& state, double dt) override;
@@ -105,8 +106,8 @@ class VertexBlockDescent final : public Integrator {
   int sweeps_ = 1;
   bool coarse_ = true;  // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;
-  int aggregates_ = 0;                      // the coarse level's cells per body (0: no coarse level)
-  std::vector<CoarseSpace> coarse_spaces_;  // per body, where aggregates_ > 0
+  int aggregates_ = 0;                      // the coarse level's cells per body (0: none; kAutoAggregates)
+  std::vector<CoarseSpace> coarse_spaces_;  // per body; aggregates 0 where it has no coarse level
   CoarseScratch coarse_level_scratch_;
   std::size_t coarse_level_body_ = 0;             // the body whose matrix coarse_level_scratch_ holds
   std::size_t affine_body_ = 0;                   // the body whose affine matrix coarse_scratch_ holds

@@ -160,13 +160,15 @@ struct Solver {
   int substeps = 0;
   bool substeps_auto = false;
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
-  int coarse_space = 0;     // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
-  bool retry = false;       // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024;
-                            // State::retry_substeps)
-  double tolerance = 1e-6;  // rk45 only: per-step error bound, absolute and relative, on positions [m]
-                            // and velocities [m/s]
-  int threads = 0;          // threads for the force passes of large bodies (sim::kParallelMinVertices) and vbd's
-                            // sweeps and coarse corrections; 0: one per core. Results do not depend on it
+  int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
+  bool coarse_space_auto = true;  // "coarse_space": "auto" (the default): each body's cells by its size
+                                  // (sim::auto_coarse_cells); false: coarse_space for every body
+  bool retry = false;             // a step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024;
+                                  // State::retry_substeps)
+  double tolerance = 1e-6;        // rk45 only: per-step error bound, absolute and relative, on positions [m]
+                                  // and velocities [m/s]
+  int threads = 0;                // threads for the force passes of large bodies (sim::kParallelMinVertices) and vbd's
+                                  // sweeps and coarse corrections; 0: one per core. Results do not depend on it
 };
 
 }  // namespace sim
