@@ -109,7 +109,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{R"({ "solver": { "substeps": 0 }, "bodies": [ { } ] })",
                  "s.json: solver.substeps: expected an integer in 1..1000000, got number 0"},
         BadInput{R"({ "solver": { "substeps": "many" }, "bodies": [ { } ] })",
-                 "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""}),
+                 "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""},
+        BadInput{R"({ "solver": { "coarse_space": "many" }, "bodies": [ { } ] })",
+                 "s.json: solver.coarse_space: expected a whole number 0..512 or \"auto\", got string \"many\""},
+        BadInput{R"({ "solver": { "coarse_space": 513 }, "bodies": [ { } ] })",
+                 "s.json: solver.coarse_space: expected an integer in 0..512, got number 513"}),
     [](const auto& param) { return "case" + std::to_string(param.index); });
 
 TEST(Scene, InvalidJsonNamesTheFile) {

@@ -170,6 +170,17 @@ TEST(VbdCoarse, CoarseLevelReducesTheResidualWhereSweepsStall) {
   EXPECT_LT(coarse.after, 0.5 * plain.after);
 }
 
+// `coarse_space: "auto"` takes 128 cells from 5000 vertices: icosphere:5 (10,242) steps exactly as with 128,
+// icosphere:4 (2,562) exactly as with none.
+TEST(VbdCoarse, AutoTakesTheCoarseLevelFromFiveThousandVertices) {
+  EXPECT_EQ(sim::auto_coarse_cells(4999), 0);
+  EXPECT_EQ(sim::auto_coarse_cells(5000), 128);
+  constexpr int kAuto = sim::VertexBlockDescent::kAutoAggregates;
+  EXPECT_EQ(one_step(5, 1.0 / 30.0, 4, kAuto).x, one_step(5, 1.0 / 30.0, 4, 128).x);
+  EXPECT_EQ(one_step(4, 1.0 / 30.0, 4, kAuto).x, one_step(4, 1.0 / 30.0, 4, 0).x);
+  EXPECT_NE(one_step(4, 1.0 / 30.0, 4, kAuto).x, one_step(4, 1.0 / 30.0, 4, 128).x);
+}
+
 // RMS |a − b| over vertices [m].
 double rms_distance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   double sum = 0.0;
