@@ -7,6 +7,7 @@
 
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
+#include "sim/step/chunked_sum.hpp"
 
 namespace sim {
 namespace {
@@ -128,11 +129,11 @@ std::pair<std::span<const int>, std::span<const double>> weights_of(const Coarse
 
 // w_i − w_j of a constraint's two ends, merged over the two ascending lists, without its zero entries (where both ends
 // have the same weight).
-void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, CoarseScratch& scratch) {
+void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, CoarseDifference& difference) {
   const auto [ai, wi] = weights_of(space, i);
   const auto [aj, wj] = weights_of(space, j);
-  scratch.difference_aggregate.clear();
-  scratch.difference_weight.clear();
+  difference.aggregate.clear();
+  difference.weight.clear();
   std::size_t p = 0, r = 0;
   while (p < ai.size() || r < aj.size()) {
     int a = 0;
@@ -148,78 +149,163 @@ void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, C
       value = wi[p++] - wj[r++];
     }
     if (value != 0.0) {
-      scratch.difference_aggregate.push_back(a);
-      scratch.difference_weight.push_back(value);
+      difference.aggregate.push_back(a);
+      difference.weight.push_back(value);
     }
   }
 }
 
-// ∇E per vertex at x into scratch.gradient (inertia, floor, colliders, contacts, springs and dampers, gas); with
-// `matrix`, also Pᵀ H P's lower triangle into scratch.matrix. Returns V(x) (0 without gas).
-double gradient_and_matrix(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
-                           bool matrix, CoarseScratch& scratch) {
-  const std::size_t n = x.size();
-  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
-  Eigen::MatrixXd& K = scratch.matrix;
-  if (matrix) K.setZero(unknowns, unknowns);
-  std::vector<Vec3>& gradient = scratch.gradient;
-  gradient.resize(n);
-  // Vertices: inertia, floor, colliders and contacts with bodies.
-  for (std::size_t i = 0; i < n; ++i) {
+// Vertices [first, last) of Pᵀ H P (inertia, floor, colliders, contacts) into part.matrix, and Pᵀ∇V into part.u.
+void add_vertex_blocks(const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x, std::size_t first,
+                       std::size_t last, CoarsePart& part) {
+  const VertexBlocks& blocks = s.blocks;
+  for (std::size_t i = first; i < last; ++i) {
     const double m = s.mass_kg[i];
-    gradient[i] = (m * s.inverse_h2) * (x[i] - s.target[i]);
+    Vec3 unused = Vec3::Zero();
     Block3 hessian;
     hessian.add_diagonal(m * s.inverse_h2);
-    if (s.floor && x[i].y() < s.floor->height_m) {
-      add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient[i], hessian);
-    }
+    if (s.floor && x[i].y() < s.floor->height_m)
+      add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused, hessian);
     for (const SmoothCollider& collider : s.colliders) {
-      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient[i], hessian);
+      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, unused, hessian);
     }
-    if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient[i], hessian);
-    if (matrix) {
-      const auto [aggregates, weights] = weights_of(space, i);
-      add_outer_blocks(K, aggregates, weights, hessian);
+    if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), unused, hessian);
+    const auto [aggregates, weights] = weights_of(space, i);
+    add_outer_blocks(part.matrix, aggregates, weights, hessian);
+    if (!s.gas) continue;
+    Vec3 six_gradient = Vec3::Zero();  // 6 ∂V/∂x_i
+    for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
+      const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+      six_gradient += (x[static_cast<std::size_t>(b)] - x[i]).cross(x[static_cast<std::size_t>(c)] - x[i]);
+    }
+    for (std::size_t p = 0; p < aggregates.size(); ++p) {
+      part.u.segment<3>(3 * aggregates[p]) += (weights[p] / 6.0) * six_gradient;
     }
   }
-  // Constraints: H_e = T I + (k + c/ĥ − T) n̂n̂ᵀ on (w_i − w_j) ⊗ (w_i − w_j).
+}
+
+// Constraints [first, last) of Pᵀ H P: H_e = T I + (k + c/ĥ − T) n̂n̂ᵀ on (w_i − w_j) ⊗ (w_i − w_j).
+void add_constraint_blocks(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                           std::size_t first, std::size_t last, CoarsePart& part) {
   const DistanceConstraints& constraints = body.constraints;
-  for (std::size_t e = 0; e < constraints.size(); ++e) {
+  for (std::size_t e = first; e < last; ++e) {
     const auto [i, j] = constraints.ends[e];
     const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
     const Vec3 d = x[vi] - x[vj];
     const double length = d.norm();
     if (length == 0.0) continue;
-    const Vec3 axis = d / length;
+    weight_difference(space, vi, vj, part.difference);
+    if (part.difference.aggregate.empty()) continue;
     const double k = constraints.stiffness_N_per_m[e], c_over_h = constraints.damping_N_s_per_m[e] / s.h_hat;
-    const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis);
-    const Vec3 f = (k * (length - constraints.rest_length_m[e]) + c_over_h * rate) * axis;
-    gradient[vi] += f;
-    gradient[vj] -= f;
-    if (!matrix) continue;
-    weight_difference(space, vi, vj, scratch);
-    if (scratch.difference_aggregate.empty()) continue;
     const double transverse = k * std::max(0.0, 1.0 - constraints.rest_length_m[e] / length);
     Block3 hessian;
     hessian.add_diagonal(transverse);
-    hessian.add_outer(k + c_over_h - transverse, axis);
-    add_outer_blocks(K, scratch.difference_aggregate, scratch.difference_weight, hessian);
+    hessian.add_outer(k + c_over_h - transverse, d / length);
+    add_outer_blocks(part.matrix, part.difference.aggregate, part.difference.weight, hessian);
   }
-  // Gas: ∇_i E = −P ∂V/∂x_i, and the rank-one part of its curvature, nRT/V² (Pᵀ∇V)(Pᵀ∇V)ᵀ.
-  if (!s.gas) return 0.0;
-  const double volume = volume_and_area_sums(body.topology.faces, x, scratch.area_sums);
-  const double pressure = s.gas->pressure(volume);
+}
+
+// The assembly's chunks of vertices and of constraints: each holds a whole matrix, which costs a pass to clear and one
+// to add, so there are few (a fixed number: the sum's bits must not depend on the threads).
+constexpr std::size_t kMatrixChunks = 2;
+
+// Pᵀ H P's lower triangle at x into scratch.matrix (V = `volume` for the gas's rank-one term), its vertices and
+// constraints in kMatrixChunks chunks each on s.runner's threads, added in chunk order.
+void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                     double volume, CoarseScratch& scratch) {
+  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
+  const std::size_t vertex_chunks = std::min<std::size_t>(kMatrixChunks, x.size());
+  const std::size_t constraint_chunks = std::min<std::size_t>(kMatrixChunks, body.constraints.size());
+  std::vector<CoarsePart>& parts = scratch.parts;
+  if (parts.size() < vertex_chunks + constraint_chunks) parts.resize(vertex_chunks + constraint_chunks);
+  for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
+    parts[c].matrix.setZero(unknowns, unknowns);
+    parts[c].u.setZero(unknowns);
+  }
+  for_each_chunk(s.runner, x.size(), static_cast<int>(vertex_chunks),
+                 [&](std::size_t c, std::size_t first, std::size_t last) {
+                   add_vertex_blocks(s, space, x, first, last, parts[c]);
+                 });
+  for_each_chunk(s.runner, body.constraints.size(), static_cast<int>(constraint_chunks),
+                 [&](std::size_t c, std::size_t first, std::size_t last) {
+                   add_constraint_blocks(body, s, space, x, first, last, parts[vertex_chunks + c]);
+                 });
+  Eigen::MatrixXd& K = scratch.matrix;
+  K.setZero(unknowns, unknowns);
   Eigen::VectorXd& u = scratch.volume_gradient;
-  if (matrix) u.setZero(unknowns);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 g = scratch.area_sums[i] / 6.0;
-    gradient[i] -= pressure * g;
-    if (!matrix) continue;
-    const auto [aggregates, weights] = weights_of(space, i);
-    for (std::size_t p = 0; p < aggregates.size(); ++p) u.segment<3>(3 * aggregates[p]) += weights[p] * g;
+  u.setZero(unknowns);
+  for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
+    K.triangularView<Eigen::Lower>() += parts[c].matrix;
+    u += parts[c].u;
   }
-  if (matrix) K.selfadjointView<Eigen::Lower>().rankUpdate(u, s.gas->stiffness(volume));
+  // The gas's rank-one part of the curvature, nRT/V² (Pᵀ∇V)(Pᵀ∇V)ᵀ.
+  if (s.gas) K.selfadjointView<Eigen::Lower>().rankUpdate(u, s.gas->stiffness(volume));
+}
+
+// ∇E per vertex at x into scratch.gradient, each vertex from its own constraint row and faces (every constraint counted
+// at both its ends), in chunks on s.runner's threads. Returns V(x) (0 without gas).
+double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
+  const VertexBlocks& blocks = s.blocks;
+  const std::size_t n = x.size();
+  const double volume = s.gas ? enclosed_volume(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
+  const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
+  const double inverse_h = 1.0 / s.h_hat;
+  scratch.gradient.resize(n);
+  chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const double m = s.mass_kg[i];
+      Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
+      Block3 unused;
+      if (s.floor && x[i].y() < s.floor->height_m) {
+        add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, unused);
+      }
+      for (const SmoothCollider& collider : s.colliders) {
+        add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, unused);
+      }
+      if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, unused);
+      for (int e = blocks.constraint_start[i]; e < blocks.constraint_start[i + 1]; ++e) {
+        const auto ve = static_cast<std::size_t>(e);
+        const auto j = static_cast<std::size_t>(blocks.other_end[ve]);
+        const Vec3 d = x[i] - x[j];
+        const double length = d.norm();
+        if (length == 0.0) continue;
+        const Vec3 axis = d / length;
+        const double rate = ((x[i] - s.base[i]) - (x[j] - s.base[j])).dot(axis);
+        gradient += (blocks.stiffness_N_per_m[ve] * (length - blocks.rest_length_m[ve]) +
+                     blocks.damping_N_s_per_m[ve] * inverse_h * rate) *
+                    axis;
+      }
+      if (s.gas) {
+        Vec3 six_gradient = Vec3::Zero();  // 6 ∂V/∂x_i
+        for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
+          const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+          six_gradient += (x[static_cast<std::size_t>(b)] - x[i]).cross(x[static_cast<std::size_t>(c)] - x[i]);
+        }
+        gradient -= gas_per_six * six_gradient;
+      }
+      scratch.gradient[i] = gradient;
+    }
+  });
   return volume;
+}
+
+// −Pᵀ ∇E into q, summed in chunks on s.runner's threads.
+void project_gradient(const BodySolve& s, const CoarseSpace& space, CoarseScratch& scratch, Eigen::VectorXd& q) {
+  const std::size_t n = scratch.gradient.size();
+  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
+  scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
+  for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
+    Eigen::VectorXd& part = scratch.projection_sums[c];
+    part.setZero(unknowns);
+    for (std::size_t i = first; i < last; ++i) {
+      const auto [aggregates, weights] = weights_of(space, i);
+      for (std::size_t p = 0; p < aggregates.size(); ++p) {
+        part.segment<3>(3 * aggregates[p]) -= weights[p] * scratch.gradient[i];
+      }
+    }
+  });
+  q = scratch.projection_sums[0];
+  for (std::size_t c = 1; c < scratch.projection_sums.size(); ++c) q += scratch.projection_sums[c];
 }
 
 }  // namespace
@@ -228,32 +314,29 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
                        bool refresh_matrix, CoarseScratch& scratch) {
   const std::size_t n = x.size();
   const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
-  const double volume = gradient_and_matrix(body, s, space, x, matrix, scratch);
+  const double volume = gradient_by_vertex(body, s, x, scratch);
   if (matrix) {
+    assemble_matrix(body, s, space, x, volume, scratch);
     scratch.factor.compute(scratch.matrix);
     scratch.factored = scratch.factor.info() == Eigen::Success;
   }
   if (!scratch.factored) return false;
   Eigen::VectorXd& q = scratch.solution;  // −Pᵀ ∇E, then q
-  q.setZero(3 * space.aggregates);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [aggregates, weights] = weights_of(space, i);
-    for (std::size_t p = 0; p < aggregates.size(); ++p) {
-      q.segment<3>(3 * aggregates[p]) -= weights[p] * scratch.gradient[i];
-    }
-  }
+  project_gradient(s, space, scratch, q);
   scratch.rhs = q;
   scratch.factor.solveInPlace(q);
   const double descent = -scratch.rhs.dot(q);  // ∇E·P q = −(−Pᵀ∇E)·q < 0
   if (!(descent < 0.0)) return false;
   std::vector<Vec3>& motion = scratch.search.motion;
   motion.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [aggregates, weights] = weights_of(space, i);
-    Vec3 sum = Vec3::Zero();
-    for (std::size_t p = 0; p < aggregates.size(); ++p) sum += weights[p] * q.segment<3>(3 * aggregates[p]);
-    motion[i] = sum;
-  }
+  chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const auto [aggregates, weights] = weights_of(space, i);
+      Vec3 sum = Vec3::Zero();
+      for (std::size_t p = 0; p < aggregates.size(); ++p) sum += weights[p] * q.segment<3>(3 * aggregates[p]);
+      motion[i] = sum;
+    }
+  });
   return search_along_motion(body, s, x, volume, descent, scratch.search);
 }
 

@@ -50,16 +50,26 @@ inline int auto_coarse_cells(int vertex_count) {
 CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing = kCoarseSmoothingPasses);
 
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
+// One constraint's w_i − w_j, sparse: its aggregates and weights.
+struct CoarseDifference {
+  std::vector<int> aggregate;
+  std::vector<double> weight;
+};
+// A chunk's part of Pᵀ H P (its lower triangle) and of Pᵀ∇V, with its own scratch.
+struct CoarsePart {
+  Eigen::MatrixXd matrix;
+  Eigen::VectorXd u;
+  CoarseDifference difference;
+};
 struct CoarseScratch {
-  std::vector<Vec3> gradient;             // ∇_i E per vertex [N]
-  std::vector<Vec3> area_sums;            // the gas's per-vertex sums 6 ∂V/∂x_i [m²]
-  std::vector<int> difference_aggregate;  // one constraint's w_i − w_j, sparse
-  std::vector<double> difference_weight;
+  std::vector<Vec3> gradient;                        // ∇_i E per vertex [N]
+  std::vector<CoarsePart> parts;                     // the assembly's chunks (vertices', then constraints')
   Eigen::MatrixXd matrix;                            // Pᵀ H P [N/m], its lower triangle
   Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> factor;  // of the matrix as last assembled
   bool factored = false;
   Eigen::VectorXd rhs, solution, volume_gradient;
-  MotionScratch search;  // P q per vertex [m], and the line search's buffers
+  std::vector<Eigen::VectorXd> projection_sums;  // −Pᵀ ∇E's partial sums, per chunk
+  MotionScratch search;                          // P q per vertex [m], and the line search's buffers
 };
 
 // One coarse Newton step with its line search on body `body`'s positions x: (Pᵀ H P) q = −Pᵀ ∇E with the sweeps'

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "sim/step/part_runner.hpp"
@@ -18,10 +19,11 @@ inline int chunk_count(std::size_t n) {
   return static_cast<int>(std::clamp<std::size_t>(n / kLeastChunk, 1, kMostChunks));
 }
 
-// Calls visit(c, first, last) for every chunk c, [first, last) of [0, n), on runner's threads where runner is set.
+// Calls visit(c, first, last) for each of `chunks` chunks c, [first, last) of [0, n), on runner's threads where runner
+// is set.
 template <class Visit>
-void for_each_chunk(PartRunner* runner, std::size_t n, Visit&& visit) {
-  const auto chunks = static_cast<std::size_t>(chunk_count(n));
+void for_each_chunk(PartRunner* runner, std::size_t n, int chunk_total, Visit&& visit) {
+  const auto chunks = static_cast<std::size_t>(chunk_total);
   auto body = [&](int part) {
     const auto c = static_cast<std::size_t>(part);
     visit(c, n * c / chunks, n * (c + 1) / chunks);
@@ -31,6 +33,12 @@ void for_each_chunk(PartRunner* runner, std::size_t n, Visit&& visit) {
   } else {
     for (std::size_t c = 0; c < chunks; ++c) body(static_cast<int>(c));
   }
+}
+
+// The same over chunk_count(n) chunks.
+template <class Visit>
+void for_each_chunk(PartRunner* runner, std::size_t n, Visit&& visit) {
+  for_each_chunk(runner, n, chunk_count(n), std::forward<Visit>(visit));
 }
 
 // Calls visit(first, last) for every chunk [first, last) of [0, n), on runner's threads where runner is set.
