@@ -1,6 +1,6 @@
-// Loops over an index range split into chunks whose number depends only on the range's length: the chunks run on a
-// PartRunner's threads (or in turn without one) and their partial sums are added in chunk order, so that a sum has the
-// same bits on any number of threads.
+// Loops over an index range split into chunks whose number depends only on the range's length (or is the caller's fixed
+// count): the chunks run on a PartRunner's threads (or in turn without one) and their partial sums are added in chunk
+// order, so that a sum has the same bits on any number of threads.
 #pragma once
 
 #include <algorithm>
