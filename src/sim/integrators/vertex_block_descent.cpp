@@ -37,6 +37,10 @@ constexpr double kGrowthTolerance = 1e-2;
 // BDF2 of the contact force. Lagged once per step (at its start) two stacked balls cost 10-25 % less at 4-8 sweeps and
 // stack as well, but 1000 sweeps then leave a BDF2 residual of 168 N of 179 N (docs/notes/2026-12-05-vbd-contact.md).
 constexpr bool kLagEverySweep = true;
+// The coarse level's matrix is assembled at every this-many-th step within one call of step() (and where h changes):
+// at icosphere:5 on the bounce every 4th costs 15 % less than every step, with the same errors to 0.03 cm
+// (docs/notes/2026-12-05-vbd-levels.md).
+constexpr long long kCoarseMatrixSteps = 4;
 // A colour's vertices go to several threads only where each gets at least this many.
 constexpr std::size_t kLeastVerticesPerThread = 256;
 
@@ -136,7 +140,17 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
     }
     const bool coarse_level = coarse_spaces_[b].aggregates > 0;
     if (coarse_level) {  // the matrix assembled at the step's first sweep, or where the scratch holds another body's
-      coarse_correction(body, s, coarse_spaces_[b], x, sweep == 0 || coarse_level_body_ != b, coarse_level_scratch_);
+      // Assembled afresh where the scratch holds another body's, at a step of another h, and at every
+      // kCoarseMatrixSteps-th step within one call of step() (the first included, so that a run resumed from a copied
+      // State refreshes where the original did); otherwise the last matrix stays (a lagged matrix still gives a
+      // descent direction, and the search keeps only a move that lowers E).
+      bool refresh = coarse_level_body_ != b;
+      if (sweep == 0) {
+        refresh = refresh || h_hat != coarse_matrix_h_ || coarse_matrix_age_ % kCoarseMatrixSteps == 0;
+        ++coarse_matrix_age_;
+        coarse_matrix_h_ = h_hat;
+      }
+      coarse_correction(body, s, coarse_spaces_[b], x, refresh, coarse_level_scratch_);
       coarse_level_body_ = b;
     }
     // V afresh each sweep (no drift): the affine correction's, where it made the last move.
@@ -287,6 +301,7 @@ void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   const Model& model = dynamics.model();
   prepare_once(model);
   runner_ = &dynamics.runner();
+  coarse_matrix_age_ = 0;
   if (shares_.size() != blocks_.size() || (!shares_.empty() && shares_.front().threads != runner_->threads())) {
     shares_.clear();
     for (const VertexBlocks& blocks : blocks_) shares_.push_back(thread_shares(blocks, runner_->threads()));

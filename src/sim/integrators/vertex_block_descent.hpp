@@ -110,6 +110,8 @@ class VertexBlockDescent final : public Integrator {
   std::vector<CoarseSpace> coarse_spaces_;  // per body; aggregates 0 where it has no coarse level
   CoarseScratch coarse_level_scratch_;
   std::size_t coarse_level_body_ = 0;             // the body whose matrix coarse_level_scratch_ holds
+  long long coarse_matrix_age_ = 0;               // steps of this call of step() that began with the coarse level
+  double coarse_matrix_h_ = 0.0;                  // the ĥ of the step its matrix was last assembled or reused at [s]
   std::size_t affine_body_ = 0;                   // the body whose affine matrix coarse_scratch_ holds
   std::vector<VertexBlocks> blocks_;              // per body
   std::vector<ThreadShares> shares_;              // per body, for the runner's threads
