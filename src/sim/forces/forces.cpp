@@ -82,26 +82,30 @@ void add_spring_dampers(const DistanceConstraints& constraints, std::span<const 
   }
 }
 
-double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x) {
-  const Vec3 origin = x[0];
+namespace {
+
+// Σ x_a·(x_b × x_c) over faces [first, last), positions relative to `origin` [m³].
+double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, const Vec3& origin, std::size_t first,
+                     std::size_t last) {
   double six_volume = 0.0;
-  for (const Triangle& f : faces) {
-    const Vec3 a = x[f[0]] - origin, b = x[f[1]] - origin, c = x[f[2]] - origin;
+  for (std::size_t f = first; f < last; ++f) {
+    const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
     six_volume += a.dot(b.cross(c));
   }
-  return six_volume / 6.0;
+  return six_volume;
+}
+
+}  // namespace
+
+double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x) {
+  return six_volume_of(faces, x, x[0], 0, faces.size()) / 6.0;
 }
 
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
                        std::vector<double>& partials) {
-  const Vec3 origin = x[0];
-  const double six_volume =
-      chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
-        for (std::size_t f = first; f < last; ++f) {
-          const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
-          part += a.dot(b.cross(c));
-        }
-      });
+  const double six_volume = chunked_sum(
+      runner, faces.size(), 0.0, partials,
+      [&](std::size_t first, std::size_t last, double& part) { part = six_volume_of(faces, x, x[0], first, last); });
   return six_volume / 6.0;
 }
 

@@ -158,14 +158,14 @@ void weight_difference(const CoarseSpace& space, std::size_t i, std::size_t j, C
 // Vertices [first, last) of Pᵀ H P (inertia, floor, colliders, contacts) into part.matrix, and Pᵀ∇V into part.u.
 void add_vertex_blocks(const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x, std::size_t first,
                        std::size_t last, CoarsePart& part) {
-  const VertexBlocks& blocks = s.blocks;
   for (std::size_t i = first; i < last; ++i) {
     const double m = s.mass_kg[i];
     Vec3 unused = Vec3::Zero();
     Block3 hessian;
     hessian.add_diagonal(m * s.inverse_h2);
-    if (s.floor && x[i].y() < s.floor->height_m)
+    if (s.floor && x[i].y() < s.floor->height_m) {
       add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, unused, hessian);
+    }
     for (const SmoothCollider& collider : s.colliders) {
       add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, unused, hessian);
     }
@@ -173,11 +173,7 @@ void add_vertex_blocks(const BodySolve& s, const CoarseSpace& space, std::span<c
     const auto [aggregates, weights] = weights_of(space, i);
     add_outer_blocks(part.matrix, aggregates, weights, hessian);
     if (!s.gas) continue;
-    Vec3 six_gradient = Vec3::Zero();  // 6 ∂V/∂x_i
-    for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
-      const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
-      six_gradient += (x[static_cast<std::size_t>(b)] - x[i]).cross(x[static_cast<std::size_t>(c)] - x[i]);
-    }
+    const Vec3 six_gradient = six_volume_gradient(s.blocks, i, x);  // 6 ∂V/∂x_i
     for (std::size_t p = 0; p < aggregates.size(); ++p) {
       part.u.segment<3>(3 * aggregates[p]) += (weights[p] / 6.0) * six_gradient;
     }
@@ -275,14 +271,7 @@ double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const 
                      blocks.damping_N_s_per_m[ve] * inverse_h * rate) *
                     axis;
       }
-      if (s.gas) {
-        Vec3 six_gradient = Vec3::Zero();  // 6 ∂V/∂x_i
-        for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
-          const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
-          six_gradient += (x[static_cast<std::size_t>(b)] - x[i]).cross(x[static_cast<std::size_t>(c)] - x[i]);
-        }
-        gradient -= gas_per_six * six_gradient;
-      }
+      if (s.gas) gradient -= gas_per_six * six_volume_gradient(blocks, i, x);
       scratch.gradient[i] = gradient;
     }
   });

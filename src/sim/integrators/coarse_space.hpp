@@ -36,7 +36,7 @@ inline constexpr int kCoarseSmoothingPasses = 4;
 
 // `solver.coarse_space: "auto"`: kAutoCoarseCells cells for a body of at least kAutoCoarseFromVertices vertices, none
 // below. Measured on scenes/bounce_smooth.json through the first impact, 4 sweeps
-// (docs/notes/2026-12-05-vbd-threads.md): at icosphere:5 and :6 the cells bring the centre of mass from 4.2 and 3.3 cm
+// (docs/notes/2026-12-05-vbd-levels.md): at icosphere:5 and :6 the cells bring the centre of mass from 4.2 and 3.3 cm
 // to 0.47 and 0.17 cm and the volume at :6 from 1.7 % to 0.42 %, for 1.8x the cost; at :3 and :4 the sweeps alone are
 // within the goals (0.10 and 0.95 cm), and with cells :4 is no closer (the converged step is 2.5 cm off there).
 inline constexpr int kAutoCoarseCells = 128;
@@ -49,7 +49,6 @@ inline int auto_coarse_cells(int vertex_count) {
 // passes.
 CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing = kCoarseSmoothingPasses);
 
-// The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 // One constraint's w_i − w_j, sparse: its aggregates and weights.
 struct CoarseDifference {
   std::vector<int> aggregate;
@@ -61,6 +60,7 @@ struct CoarsePart {
   Eigen::VectorXd u;
   CoarseDifference difference;
 };
+// The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct CoarseScratch {
   std::vector<Vec3> gradient;                        // ∇_i E per vertex [N]
   std::vector<CoarsePart> parts;                     // the assembly's chunks (vertices', then constraints')

@@ -139,8 +139,8 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
       affine_body_ = b;
     }
     const bool coarse_level = coarse_spaces_[b].aggregates > 0;
-    if (coarse_level) {  // the matrix assembled at the step's first sweep, or where the scratch holds another body's
-      // Assembled afresh where the scratch holds another body's, at a step of another h, and at every
+    if (coarse_level) {
+      // Its matrix is assembled afresh where the scratch holds another body's, at a step of another h, and at every
       // kCoarseMatrixSteps-th step within one call of step() (the first included, so that a run resumed from a copied
       // State refreshes where the original did); otherwise the last matrix stays (a lagged matrix still gives a
       // descent direction, and the search keeps only a move that lowers E).

@@ -99,8 +99,10 @@ std::vector<int> distances_from(const VertexBlocks& blocks, std::span<const int>
   return distance;
 }
 
-// kSurfacePatches seeds by farthest-point sampling (each the vertex farthest from those before, lowest index on ties;
-// an unreached vertex counts as farthest, so every piece of a body gets a seed), and each vertex's nearest seed.
+}  // namespace
+
+// The seeds: each the vertex farthest from those before, lowest index on ties; an unreached vertex counts as farthest,
+// so that every piece of a body gets a seed. Each vertex's patch is its nearest seed.
 std::vector<int> surface_patches(const VertexBlocks& blocks) {
   const std::size_t n = blocks.constraint_start.size() - 1;
   std::vector<int> seeds, patch;
@@ -125,12 +127,12 @@ std::vector<int> surface_patches(const VertexBlocks& blocks) {
   return patch;
 }
 
-}  // namespace
-
 ThreadShares thread_shares(const VertexBlocks& blocks, int threads) {
   const VertexColouring& colouring = blocks.colouring;
   ThreadShares shares;
   shares.threads = threads;
+  if (threads <= 1) return shares;
+  const std::vector<int> patch = surface_patches(blocks);
   shares.slots.resize(colouring.vertices.size());
   shares.part_start.assign(static_cast<std::size_t>(colouring.colours() * (threads + 1)), 0);
   for (int c = 0; c < colouring.colours(); ++c) {
@@ -138,7 +140,7 @@ ThreadShares thread_shares(const VertexBlocks& blocks, int threads) {
     const int size = colouring.colour_start[static_cast<std::size_t>(c) + 1] - first;
     const auto thread_of = [&](int slot) {
       const auto vertex = static_cast<std::size_t>(colouring.vertices[static_cast<std::size_t>(first + slot)]);
-      return std::max(blocks.surface_patch[vertex], 0) % threads;
+      return std::max(patch[vertex], 0) % threads;
     };
     int* starts = &shares.part_start[static_cast<std::size_t>(c * (threads + 1))];
     for (int slot = 0; slot < size; ++slot) ++starts[thread_of(slot) + 1];
@@ -157,7 +159,6 @@ VertexBlocks vertex_blocks(const Body& body) {
   lay_out_constraints(body.constraints, body.vertex_count, blocks);
   lay_out_faces(body.topology.faces, body.vertex_count, blocks);
   find_face_slots(blocks);
-  blocks.surface_patch = surface_patches(blocks);
   return blocks;
 }
 

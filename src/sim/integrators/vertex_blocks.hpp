@@ -26,17 +26,17 @@ struct VertexBlocks {
   // reuses the edge vectors the springs computed; −1 where a corner is not among the constraints.
   std::vector<std::array<int, 2>> face_slots;
   int most_constraints = 0;  // the largest number of constraints at one vertex
-  // Each vertex's patch of the surface: kSurfacePatches patches grown breadth-first over the constraints from seeds
-  // spread far apart, so that a thread that takes every T-th patch keeps to regions of its own while work that
-  // gathers in one place (an impact) still falls on every thread (ThreadShares).
-  std::vector<int> surface_patch;
 };
 
+// Each vertex's patch of the surface: kSurfacePatches patches grown breadth-first over the constraints from seeds
+// spread far apart (farthest-point sampling), so that a thread that takes every T-th patch keeps to regions of its own
+// while work that gathers in one place (an impact) still falls on every thread (ThreadShares).
 inline constexpr int kSurfacePatches = 64;
+std::vector<int> surface_patches(const VertexBlocks& blocks);
 
-// The vertices of every colour split among `threads` threads by patch (patch p to thread p mod threads), so that each
-// thread keeps to its own parts of the surface in every colour and sweep (only a patch's border reads what another
-// thread wrote).
+// The vertices of every colour split among `threads` threads by surface patch (patch p to thread p mod threads), so
+// that each thread keeps to its own parts of the surface in every colour and sweep (only a patch's border reads what
+// another thread wrote). For one thread it is empty: the colour is walked in order.
 struct ThreadShares {
   int threads = 1;
   // Per colour c, its slots (positions in the colour, 0-based) grouped by thread, ascending within a thread (so that

@@ -89,6 +89,15 @@ Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3
   return sum;
 }
 
+Vec3 six_volume_gradient(const VertexBlocks& blocks, std::size_t i, std::span<const Vec3> x) {
+  Vec3 sum = Vec3::Zero();
+  for (int f = blocks.face_start[i]; f < blocks.face_start[i + 1]; ++f) {
+    const auto [b, c] = blocks.face_others[static_cast<std::size_t>(f)];
+    sum += (x[static_cast<std::size_t>(b)] - x[i]).cross(x[static_cast<std::size_t>(c)] - x[i]);
+  }
+  return sum;
+}
+
 VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags) {
   const auto vi = static_cast<std::size_t>(i);
   const VertexBlocks& blocks = s.blocks;

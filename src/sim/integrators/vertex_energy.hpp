@@ -145,6 +145,8 @@ struct ConstraintLags {
 // Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) = 6 ∂V/∂x_i [m²], with the edge vectors x_i − x_j that vertex_terms left in
 // lags.offset where the corners are among the vertex's constraints.
 Vec3 six_volume_gradient(const VertexBlocks& blocks, int i, std::span<const Vec3> x, const ConstraintLags& lags);
+// The same from the positions alone (for passes that keep no edge vectors).
+Vec3 six_volume_gradient(const VertexBlocks& blocks, std::size_t i, std::span<const Vec3> x);
 
 // ∇_i E and H_i of vertex i at x, with what its line search reuses.
 struct VertexTerms {
