@@ -83,12 +83,28 @@ void add_outer_blocks(Eigen::MatrixXd& K, std::span<const int> aggregates, std::
   }
 }
 
+// Appends to each vertex's weights the three linear fields (X_i − C)/R as aggregates first .. first + 2.
+void add_linear_fields(std::span<const Vec3> positions, int first, std::vector<Weights>& weights) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& p : positions) centre += p;
+  centre /= static_cast<double>(positions.size());
+  double radius = 0.0;
+  for (const Vec3& p : positions) radius = std::max(radius, (p - centre).norm());
+  const double scale = radius > 0.0 ? 1.0 / radius : 1.0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    const Vec3 r = scale * (positions[i] - centre);
+    for (int axis = 0; axis < 3; ++axis) weights[i].emplace_back(first + axis, r[axis]);
+  }
+}
+
 }  // namespace
 
-CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing) {
+CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, std::span<const Vec3> positions,
+                                int smoothing) {
   const std::size_t n = blocks.constraint_start.size() - 1;
   CoarseSpace space;
-  const std::vector<int> cell = aggregate_cells(blocks, std::max(1, aggregates), space.aggregates);
+  const std::vector<int> cell = aggregate_cells(blocks, std::max(1, aggregates), space.cells);
+  space.aggregates = space.cells;
   std::vector<Weights> weights(n), smoothed(n);
   for (std::size_t i = 0; i < n; ++i) weights[i] = {{cell[i], 1.0}};
   for (int pass = 0; pass < smoothing; ++pass) {
@@ -105,6 +121,10 @@ CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int 
       merge_repeats(w);
     }
     weights.swap(smoothed);
+  }
+  if (!positions.empty()) {
+    add_linear_fields(positions, space.cells, weights);
+    space.aggregates += 3;
   }
   space.weight_start.assign(1, 0);
   for (const Weights& w : weights) {
@@ -238,14 +258,50 @@ void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& sp
   if (s.gas) K.selfadjointView<Eigen::Lower>().rankUpdate(u, s.gas->stiffness(volume));
 }
 
-// ∇E per vertex at x into scratch.gradient, each vertex from its own constraint row and faces (every constraint counted
-// at both its ends), in chunks on s.runner's threads. Returns V(x) (0 without gas).
+// Each constraint's spring and damper term of ∇E at its first end, (k (l − L0) + (c/ĥ) ĥ l̇) d/l with d = x_i − x_j
+// [N] (its second end takes the negative), into scratch.edge_force, and its lags for the line search (its length,
+// inverse and ĥ × approach speed, as take_motion_lags would take them) into scratch.search, in chunks on s.runner's
+// threads.
+void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
+  const DistanceConstraints& constraints = body.constraints;
+  MotionScratch& search = scratch.search;
+  scratch.edge_force.resize(constraints.size());
+  search.edge_length_m.resize(constraints.size());
+  search.edge_inverse_length.resize(constraints.size());
+  search.edge_rate_m.resize(constraints.size());
+  search.edges_lagged = true;
+  const double inverse_h = 1.0 / s.h_hat;
+  chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t e = first; e < last; ++e) {
+      const auto [i, j] = constraints.ends[e];
+      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+      const Vec3 d = x[vi] - x[vj];
+      const Vec3 relative = (x[vi] - s.base[vi]) - (x[vj] - s.base[vj]);  // ĥ × the relative velocity [m]
+      const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
+      search.edge_length_m[e] = length;
+      search.edge_inverse_length[e] = inverse_length;
+      search.edge_rate_m[e] = relative.dot(inverse_length * d);
+      if (length == 0.0) {
+        scratch.edge_force[e] = Vec3::Zero();
+        continue;
+      }
+      const Vec3 axis = d / length;
+      const double rate = relative.dot(axis);
+      scratch.edge_force[e] = (constraints.stiffness_N_per_m[e] * (length - constraints.rest_length_m[e]) +
+                               constraints.damping_N_s_per_m[e] * inverse_h * rate) *
+                              axis;
+    }
+  });
+}
+
+// ∇E per vertex at x into scratch.gradient: its own terms, and its constraints' from take_edge_forces, in chunks on
+// s.runner's threads. Returns V(x) (0 without gas).
 double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
   const double volume = s.gas ? enclosed_volume(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
-  const double inverse_h = 1.0 / s.h_hat;
+  take_edge_forces(body, s, x, scratch);
   scratch.gradient.resize(n);
   chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
@@ -259,17 +315,10 @@ double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const 
         add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, unused);
       }
       if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, unused);
-      for (int e = blocks.constraint_start[i]; e < blocks.constraint_start[i + 1]; ++e) {
-        const auto ve = static_cast<std::size_t>(e);
-        const auto j = static_cast<std::size_t>(blocks.other_end[ve]);
-        const Vec3 d = x[i] - x[j];
-        const double length = d.norm();
-        if (length == 0.0) continue;
-        const Vec3 axis = d / length;
-        const double rate = ((x[i] - s.base[i]) - (x[j] - s.base[j])).dot(axis);
-        gradient += (blocks.stiffness_N_per_m[ve] * (length - blocks.rest_length_m[ve]) +
-                     blocks.damping_N_s_per_m[ve] * inverse_h * rate) *
-                    axis;
+      for (int entry = blocks.constraint_start[i]; entry < blocks.constraint_start[i + 1]; ++entry) {
+        const auto e = static_cast<std::size_t>(blocks.constraint[static_cast<std::size_t>(entry)]);
+        const Vec3& force = scratch.edge_force[e];
+        gradient += static_cast<std::size_t>(body.constraints.ends[e][0]) == i ? force : Vec3(-force);
       }
       if (s.gas) gradient -= gas_per_six * six_volume_gradient(blocks, i, x);
       scratch.gradient[i] = gradient;
@@ -304,6 +353,7 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
   const std::size_t n = x.size();
   const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
   const double volume = gradient_by_vertex(body, s, x, scratch);
+  scratch.search.volume_after = volume;  // where it does not move
   if (matrix) {
     assemble_matrix(body, s, space, x, volume, scratch);
     scratch.factor.compute(scratch.matrix);

@@ -16,13 +16,17 @@
 namespace sim {
 
 // The coarse space: δx_i = Σ_a w_ia t_a, one translation t_a per aggregate a (3 unknowns each), with weights that are
-// a partition of unity (Σ_a w_ia = 1, so it holds every translation of the body) and smooth over the mesh.
+// a partition of unity (Σ_a w_ia = 1, so it holds every translation of the body) and smooth over the mesh; and, where
+// built with the body's placed positions, its linear motions too: three more aggregates with the weights
+// (X_i − C)/R (X the placed mesh, C its centroid, R its largest distance from C), δx_i = A (X_i − C)/R, so that one
+// correction takes the breathing, a squash and a turn of the whole body as well as the cells' smooth fields.
 // Built by smoothed aggregation (Vaněk, Mandel & Brezina, Computing 56, 1996): the aggregates are the Voronoi cells
 // of seeds spread by farthest-point sampling in hops over the constraint graph; each vertex starts with weight 1 on its
 // own cell, and each smoothing pass replaces a vertex's weights by (1 − ω) its own + ω the mean of its neighbours'
 // (ω = 2/3), which keeps the partition of unity and turns the cells' steps into ramps a few rings wide.
 struct CoarseSpace {
-  int aggregates = 0;
+  int aggregates = 0;  // the cells, and the three linear fields where it has them
+  int cells = 0;
   // Vertex i's weights are entries [weight_start[i], weight_start[i + 1]), aggregates ascending.
   std::vector<int> weight_start;
   std::vector<int> aggregate;
@@ -46,8 +50,9 @@ inline int auto_coarse_cells(int vertex_count) {
 }
 
 // The coarse space of a body laid out as `blocks` with `aggregates` cells (at most its vertex count) and `smoothing`
-// passes.
-CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, int smoothing = kCoarseSmoothingPasses);
+// passes, with the linear fields of the placed mesh `positions` unless it is empty.
+CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, std::span<const Vec3> positions = {},
+                                int smoothing = kCoarseSmoothingPasses);
 
 // One constraint's w_i − w_j, sparse: its aggregates and weights.
 struct CoarseDifference {
@@ -63,6 +68,7 @@ struct CoarsePart {
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct CoarseScratch {
   std::vector<Vec3> gradient;                        // ∇_i E per vertex [N]
+  std::vector<Vec3> edge_force;                      // per constraint, its force on its first end's ∇E [N]
   std::vector<CoarsePart> parts;                     // the assembly's chunks (vertices', then constraints')
   Eigen::MatrixXd matrix;                            // Pᵀ H P [N/m], its lower triangle
   Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> factor;  // of the matrix as last assembled

@@ -62,7 +62,8 @@ void VertexBlockDescent::prepare_once(const Model& model) {
     blocks_.push_back(vertex_blocks(body));
     most_constraints = std::max(most_constraints, blocks_.back().most_constraints);
     const int cells = aggregates_ == kAutoAggregates ? auto_coarse_cells(body.vertex_count) : aggregates_;
-    coarse_spaces_.push_back(cells > 0 ? smooth_coarse_space(blocks_.back(), cells) : CoarseSpace{});
+    coarse_spaces_.push_back(cells > 0 ? smooth_coarse_space(blocks_.back(), cells, body.rest.position_m)
+                                       : CoarseSpace{});
   }
   lags_.resize(static_cast<std::size_t>(most_constraints));
   smooth_floor_.reset();
@@ -133,12 +134,14 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   if (contacts_.active()) s.contacts = &contacts_;
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = first_sweep; sweep < first_sweep + count; ++sweep) {
-    const bool own_affine = coarse_ && !joint_affine_;
-    if (own_affine) {  // its matrix assembled at the step's first sweep, or where the scratch holds another body's
+    // The affine correction, where the body has no coarse level (whose space holds the affine motions too): its
+    // matrix assembled at the step's first sweep, or where the scratch holds another body's.
+    const bool coarse_level = coarse_spaces_[b].aggregates > 0;
+    const bool own_affine = coarse_ && !joint_affine_ && !coarse_level;
+    if (own_affine) {
       affine_correction(body, s, x, coarse_scratch_, sweep == 0 || affine_body_ != b);
       affine_body_ = b;
     }
-    const bool coarse_level = coarse_spaces_[b].aggregates > 0;
     if (coarse_level) {
       // Its matrix is assembled afresh where the scratch holds another body's, at a step of another h, and at every
       // kCoarseMatrixSteps-th step within one call of step() (the first included, so that a run resumed from a copied
@@ -153,11 +156,16 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
       coarse_correction(body, s, coarse_spaces_[b], x, refresh, coarse_level_scratch_);
       coarse_level_body_ = b;
     }
-    // V afresh each sweep (no drift): the affine correction's, where it made the last move.
+    // V afresh each sweep (no drift): the correction's, which ends with a volume pass or an exact change.
     double volume = 0.0;
     if (s.gas) {
-      volume = own_affine && !coarse_level ? coarse_scratch_.search.volume_after
-                                           : enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
+      if (coarse_level) {
+        volume = coarse_level_scratch_.search.volume_after;
+      } else if (own_affine) {
+        volume = coarse_scratch_.search.volume_after;
+      } else {
+        volume = enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
+      }
     }
     sweep_colours(s, shares_[b], x, volume);
   }

@@ -40,10 +40,10 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // exactly after the colour (V += Σ g_i·Δ_i); only the gas couples them, and a bound on that coupling refuses a joint
 // move that might raise E (vertex_moves.hpp): the colour is then visited a vertex at a time, V updated after each
 // move. So no setting can make a sweep add energy, whatever h. Then v' = (x' − x̃)/ĥ.
-// Before each sweep, corrections on coarse spaces carry what a sweep, which moves information by one ring of vertices,
-// cannot: one Newton step restricted to the body's affine motions (affine_correction.hpp), and, where `aggregates`
-// is set (solver.coarse_space), one on smooth fields over that many cells (coarse_space.hpp; its matrix assembled
-// and factored at the step's first sweep and reused by the later ones). Both search E along their step too.
+// Before each sweep, a correction on a coarse space carries what a sweep, which moves information by one ring of
+// vertices, cannot: where `aggregates` is set (solver.coarse_space), one Newton step on smooth fields over that many
+// cells and the body's linear motions (coarse_space.hpp; its matrix assembled and factored every few steps and reused
+// between), else one restricted to the body's affine motions (affine_correction.hpp). Both search E along their step.
 // The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E with
 // their dashpot weights and friction normal forces lagged (vertex_energy.hpp, sim/contact/smooth_collider.hpp,
 // vertex_contacts.hpp); with the smooth body

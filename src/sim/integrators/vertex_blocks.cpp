@@ -24,6 +24,7 @@ void lay_out_constraints(const DistanceConstraints& constraints, int vertex_coun
   blocks.constraint_start = row_starts(count);
   const auto entries = static_cast<std::size_t>(blocks.constraint_start.back());
   blocks.other_end.resize(entries);
+  blocks.constraint.resize(entries);
   blocks.rest_length_m.resize(entries);
   blocks.stiffness_N_per_m.resize(entries);
   blocks.damping_N_s_per_m.resize(entries);
@@ -33,6 +34,7 @@ void lay_out_constraints(const DistanceConstraints& constraints, int vertex_coun
     for (const auto& [at, other] : {std::array{i, j}, std::array{j, i}}) {
       const auto entry = static_cast<std::size_t>(next[static_cast<std::size_t>(at)]++);
       blocks.other_end[entry] = other;
+      blocks.constraint[entry] = static_cast<int>(e);
       blocks.rest_length_m[entry] = constraints.rest_length_m[e];
       blocks.stiffness_N_per_m[entry] = constraints.stiffness_N_per_m[e];
       blocks.damping_N_s_per_m[entry] = constraints.damping_N_s_per_m[e];

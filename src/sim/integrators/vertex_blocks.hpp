@@ -15,6 +15,7 @@ struct VertexBlocks {
   // Vertex i's constraints (edges and bending links) are entries [constraint_start[i], constraint_start[i + 1]):
   std::vector<int> constraint_start;      // vertex count + 1
   std::vector<int> other_end;             // the constraint's other vertex (local index)
+  std::vector<int> constraint;            // the constraint's index in the body's DistanceConstraints
   std::vector<double> rest_length_m;      // L0 [m]
   std::vector<double> stiffness_N_per_m;  // k [N/m]
   std::vector<double> damping_N_s_per_m;  // c [N·s/m]
