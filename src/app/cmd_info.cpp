@@ -119,8 +119,8 @@ double stiffest_smooth_contact(const sim::Model& model) {
 }
 
 // vbd's coarse level per body (solver.coarse_space, or "auto" by the body's size) and what it cost on the bounce
-// with 128 cells: 1.8x the run without at icosphere:5 and :6, 2.7x at :4 (bench/run_vbd_levels.sh,
-// docs/notes/2026-12-05-vbd-levels.md).
+// with 128 cells: 1.05x the run without at icosphere:5, 1.02x at :6, 1.27x at :4
+// (docs/notes/2026-12-05-vbd-coarse-linear.md).
 void print_vbd_coarse_level(const sim::Model& model) {
   const sim::Solver& solver = model.solver;
   std::string cells;
@@ -135,7 +135,8 @@ void print_vbd_coarse_level(const sim::Model& model) {
   if (cells.empty()) {
     cells = "none";
   } else {
-    cells += "; not in the cost above (on the bounce it took 1.8x at 10,000-41,000 vertices, 2.7x at 2,562)";
+    cells +=
+        "; not in the cost above (on the bounce it took 1.05x at 10,242 vertices, 1.02x at 40,962, 1.27x at 2,562)";
   }
   std::string rule;
   if (solver.coarse_space_auto) {

@@ -41,8 +41,10 @@ inline constexpr int kCoarseSmoothingPasses = 4;
 // `solver.coarse_space: "auto"`: kAutoCoarseCells cells for a body of at least kAutoCoarseFromVertices vertices, none
 // below. Measured on scenes/bounce_smooth.json through the first impact, 4 sweeps
 // (docs/notes/2026-12-05-vbd-levels.md): at icosphere:5 and :6 the cells bring the centre of mass from 4.2 and 3.3 cm
-// to 0.47 and 0.17 cm and the volume at :6 from 1.7 % to 0.42 %, for 1.8x the cost; at :3 and :4 the sweeps alone are
-// within the goals (0.10 and 0.95 cm), and with cells :4 is no closer (the converged step is 2.5 cm off there).
+// to 0.47 and 0.17 cm and the volume at :6 from 1.7 % to 0.42 %, for 1.8x the cost then (1.05x and 1.02x since the
+// cells hold the linear motions and correct before every other sweep: docs/notes/2026-12-05-vbd-coarse-linear.md); at
+// :3 and :4 the sweeps alone are within the goals (0.10 and 0.95 cm), and with cells :4 is no closer (the converged
+// step is 2.5 cm off there).
 inline constexpr int kAutoCoarseCells = 128;
 inline constexpr int kAutoCoarseFromVertices = 5000;
 inline int auto_coarse_cells(int vertex_count) {

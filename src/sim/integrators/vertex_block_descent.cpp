@@ -37,10 +37,14 @@ constexpr double kGrowthTolerance = 1e-2;
 // BDF2 of the contact force. Lagged once per step (at its start) two stacked balls cost 10-25 % less at 4-8 sweeps and
 // stack as well, but 1000 sweeps then leave a BDF2 residual of 168 N of 179 N (docs/notes/2026-12-05-vbd-contact.md).
 constexpr bool kLagEverySweep = true;
-// The coarse level's matrix is assembled at every this-many-th step within one call of step() (and where h changes):
-// at icosphere:5 on the bounce every 4th costs 15 % less than every step, with the same errors to 0.03 cm
-// (docs/notes/2026-12-05-vbd-levels.md).
-constexpr long long kCoarseMatrixSteps = 4;
+// The coarse level's matrix is assembled at every this-many-th step within one call of step() (and where h changes),
+// and its correction taken before every this-many-th sweep of a step (the first included). On the bounce
+// (scenes/bounce_smooth.json, 4 sweeps) at icosphere:5 and :6 every 8th matrix and every 2nd sweep cost 0.76x what
+// every 4th matrix and every sweep did, with the same volume errors and centres of mass within 0.06 cm
+// (docs/notes/2026-12-05-vbd-coarse-linear.md; every 4th matrix against every one:
+// docs/notes/2026-12-05-vbd-levels.md).
+constexpr long long kCoarseMatrixSteps = 8;
+constexpr int kCoarseEverySweeps = 2;
 // A colour's vertices go to several threads only where each gets at least this many.
 constexpr std::size_t kLeastVerticesPerThread = 256;
 
@@ -134,15 +138,17 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   if (contacts_.active()) s.contacts = &contacts_;
   const std::span<Vec3> x = Model::of(body, all_x);
   for (int sweep = first_sweep; sweep < first_sweep + count; ++sweep) {
-    // The affine correction, where the body has no coarse level (whose space holds the affine motions too): its
-    // matrix assembled at the step's first sweep, or where the scratch holds another body's.
+    // The affine correction before every sweep where the body has no coarse level (whose space holds the affine
+    // motions too; it corrects before every kCoarseEverySweeps-th sweep): its matrix assembled at the step's first
+    // sweep, or where the scratch holds another body's.
     const bool coarse_level = coarse_spaces_[b].aggregates > 0;
     const bool own_affine = coarse_ && !joint_affine_ && !coarse_level;
     if (own_affine) {
       affine_correction(body, s, x, coarse_scratch_, sweep == 0 || affine_body_ != b);
       affine_body_ = b;
     }
-    if (coarse_level) {
+    const bool coarse_now = coarse_level && sweep % kCoarseEverySweeps == 0;
+    if (coarse_now) {
       // Its matrix is assembled afresh where the scratch holds another body's, at a step of another h, and at every
       // kCoarseMatrixSteps-th step within one call of step() (the first included, so that a run resumed from a copied
       // State refreshes where the original did); otherwise the last matrix stays (a lagged matrix still gives a
@@ -159,7 +165,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
     // V afresh each sweep (no drift): the correction's, which ends with a volume pass or an exact change.
     double volume = 0.0;
     if (s.gas) {
-      if (coarse_level) {
+      if (coarse_now) {
         volume = coarse_level_scratch_.search.volume_after;
       } else if (own_affine) {
         volume = coarse_scratch_.search.volume_after;

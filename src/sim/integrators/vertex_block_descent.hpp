@@ -42,8 +42,9 @@ inline constexpr double kVbdImpactPhase = 0.5;
 // move. So no setting can make a sweep add energy, whatever h. Then v' = (x' − x̃)/ĥ.
 // Before each sweep, a correction on a coarse space carries what a sweep, which moves information by one ring of
 // vertices, cannot: where `aggregates` is set (solver.coarse_space), one Newton step on smooth fields over that many
-// cells and the body's linear motions (coarse_space.hpp; its matrix assembled and factored every few steps and reused
-// between), else one restricted to the body's affine motions (affine_correction.hpp). Both search E along their step.
+// cells and the body's linear motions (coarse_space.hpp; before every other sweep, its matrix assembled and factored
+// every few steps and reused between), else one restricted to the body's affine motions (affine_correction.hpp). Both
+// search E along their step.
 // The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E with
 // their dashpot weights and friction normal forces lagged (vertex_energy.hpp, sim/contact/smooth_collider.hpp,
 // vertex_contacts.hpp); with the smooth body
