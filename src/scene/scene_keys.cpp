@@ -197,9 +197,10 @@ struct Table {
             "none: dt decides"),
         key("iterations", {integer(1, 10000)}, "", "vbd: Gauss-Seidel sweeps over the vertices per step.", 4),
         key("coarse_space", {integer(0, 512), choice({"auto"})}, "",
-            "vbd: cells per body of a coarse level (smooth displacement fields; one Newton step on them before each "
-            "sweep) for meshes of thousands of vertices, where the sweeps alone converge slowly; 0: none. \"auto\": "
-            "128 for a body of at least 5000 vertices, none below.",
+            "vbd: cells per body of a coarse level (smooth displacement fields and the body's linear motions; one "
+            "Newton step on them before every other sweep, in place of the affine step) for meshes of thousands of "
+            "vertices, where the sweeps alone converge slowly; 0: none. \"auto\": 128 for a body of at least 5000 "
+            "vertices, none below.",
             "auto"),
         key("retry", {of_kind(FormKind::Boolean)}, "",
             "A step the divergence guard rejects is retried as 2, 4, ... substeps (up to 1024).", false),
