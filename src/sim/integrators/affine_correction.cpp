@@ -217,9 +217,7 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
                                 });
   MotionScratch& search = scratch.search;
   const std::size_t edges = body.constraints.size();
-  search.edge_length_m.resize(edges);
-  search.edge_inverse_length.resize(edges);
-  search.edge_rate_m.resize(edges);
+  search.size_edge_lags(edges);
   sums += chunked_sum(s.runner, edges, CoarseSums{}, scratch.sums,
                       [&](std::size_t first, std::size_t last, CoarseSums& part) {
                         add_constraint_terms(body, s, x, assemble, first, last, search, part);

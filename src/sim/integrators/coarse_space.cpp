@@ -103,8 +103,9 @@ CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, std:
                                 int smoothing) {
   const std::size_t n = blocks.constraint_start.size() - 1;
   CoarseSpace space;
-  const std::vector<int> cell = aggregate_cells(blocks, std::max(1, aggregates), space.cells);
-  space.aggregates = space.cells;
+  int cells = 0;
+  const std::vector<int> cell = aggregate_cells(blocks, std::max(1, aggregates), cells);
+  space.aggregates = cells;
   std::vector<Weights> weights(n), smoothed(n);
   for (std::size_t i = 0; i < n; ++i) weights[i] = {{cell[i], 1.0}};
   for (int pass = 0; pass < smoothing; ++pass) {
@@ -123,7 +124,7 @@ CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, std:
     weights.swap(smoothed);
   }
   if (!positions.empty()) {
-    add_linear_fields(positions, space.cells, weights);
+    add_linear_fields(positions, cells, weights);
     space.aggregates += 3;
   }
   space.weight_start.assign(1, 0);
@@ -259,34 +260,27 @@ void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& sp
 }
 
 // Each constraint's spring and damper term of ∇E at its first end, (k (l − L0) + (c/ĥ) ĥ l̇) d/l with d = x_i − x_j
-// [N] (its second end takes the negative), into scratch.edge_force, and its lags for the line search (its length,
-// inverse and ĥ × approach speed, as take_motion_lags would take them) into scratch.search, in chunks on s.runner's
-// threads.
+// [N] (its second end takes the negative), into scratch.edge_force, and its lags for the line search
+// (take_edge_lag) into scratch.search, in chunks on s.runner's threads.
 void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
   const DistanceConstraints& constraints = body.constraints;
   MotionScratch& search = scratch.search;
   scratch.edge_force.resize(constraints.size());
-  search.edge_length_m.resize(constraints.size());
-  search.edge_inverse_length.resize(constraints.size());
-  search.edge_rate_m.resize(constraints.size());
+  search.size_edge_lags(constraints.size());
   search.edges_lagged = true;
   const double inverse_h = 1.0 / s.h_hat;
   chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
     for (std::size_t e = first; e < last; ++e) {
-      const auto [i, j] = constraints.ends[e];
-      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
-      const Vec3 d = x[vi] - x[vj];
-      const Vec3 relative = (x[vi] - s.base[vi]) - (x[vj] - s.base[vj]);  // ĥ × the relative velocity [m]
-      const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
-      search.edge_length_m[e] = length;
-      search.edge_inverse_length[e] = inverse_length;
-      search.edge_rate_m[e] = relative.dot(inverse_length * d);
+      take_edge_lag(constraints, s, x, e, search);
+      const double length = search.edge_length_m[e];
       if (length == 0.0) {
         scratch.edge_force[e] = Vec3::Zero();
         continue;
       }
-      const Vec3 axis = d / length;
-      const double rate = relative.dot(axis);
+      const auto [i, j] = constraints.ends[e];
+      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+      const Vec3 axis = (x[vi] - x[vj]) / length;
+      const double rate = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(axis);  // ĥ × the approach speed [m]
       scratch.edge_force[e] = (constraints.stiffness_N_per_m[e] * (length - constraints.rest_length_m[e]) +
                                constraints.damping_N_s_per_m[e] * inverse_h * rate) *
                               axis;

@@ -26,7 +26,6 @@ namespace sim {
 // (ω = 2/3), which keeps the partition of unity and turns the cells' steps into ramps a few rings wide.
 struct CoarseSpace {
   int aggregates = 0;  // the cells, and the three linear fields where it has them
-  int cells = 0;
   // Vertex i's weights are entries [weight_start[i], weight_start[i + 1]), aggregates ascending.
   std::vector<int> weight_start;
   std::vector<int> aggregate;

@@ -33,19 +33,9 @@ void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratc
 // Each constraint's length, its inverse and its ĥ × approach speed at x.
 void take_edge_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
   const DistanceConstraints& constraints = body.constraints;
-  scratch.edge_length_m.resize(constraints.size());
-  scratch.edge_inverse_length.resize(constraints.size());
-  scratch.edge_rate_m.resize(constraints.size());
+  scratch.size_edge_lags(constraints.size());
   chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
-    for (std::size_t e = first; e < last; ++e) {
-      const auto [i, j] = constraints.ends[e];
-      const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
-      const Vec3 d = x[vi] - x[vj];
-      const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
-      scratch.edge_length_m[e] = length;
-      scratch.edge_inverse_length[e] = inverse_length;
-      scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
-    }
+    for (std::size_t e = first; e < last; ++e) take_edge_lag(constraints, s, x, e, scratch);
   });
 }
 
@@ -128,6 +118,17 @@ double energy_change(const Body& body, const BodySolve& s, std::span<const Vec3>
 }
 
 }  // namespace
+
+void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x, std::size_t e,
+                   MotionScratch& scratch) {
+  const auto [i, j] = constraints.ends[e];
+  const auto vi = static_cast<std::size_t>(i), vj = static_cast<std::size_t>(j);
+  const Vec3 d = x[vi] - x[vj];
+  const double length = d.norm(), inverse_length = length == 0.0 ? 0.0 : 1.0 / length;
+  scratch.edge_length_m[e] = length;
+  scratch.edge_inverse_length[e] = inverse_length;
+  scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
+}
 
 void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
   take_contact_lags(s, x, scratch);

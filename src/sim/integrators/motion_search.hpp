@@ -23,6 +23,11 @@ struct MotionScratch {
   // set (the affine correction's gradient pass computes them anyway), else by the search.
   std::vector<double> edge_length_m, edge_inverse_length, edge_rate_m;
   bool edges_lagged = false;
+  void size_edge_lags(std::size_t constraints) {
+    edge_length_m.resize(constraints);
+    edge_inverse_length.resize(constraints);
+    edge_rate_m.resize(constraints);
+  }
   double volume_after = 0.0;                     // V where the search left x [m³]
   std::vector<Vec3> trial;                       // x + α motion, for the gas's volume [m]
   std::vector<FloorLag> floor_lags;              // per vertex, taken at x for the whole line search
@@ -36,6 +41,11 @@ struct MotionScratch {
 // line searches lag them. Returns whether it moved; scratch.volume_after is V at the new x.
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch);
+
+// Constraint e's lags at x (its length, inverse and ĥ × approach speed) into scratch, sized by size_edge_lags: what
+// take_motion_lags takes for every constraint, for a pass over the constraints that needs them anyway.
+void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x, std::size_t e,
+                   MotionScratch& scratch);
 
 // The search's parts, for a search over several bodies at once (joint_affine_correction.hpp): the floor's and the
 // colliders' lags of every vertex at x (and the constraints' unless edges_lagged), and E's change along
