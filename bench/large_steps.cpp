@@ -1,5 +1,5 @@
 // build/bench_large_steps: issue 13's "what the user waits for": the bounce at icosphere levels, every
-// integrator at its automatic step (implicit at the frame step and smaller ones) and Bullet's
+// integrator at its automatic step, and Bullet's
 // btSoftBody, each run's wall time per simulated second and its error against a converged run of our model.
 #include <CLI/CLI.hpp>
 
@@ -14,7 +14,6 @@
 #include "bounce_run.hpp"
 #include "reference_cache.hpp"
 #include "setup/build_world.hpp"
-#include "sim/step/stability.hpp"
 #include "trajectory_error.hpp"
 
 namespace {
@@ -24,8 +23,7 @@ using bench::BounceSetup;
 
 struct Options {
   std::vector<int> levels{3};
-  std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "xpbd", "vbd"};
-  std::vector<int> rates{60, 240};                       // implicit: dt = 1/rate
+  std::vector<std::string> integrators{"euler", "symplectic", "verlet", "rk4", "rk45", "xpbd", "vbd"};
   std::vector<std::string> friction_too{"symplectic"};   // also run at their automatic step on the friction floor
   std::vector<int> bullet_rates{60, 240};                // Bullet: dt = 1/rate
   std::vector<double> reference_tolerances{1e-8, 1e-7};  // rk45: the first is the reference
@@ -97,21 +95,6 @@ std::string tolerance_label(double tolerance) {
   return text;
 }
 
-// The floor contact an integrator runs at step dt_s: smooth where the integrator is stable with it (implicit
-// takes the contact explicitly: h < 2/ω_contact).
-sim::FloorContact contact_for(int level, sim::IntegratorKind integrator, double dt_s) {
-  if (integrator != sim::IntegratorKind::Implicit) return sim::FloorContact::Smooth;
-  BounceSetup probe;
-  probe.level = level;
-  probe.integrator = integrator;
-  probe.dt_s = dt_s;
-  double dt = 0.0;
-  const sim::World world = bench::bounce_world(probe, dt);
-  const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);
-  return dt <= sim::stable_dt(integrator, estimate.bodies.at(0)) ? sim::FloorContact::Smooth
-                                                                 : sim::FloorContact::Friction;
-}
-
 // The reference cache of `level`: the option's path with "%d" replaced by the level (several levels, one option).
 std::string cache_path(const std::string& pattern, int level) {
   const std::size_t at = pattern.find("%d");
@@ -139,13 +122,9 @@ void run_level(int level, const Options& o) {
   }
   for (const std::string& name : o.integrators) {
     const sim::IntegratorKind integrator = *sim::integrator_named(name);
-    std::vector<std::pair<double, sim::FloorContact>> steps{{0.0, contact_for(level, integrator, 0.0)}};  // 0: auto
+    std::vector<std::pair<double, sim::FloorContact>> steps{{0.0, sim::FloorContact::Smooth}};  // 0: auto
     if (std::find(o.friction_too.begin(), o.friction_too.end(), name) != o.friction_too.end()) {
       steps.emplace_back(0.0, sim::FloorContact::Friction);
-    }
-    if (integrator == sim::IntegratorKind::Implicit) {
-      steps.clear();
-      for (const int rate : o.rates) steps.emplace_back(1.0 / rate, contact_for(level, integrator, 1.0 / rate));
     }
     for (const auto& [dt, contact] : steps) {
       BounceSetup setup;
@@ -182,9 +161,7 @@ int main(int argc, char** argv) {
       "second against the error from a converged rk45 run (smooth floor); CSV on stdout");
   Options o;
   cli.add_option("--levels", o.levels, "icosphere levels")->delimiter(',');
-  cli.add_option("--integrators", o.integrators, "integrators (implicit runs at each of --rates)")->delimiter(',');
-  cli.add_option("--rates", o.rates, "implicit: steps per second (must divide 60 or be a multiple of it)")
-      ->delimiter(',');
+  cli.add_option("--integrators", o.integrators, "integrators, each at its automatic step")->delimiter(',');
   cli.add_option("--friction-too", o.friction_too, "integrators also run on the friction floor at their automatic step")
       ->delimiter(',');
   cli.add_option("--bullet-rates", o.bullet_rates, "Bullet: steps per second (0: no Bullet run)")->delimiter(',');

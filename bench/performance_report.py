@@ -9,7 +9,7 @@ import shutil
 import sys
 
 step_json, render_csv, memory_csv, out, seconds = sys.argv[1:6]
-INTEGRATORS = ["euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "xpbd"]
+INTEGRATORS = ["euler", "symplectic", "verlet", "rk4", "rk45", "xpbd"]
 SKIPS = ["full", "no_pressure", "no_damping", "no_floor", "springs_gravity_only"]
 
 

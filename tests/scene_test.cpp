@@ -148,4 +148,12 @@ TEST(Scene, RemovedNewtonIntegratorNamesItsReplacement) {
   EXPECT_NE(error.find("solver.integrator: \"newton\" was removed: use \"vbd\""), std::string::npos) << error;
 }
 
+// So is the removed implicit integrator, with the key that lets vbd choose its steps.
+TEST(Scene, RemovedImplicitIntegratorNamesItsReplacement) {
+  const std::string error =
+      error_of(R"({ "solver": { "integrator": "implicit", "dt": 0.01 }, "bodies": [ { "mesh": "icosphere:1" } ] })");
+  EXPECT_NE(error.find("solver.integrator: \"implicit\" was removed: use \"vbd\""), std::string::npos) << error;
+  EXPECT_NE(error.find("solver.substeps"), std::string::npos) << error;
+}
+
 }  // namespace

@@ -34,7 +34,7 @@ std::vector<LimitBody> limit_bodies();
 // or (`floor`) 5 cm above the paper floor, so that it lands and rests on it within the trial.
 sim::World limit_world(const LimitBody& body, sim::IntegratorKind integrator, bool floor = false);
 
-// Measures every explicit integrator (implicit has no spring limit), in free flight and on the floor, over
+// Measures every explicit integrator (xpbd and vbd have no spring limit), in free flight and on the floor, over
 // `steps` steps per trial.
 std::vector<LimitRow> measure_limits(const std::vector<LimitBody>& bodies, int steps);
 

@@ -152,7 +152,7 @@ std::vector<StressCase> stress_cases(bool quick) {
       for (const char* shape : {"flattened", "elongated", "tiny-triangles", "cube:3", "torus:16,8"}) {
         add({"odd", shape});
       }
-      if (integrator != IntegratorKind::Rk45 && integrator != IntegratorKind::Implicit) {
+      if (integrator != IntegratorKind::Rk45) {
         StressCase retry{"retry", "icosphere:2", integrator, 3000.0, 0.5, 30.0, 20.0, true};
         add(retry);
       }

@@ -39,9 +39,8 @@ void print_body(std::size_t index, const sim::Body& body, const sim::BodyStats& 
 }
 
 // What one step costs per vertex, one thread, a body resting on the floor (docs/perf_step.csv, icosphere:3;
-// bench/run_performance.sh): the explicit methods' force evaluations per step set it. 0: not estimated
-// (implicit: its solver's iterations grow with dt and the mesh: 474 ns at icosphere:3 and 750 at
-// :5 for implicit at its stable dt).
+// bench/run_performance.sh): the explicit methods' force evaluations per step set it. 0: not estimated here (xpbd
+// and vbd print their own cost lines).
 double step_ns_per_vertex(sim::IntegratorKind integrator) {
   switch (integrator) {
     case sim::IntegratorKind::Euler: return 26.0;

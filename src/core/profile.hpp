@@ -23,7 +23,7 @@ enum class ProfilePhase : int {
   forces,             // gravity, springs, dampers and bending links
   gas,                // the gas's face pass: volume and area sums
   smooth_contact,     // the smooth floor's and the smooth body contact's forces
-  constraint_sweeps,  // xpbd's constraint passes; implicit's conjugate-gradient solves
+  constraint_sweeps,  // xpbd's constraint passes
   body_contact,       // impulses between bodies after a step
   floor_contact,      // the floor's contact model after a step
   guard,              // the step's divergence checks

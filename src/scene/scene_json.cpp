@@ -230,6 +230,13 @@ sim::Solver read_solver(const ObjectReader& top) {
            "and was cheaper and more accurate in every case measured (docs/physics/integrators.md)",
            &r.at("integrator"));
   }
+  if (r.has("integrator") && r.at("integrator") == "implicit") {
+    r.fail(r.child("integrator"),
+           "\"implicit\" was removed: use \"vbd\" (every force implicit, second order, no stable-step limit), "
+           "which was cheaper and more accurate on every benchmark scene (docs/physics/integrators.md), with "
+           "solver.substeps: \"auto\" to let it choose its steps",
+           &r.at("integrator"));
+  }
   solver.integrator = r.choice<sim::IntegratorKind>("integrator", integrators);
   if (r.has("dt") && r.at("dt").is_string()) {
     if (r.at("dt").get<std::string>() != "auto")

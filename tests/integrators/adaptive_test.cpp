@@ -96,7 +96,8 @@ TEST_P(EveryIntegrator, RerunsAreBitIdentical) {
 INSTANTIATE_TEST_SUITE_P(All, EveryIntegrator,
                          ::testing::Values(sim::IntegratorKind::Euler, sim::IntegratorKind::Symplectic,
                                            sim::IntegratorKind::Verlet, sim::IntegratorKind::Rk4,
-                                           sim::IntegratorKind::Rk45, sim::IntegratorKind::Implicit),
+                                           sim::IntegratorKind::Rk45, sim::IntegratorKind::Xpbd,
+                                           sim::IntegratorKind::Vbd),
                          [](const ::testing::TestParamInfo<sim::IntegratorKind>& test) {
                            return sim::to_string(test.param);
                          });

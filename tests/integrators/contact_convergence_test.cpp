@@ -1,6 +1,6 @@
 // Convergence orders through an impact: with the smooth floor contact the equations of motion stay an ODE
 // with a C² right-hand side, so each integrator keeps its order on a ball that lands, slides and bounces.
-// Measured (fitted over four halvings): euler 1.05, symplectic 1.01, verlet 2.05, rk4 5.3, implicit 0.99; rk45's
+// Measured (fitted over four halvings): euler 1.05, symplectic 1.01, verlet 2.05, rk4 5.3; rk45's
 // error ∝ tolerance^1.07. With the friction contact (a projection after the step) every method is first order.
 #include <cmath>
 #include <cstdio>
@@ -52,8 +52,7 @@ INSTANTIATE_TEST_SUITE_P(SmoothFloorImpact, ContactConvergenceOrder,
                          ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
                                            OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
                                            OrderCase{sim::IntegratorKind::Verlet, 1e-4, 2.0},
-                                           OrderCase{sim::IntegratorKind::Rk4, 4e-4, 4.0},
-                                           OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0}),
+                                           OrderCase{sim::IntegratorKind::Rk4, 4e-4, 4.0}),
                          [](const ::testing::TestParamInfo<OrderCase>& test) {
                            return sim::to_string(test.param.integrator);
                          });

@@ -50,8 +50,7 @@ INSTANTIATE_TEST_SUITE_P(SmoothBreathingSphere, ConvergenceOrder,
                          ::testing::Values(OrderCase{sim::IntegratorKind::Euler, 1e-4, 1.0},
                                            OrderCase{sim::IntegratorKind::Symplectic, 1e-4, 1.0},
                                            OrderCase{sim::IntegratorKind::Verlet, 4e-4, 2.0},
-                                           OrderCase{sim::IntegratorKind::Rk4, 1.28e-3, 4.0},
-                                           OrderCase{sim::IntegratorKind::Implicit, 1e-4, 1.0}),
+                                           OrderCase{sim::IntegratorKind::Rk4, 1.28e-3, 4.0}),
                          [](const ::testing::TestParamInfo<OrderCase>& test) {
                            return sim::to_string(test.param.integrator);
                          });

@@ -1,4 +1,5 @@
-// Stability at large steps: the linearised implicit method stays stable 10× beyond the explicit limit.
+// Stability at large steps: vbd, every force implicit, stays stable 10× beyond the explicit limit; the explicit
+// methods diverge there.
 #include <cmath>
 #include <cstdio>
 
@@ -37,8 +38,8 @@ sim::World shaken_world(sim::IntegratorKind integrator) {
   return world;
 }
 
-TEST(ImplicitStability, TenTimesBeyondTheExplicitLimitEnergyNeverGrows) {
-  sim::World world = shaken_world(sim::IntegratorKind::Implicit);
+TEST(VbdStability, TenTimesBeyondTheExplicitLimitEnergyNeverGrows) {
+  sim::World world = shaken_world(sim::IntegratorKind::Vbd);
   const double e0 = total_energy(world);
   double highest = e0;
   for (int s = 0; s < kSteps; ++s) {
@@ -46,8 +47,8 @@ TEST(ImplicitStability, TenTimesBeyondTheExplicitLimitEnergyNeverGrows) {
     highest = std::max(highest, total_energy(world));
   }
   const double e_end = total_energy(world);
-  std::printf("implicit, dt = %.3g s: E0 = %.4f J, highest E = %.4f J, E after %d steps = %.4f J\n", kLargeStep, e0,
-              highest, kSteps, e_end);
+  std::printf("vbd, dt = %.3g s: E0 = %.4f J, highest E = %.4f J, E after %d steps = %.4f J\n", kLargeStep, e0, highest,
+              kSteps, e_end);
   EXPECT_LE(highest, e0 + 1e-9 * std::abs(e0));
   EXPECT_LT(e_end, e0);
 }

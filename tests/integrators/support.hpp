@@ -9,7 +9,6 @@
 #include <Eigen/Core>
 
 #include "scene/scene.hpp"
-#include "sim/solvers/block_system.hpp"
 #include "sim/step/world.hpp"
 
 namespace integrator_tests {

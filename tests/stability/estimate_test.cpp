@@ -82,7 +82,7 @@ TEST(InfoCommand, PrintsTheEstimateAndDtAutoUsesIt) {
   const auto result = testing_support::run_softbody("info scenes/bounce.json --set solver.dt=auto");
   EXPECT_EQ(result.exit_status, 0) << result.output;
   for (const char* expected :
-       {"642 vertices, 1920 springs", "lumped vertex masses", "omega_max", "euler       0.000125 ", "implicit",
+       {"642 vertices, 1920 springs", "lumped vertex masses", "omega_max", "euler       0.000125 ", "vbd",
         "solver.dt = auto: 8.75e-05 s (0.70 x the estimated stable dt of euler"}) {
     EXPECT_NE(result.output.find(expected), std::string::npos) << expected << "\n" << result.output;
   }

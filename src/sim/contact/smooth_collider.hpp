@@ -3,7 +3,7 @@
 // at the vertex (sim/contact/collider_shape.hpp) in place of the floor's floor − y and +y:
 //   f = [m ω² δ P(d/δ) − m 2ζω (v·n) s(d/δ)] n − μ m ω² δ P(d/δ) v_t / √(|v_t|² + ε²),   v_t = v − (v·n) n   [N]
 //   E = m ω² δ² R(d/δ)                                                                                   [J]
-// As a force inside a(x, v) it serves every explicit integrator and the linearised implicit one. For vbd the same
+// As a force inside a(x, v) it serves every explicit integrator. For vbd the same
 // terms are written as parts of the step's energy, with the dashpot's weight, friction's normal force and the
 // normal n lagged (taken at an earlier iterate, as IPC lags its friction: Li et al. 2020, §5):
 //   spring    U = m ω² δ² R(d(x)/δ)                    ∇ = −m ω² δ P n(x)       ∇² ≈ m ω² s(d/δ) n nᵀ

@@ -2,8 +2,8 @@
 // corners of the edge's two triangles), resting at its length in the placed mesh.
 //
 // Why links and not dihedral-angle springs (Bridson, Marino & Fedkiw 2003): a link is a Hooke spring like
-// the edges, so every integrator already has what it needs: the fused force pass (sim/forces/forces.hpp), the exact
-// Jacobian of implicit (sim/forces/spring_jacobian.hpp), vbd's 3×3 blocks, xpbd's distance
+// the edges, so every integrator already has what it needs: the fused force pass (sim/forces/forces.hpp), vbd's
+// 3×3 blocks, xpbd's distance
 // constraint, the stability estimate's power iterations. Folding the hinge (i, j | a, b) by an angle δ away
 // from its rest dihedral θ0 changes the link length by δ · h_a h_b sin θ0 / L_ab (h: the heights of the two
 // triangles over the edge), so its bending stiffness is k_b (h_a h_b sin θ0 / L_ab)² [N·m/rad] per link:

@@ -3,7 +3,6 @@
 
 #include "sim/integrators/dormand_prince.hpp"
 #include "sim/integrators/euler.hpp"
-#include "sim/integrators/implicit_euler.hpp"
 #include "sim/integrators/runge_kutta4.hpp"
 #include "sim/integrators/symplectic_euler.hpp"
 #include "sim/integrators/velocity_verlet.hpp"
@@ -19,7 +18,6 @@ std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
     case IntegratorKind::Verlet: return std::make_unique<VelocityVerlet>();
     case IntegratorKind::Rk4: return std::make_unique<RungeKutta4>();
     case IntegratorKind::Rk45: return std::make_unique<DormandPrince>(solver.tolerance);
-    case IntegratorKind::Implicit: return std::make_unique<ImplicitEuler>();
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
     case IntegratorKind::Vbd:
       return std::make_unique<VertexBlockDescent>(

@@ -1,5 +1,5 @@
 // Time integrators. Each sees the system only through Dynamics ("forces and accelerations of this state",
-// and the model for the implicit method's spring network), so forces, contacts and guards are written once
+// and the model for the methods that solve a step over the mesh), so forces, contacts and guards are written once
 // for all of them. An integrator object holds scratch only: what it carries from one step to the next lives
 // in State::carry, so a copied State is a checkpoint.
 //

@@ -20,7 +20,6 @@ enum class IntegratorKind {
   Verlet,      // velocity Verlet: second order, one force evaluation per step
   Rk4,         // classical Runge–Kutta: fourth order, four force evaluations per step
   Rk45,        // Dormand–Prince 5(4): adaptive step from an error estimate (solver.tolerance)
-  Implicit,    // linearised backward Euler (Baraff & Witkin 1998): first order, stable at large steps
   Xpbd,        // substepped extended position-based dynamics (Macklin et al. 2016, 2019): first order, one
                // constraint pass per substep, springs as compliant constraints: stable at large steps
   Vbd,         // vertex block descent (Chen et al. 2024) on BDF2's implicit step, every force implicit: second order
@@ -33,7 +32,7 @@ struct IntegratorInfo {
   std::string_view name;  // in scene files, on the command line, in CSVs and messages
   int order;              // convergence order on smooth motion (rk45: 5, its propagated solution)
   bool adaptive;          // chooses its own step sizes (driven by sim::advance_to)
-  bool explicit_springs;  // the springs limit its stable step (every method but implicit, xpbd and vbd)
+  bool explicit_springs;  // the springs limit its stable step (every method but xpbd and vbd)
   bool position_based;    // velocities follow from positions, v = (x − x_prev)/h, and the friction floor is a
                           // positional constraint with static friction (xpbd only; sim/contact/contact.hpp)
   bool frame_substeps;    // its step is solver.substeps per frame interval (or "auto"), not solver.dt (xpbd, vbd)
@@ -41,13 +40,12 @@ struct IntegratorInfo {
 
 // Every integrator, in the order of the enum: the parser, `info`, the stability estimate and the
 // benchmarks all iterate this list.
-inline constexpr std::array<IntegratorInfo, 8> kIntegrators = {{
+inline constexpr std::array<IntegratorInfo, 7> kIntegrators = {{
     {IntegratorKind::Euler, "euler", 1, false, true, false, false},
     {IntegratorKind::Symplectic, "symplectic", 1, false, true, false, false},
     {IntegratorKind::Verlet, "verlet", 2, false, true, false, false},
     {IntegratorKind::Rk4, "rk4", 4, false, true, false, false},
     {IntegratorKind::Rk45, "rk45", 5, true, true, false, false},
-    {IntegratorKind::Implicit, "implicit", 1, false, false, false, false},
     {IntegratorKind::Xpbd, "xpbd", 1, false, false, true, true},
     {IntegratorKind::Vbd, "vbd", 2, false, false, false, true},
 }};

@@ -5,8 +5,6 @@
 
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "core/vec.hpp"
 
 namespace sim {
@@ -19,9 +17,6 @@ struct IntegratorCarry {
   // the next step evaluates it). Velocity Verlet: a(x', v*) of the last step, for the first kick. rk45: a(x, v)
   // of the state (the FSAL stage). Invalidated when a contact moves the state under the integrator.
   std::vector<Vec3> acceleration;
-  // Implicit Euler: the last step's velocity change, the conjugate-gradient solve's warm start [m/s per
-  // vertex component, 3n entries]; empty at the start (a zero guess).
-  Eigen::VectorXd velocity_change;
   // xpbd's carried form: every body's edge and bending-link constraints' forces of the last substep, T = −Δλ/h²
   // [N], body by body (its edges, then its links); empty at the start (none carried: zero; the next substep is then
   // a run's first, which kicks by h/2: sim/integrators/xpbd.hpp).

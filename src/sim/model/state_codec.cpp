@@ -90,7 +90,6 @@ std::string encode_state(const State& state) {
   w.scalar(state.next_dt_s);
   w.scalar(state.last_dt_s);
   w.vectors(state.carry.acceleration);
-  w.array(state.carry.velocity_change.data(), static_cast<std::size_t>(state.carry.velocity_change.size()));
   w.array(state.carry.edge_tension_N.data(), state.carry.edge_tension_N.size());
   w.vectors(state.carry.previous_x);
   w.vectors(state.carry.previous_v);
@@ -124,9 +123,6 @@ State decode_state(std::string_view bytes, const Model& model) {
   state.next_dt_s = r.scalar<double>("next dt");
   state.last_dt_s = r.scalar<double>("last dt");
   state.carry.acceleration = r.vectors("carried acceleration", n);
-  const std::vector<double> change = r.array<double>("carried velocity change", 3 * n);
-  state.carry.velocity_change =
-      Eigen::Map<const Eigen::VectorXd>(change.data(), static_cast<Eigen::Index>(change.size()));
   std::size_t constraints = 0;
   for (const Body& body : model.bodies) constraints += body.constraints.size();
   state.carry.edge_tension_N = r.array<double>("carried edge tensions", constraints);

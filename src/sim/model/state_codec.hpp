@@ -12,8 +12,9 @@
 namespace sim {
 
 // The layout version of encode_state(); bump it whenever State gains or changes a field.
-// 2: xpbd's carried edge tensions; 3: vbd's BDF2 history; 4: its second step of history
-inline constexpr std::uint32_t kStateCodecVersion = 4;
+// 2: xpbd's carried edge tensions; 3: vbd's BDF2 history; 4: its second step of history; 5: implicit's carried
+// velocity change removed
+inline constexpr std::uint32_t kStateCodecVersion = 5;
 
 // Every field of `state`, little-endian, doubles as their IEEE bits (exact).
 std::string encode_state(const State& state);

@@ -30,7 +30,7 @@ std::string describe(const DivergenceReport& report) {
   message << " " << report.finding.what << "; estimated stable: " << stable_dt_words(report.stable_dt_s) << " for "
           << to_string(report.integrator);
   if (integrator_info(report.integrator).explicit_springs) {
-    message << ", " << stable_dt_words(report.implicit_stable_dt_s) << " for implicit";
+    message << "; vbd takes every force implicitly, at any dt";
   }
   message << " (softbody info SCENE prints the estimate)";
   return message.str();

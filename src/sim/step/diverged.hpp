@@ -15,15 +15,14 @@ struct DivergenceReport {
   long long step = 0;   // the step that produced it (counting from 1)
   double dt_s = 0.0;    // the step size that produced it
   IntegratorKind integrator = IntegratorKind::Euler;
-  // The stable-dt estimate at the model's initial state (sim/step/stability.hpp): for `integrator`, and for the
-  // implicit method (0: no stable dt; infinite: any dt).
+  // The stable-dt estimate at the model's initial state (sim/step/stability.hpp) for `integrator` (0: no stable dt;
+  // infinite: any dt).
   double stable_dt_s = 0.0;
-  double implicit_stable_dt_s = 0.0;
 };
 
 // "diverged at t = 0.0954 s (step 478, dt = 0.0002 s, euler): body 0, vertex 637 runaway speed: ...;
-// estimated stable: dt <= 0.000125 s for euler, dt <= 0.0404 s for implicit (softbody info SCENE prints
-// the estimate)"
+// estimated stable: dt <= 0.000125 s for euler; vbd takes every force implicitly, at any dt (softbody info SCENE
+// prints the estimate)"
 std::string describe(const DivergenceReport& report);
 
 // The error a step throws when the guard stops a run: softbody::DivergedError (exit status 3) with the

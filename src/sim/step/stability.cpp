@@ -169,7 +169,7 @@ Mat3 amplification(IntegratorKind integrator, double h, double mu, double gamma)
       G(2, 2) = 0.0;
       break;
     }
-    default: break;  // implicit: stable_dt() answers without an amplification matrix
+    default: break;  // xpbd, vbd: stable_dt() answers without an amplification matrix
   }
   return G;
 }
@@ -252,10 +252,9 @@ ModeBounds mode_bounds(const Body& body, std::span<const Vec3> x) {
 
 double stable_dt(IntegratorKind integrator, const ModeBounds& bounds) {
   const double mu_max = bounds.omega2_springs + bounds.omega2_gas + bounds.omega2_contact;
-  if (integrator == IntegratorKind::Implicit || integrator == IntegratorKind::Xpbd) {
-    // implicit: springs and dampers implicit (unconditionally stable); xpbd: springs and dampers as compliant
-    // constraints, which for one mode is backward Euler on them. Both take the gas (and a smooth contact)
-    // explicitly as symplectic Euler does (xpbd's prediction is a symplectic-Euler kick and drift).
+  if (integrator == IntegratorKind::Xpbd) {
+    // Springs and dampers as compliant constraints, which for one mode is backward Euler on them. The gas (and a
+    // smooth contact) explicit as symplectic Euler takes them (xpbd's prediction is a symplectic-Euler kick and drift).
     const double explicit_omega2 = bounds.omega2_gas + bounds.omega2_contact;
     return explicit_omega2 > 0.0 ? 2.0 / std::sqrt(explicit_omega2) : StabilityEstimate::kUnlimited;
   }
@@ -437,7 +436,7 @@ double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, dou
   if (limit == 0.0) {
     throw softbody::InputError(scene_file + ": solver.dt: \"auto\" found no stable dt for " + to_string(integrator) +
                                " (forward Euler needs dampers: give every body damping > 0, or choose "
-                               "solver.integrator symplectic, verlet, rk4, rk45 or implicit)");
+                               "solver.integrator symplectic, verlet, rk4, rk45 or vbd)");
   }
   if (limit == StabilityEstimate::kUnlimited) return frame_interval_s / 4.0;
   return std::min(kAutoDtSafety * limit, frame_interval_s);

@@ -18,7 +18,6 @@
 //   verlet       kick-drift-kick with cached a (3×3 map)         h < 2/ω
 //   rk4          Σ_{j≤4} (hA)^j / j!                             h < 2.83/ω
 //   rk45         Σ_{j≤5} (hA)^j / j! + (hA)^6 / 600 (DOPRI5)     h < 3.3/ω (step chosen adaptively)
-//   implicit     springs and dampers implicit: no limit; the gas (and a smooth contact) explicit: h < 2/ω_gas
 //   xpbd         springs and dampers as compliant constraints: no limit; the gas explicit: h < 2/ω_gas
 #pragma once
 
@@ -114,9 +113,9 @@ constexpr double kPaperEulerZeta = 0.5;
 StabilityEstimate estimate_stability(const Model& model, const State& state);
 StabilityEstimate estimate_stability(std::span<const Body> bodies, std::span<const Vec3> x);
 
-// The dt `solver.dt: "auto"` uses: kAutoDtSafety × the estimate; the implicit method, whose springs have
-// no limit, is capped at `frame_interval_s`/4 for accuracy. Throws softbody::InputError for forward Euler
-// without dampers (unstable at every dt), naming the key.
+// The dt `solver.dt: "auto"` uses: kAutoDtSafety × the estimate; where nothing limits it (free particles), a quarter
+// of `frame_interval_s` for accuracy. Throws softbody::InputError for forward Euler without dampers (unstable at every
+// dt), naming the key.
 double auto_dt(const StabilityEstimate& estimate, IntegratorKind integrator, double frame_interval_s,
                const std::string& scene_file);
 

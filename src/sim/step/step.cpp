@@ -166,8 +166,7 @@ StabilityEstimate estimate_at_start(const Model& model) {
                                  double dt) {
   const StabilityEstimate estimate = estimate_at_start(model);
   const IntegratorKind integrator = model.solver.integrator;
-  throw DivergedError(DivergenceReport{found, time_s, step, dt, integrator, estimate.stable_dt(integrator),
-                                       estimate.stable_dt(IntegratorKind::Implicit)});
+  throw DivergedError(DivergenceReport{found, time_s, step, dt, integrator, estimate.stable_dt(integrator)});
 }
 
 // Keeps the state before a step that may be rejected, with what the step needs from it already evaluated.
@@ -239,7 +238,6 @@ bool advance_to(const Model& model, State& state, Workspace& workspace, double e
                                            state.steps,
                                            dt,
                                            model.solver.integrator,
-                                           0.0,
                                            0.0});
     }
     // Phase 1 with the error estimate; a rejected attempt returns to the saved state.
