@@ -95,10 +95,10 @@ void print_xpbd(const sim::Model& model, const sim::StabilityEstimate& estimate,
               frame_interval_s / substeps, per_frame, cost, substeps_per_s, vertices, kXpbdSubstepNsPerVertex);
 }
 
-// What one vbd sweep costs per vertex, one thread, the affine correction included [ns of CPU time]: 220 in flight on
-// scenes/bounce_smooth.json's ball at icosphere:3 (bench_vbd_sweep: 221; 232 at icosphere:5;
-// docs/notes/2026-12-05-vbd-loop.md).
-constexpr double kVbdSweepNsPerVertex = 220.0;
+// What one vbd sweep costs per vertex, one thread, the affine correction included [ns of CPU time]: 155 in flight on
+// scenes/bounce_smooth.json's ball at icosphere:3 with the lanes (bench_vbd_sweep; 162 at icosphere:5; without the
+// lanes 218 and 229: docs/notes/2026-12-05-vbd-lanes.md).
+constexpr double kVbdSweepNsPerVertex = 155.0;
 
 // The ω [1/s] of the stiffest smooth contact (floor, collider or between bodies) of `model`; 0 for none.
 double stiffest_smooth_contact(const sim::Model& model) {

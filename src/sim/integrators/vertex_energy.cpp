@@ -154,10 +154,6 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
   return terms;
 }
 
-// β: the derivative of (I − n̂n̂ᵀ)/l along a unit vector at cosine c to n̂ has the norm (|c| + √(4 − 3c²))/(2l²), at
-// most 2/(√3 l²) (at c² = 1/3); rounded up.
-constexpr double kSpringHessianVariation = 1.1547006;
-
 bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
                   double slope) {
   if (!s.colliders.empty() || s.contacts != nullptr) return false;  // their terms are not in the bound

@@ -173,6 +173,9 @@ VertexTerms vertex_terms(const BodySolve& s, int i, std::span<const Vec3> x, dou
 // and the inertia are quadratic. B |Δ|² ≤ ½ |∇E·Δ| leaves E falling by at least ¼ |∇E·Δ|, far beyond kArmijo and
 // round-off. Not where a smooth contact is near (the floor's terms at either end, or any smooth collider): those always
 // search.
+// β: the derivative of (I − n̂n̂ᵀ)/l along a unit vector at cosine c to n̂ has the norm (|c| + √(4 − 3c²))/(2l²), at
+// most 2/(√3 l²) (at c² = 1/3); rounded up.
+inline constexpr double kSpringHessianVariation = 1.1547006;
 bool sure_descent(const BodySolve& s, const VertexTerms& terms, const Vec3& x, double volume, const Vec3& step,
                   double slope);
 

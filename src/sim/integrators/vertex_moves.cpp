@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/integrators/vertex_move_lanes.hpp"
+
 namespace sim {
 namespace {
 
@@ -14,6 +16,7 @@ constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this
 MoveCounts& MoveCounts::operator+=(const MoveCounts& other) {
   vertex_solves += other.vertex_solves;
   sure_steps += other.sure_steps;
+  lane_moves += other.lane_moves;
   halvings += other.halvings;
   refused_moves += other.refused_moves;
   return *this;
@@ -91,24 +94,50 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
   const int part_count = parts.bounds.empty() ? 1 : static_cast<int>(parts.bounds.size()) - 1;
   size_scratch(s, n, part_count, scratch);
   const double start_volume = volume;
+  const bool lanes = lanes_serve(s);
   runner.run(part_count, [&](int part) {
     ConstraintLags& lags = scratch.lags[static_cast<std::size_t>(part)];
     MoveCounts part_counts;  // on this thread's stack: the parts' counts share cache lines
-    const auto move_slot = [&](std::size_t slot) {
+    const auto apply = [&](std::size_t slot, const VertexMove& move) {
       const auto vi = static_cast<std::size_t>(colour[slot]);
       scratch.start[slot] = x[vi];
-      const VertexMove move = vertex_move(s, colour[slot], x, start_volume, lags, part_counts);
       x[vi] += move.step;
       scratch.volume_change[slot] = move.volume_change_m3;
       scratch.energy_bound[slot] = move.energy_bound_J;
     };
-    if (parts.bounds.empty()) {
-      for (std::size_t slot = 0; slot < n; ++slot) move_slot(slot);
-    } else {
-      for (int k = parts.bounds[static_cast<std::size_t>(part)]; k < parts.bounds[static_cast<std::size_t>(part) + 1];
-           ++k) {
-        move_slot(static_cast<std::size_t>(parts.slots[static_cast<std::size_t>(k)]));
+    const auto move_slot = [&](std::size_t slot) {
+      apply(slot, vertex_move(s, colour[slot], x, start_volume, lags, part_counts));
+    };
+    // The part's slots kLanes at a time: the lanes take the vertices whose step is sure, vertex_move the others.
+    const auto move_slots = [&](auto slot_at, std::size_t count) {
+      std::size_t k = 0;
+      if (lanes) {
+        for (; k + kLanes <= count; k += kLanes) {
+          std::size_t slots[kLanes];
+          int vertices[kLanes];
+          VertexMove moves[kLanes];
+          for (int l = 0; l < kLanes; ++l) {
+            slots[l] = slot_at(k + static_cast<std::size_t>(l));
+            vertices[l] = colour[slots[l]];
+          }
+          const unsigned taken = sure_moves_in_lanes(s, vertices, kLanes, x, start_volume, moves, part_counts);
+          for (int l = 0; l < kLanes; ++l) {
+            if ((taken & (1u << l)) != 0) {
+              apply(slots[l], moves[l]);
+            } else {
+              move_slot(slots[l]);
+            }
+          }
+        }
       }
+      for (; k < count; ++k) move_slot(slot_at(k));
+    };
+    if (parts.bounds.empty()) {
+      move_slots([](std::size_t k) { return k; }, n);
+    } else {
+      const auto begin = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part)]);
+      const auto end = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part) + 1]);
+      move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + k]); }, end - begin);
     }
     scratch.counts[static_cast<std::size_t>(part)] = part_counts;
   });

@@ -14,6 +14,7 @@ namespace sim {
 struct MoveCounts {
   long long vertex_solves = 0;  // local Newton steps tried
   long long sure_steps = 0;     // of those, steps taken without a line search (sure_descent)
+  long long lane_moves = 0;     // of those, steps taken four at a time (sim/integrators/vertex_move_lanes.hpp)
   long long halvings = 0;       // line-search step halvings
   long long refused_moves = 0;  // local steps no halving made lower E: the vertex stayed
 

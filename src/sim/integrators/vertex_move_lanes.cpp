@@ -1,0 +1,251 @@
+// Four vertices' Newton steps at once, one per AVX2 lane, in vertex_move's arithmetic (see vertex_energy.cpp: each
+// expression below is the one there, evaluated in the same order, without fused multiply-adds, so each lane gives the
+// same bits as the scalar code).
+#include "sim/integrators/vertex_move_lanes.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace sim {
+namespace {
+
+std::atomic<bool> lanes_enabled{true};
+
+}  // namespace
+
+void enable_lanes(bool enabled) { lanes_enabled.store(enabled, std::memory_order_relaxed); }
+
+#if defined(__x86_64__)
+
+namespace {
+
+#define SOFTBODY_LANES_TARGET __attribute__((target("avx2")))
+
+using Lane = __m256d;  // one double per vertex
+
+SOFTBODY_LANES_TARGET inline Lane splat(double a) { return _mm256_set1_pd(a); }
+SOFTBODY_LANES_TARGET inline Lane lanes_of(double a0, double a1, double a2, double a3) {
+  return _mm256_set_pd(a3, a2, a1, a0);
+}
+SOFTBODY_LANES_TARGET inline Lane select(Lane mask, Lane a, Lane b) { return _mm256_blendv_pd(b, a, mask); }
+SOFTBODY_LANES_TARGET inline Lane negate(Lane a) { return _mm256_xor_pd(a, splat(-0.0)); }
+SOFTBODY_LANES_TARGET inline Lane less(Lane a, Lane b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
+SOFTBODY_LANES_TARGET inline Lane any_of(Lane a, Lane b) { return _mm256_or_pd(a, b); }
+
+// A vector per lane, each component as one Lane.
+struct Lane3 {
+  Lane x, y, z;
+};
+SOFTBODY_LANES_TARGET inline Lane3 gather(std::span<const Vec3> p, const std::size_t* i) {
+  return {lanes_of(p[i[0]].x(), p[i[1]].x(), p[i[2]].x(), p[i[3]].x()),
+          lanes_of(p[i[0]].y(), p[i[1]].y(), p[i[2]].y(), p[i[3]].y()),
+          lanes_of(p[i[0]].z(), p[i[1]].z(), p[i[2]].z(), p[i[3]].z())};
+}
+SOFTBODY_LANES_TARGET inline Lane gather(const std::vector<double>& a, const std::size_t* i) {
+  return lanes_of(a[i[0]], a[i[1]], a[i[2]], a[i[3]]);
+}
+SOFTBODY_LANES_TARGET inline Lane3 minus(const Lane3& a, const Lane3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+SOFTBODY_LANES_TARGET inline Lane dot(const Lane3& a, const Lane3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// The lanes' symmetric 3×3 blocks (Block3's upper triangle).
+struct LaneBlock {
+  Lane xx, xy, xz, yy, yz, zz;
+};
+// Where `valid`: += a u uᵀ, as Block3::add_outer.
+SOFTBODY_LANES_TARGET inline void add_outer(LaneBlock& h, Lane valid, Lane a, const Lane3& u) {
+  const Lane ax = a * u.x, ay = a * u.y, az = a * u.z;
+  h.xx = select(valid, h.xx + ax * u.x, h.xx);
+  h.xy = select(valid, h.xy + ax * u.y, h.xy);
+  h.xz = select(valid, h.xz + ax * u.z, h.xz);
+  h.yy = select(valid, h.yy + ay * u.y, h.yy);
+  h.yz = select(valid, h.yz + ay * u.z, h.yz);
+  h.zz = select(valid, h.zz + az * u.z, h.zz);
+}
+
+// Row `slot` of each lane's compressed rows starting at start[l] with count[l] entries: the entry's index, or (past
+// the row's end) the row's first entry or 0, valid indices that the mask discards.
+inline void row_entries(const int* start, const int* count, int slot, std::size_t* index) {
+  for (int l = 0; l < kLanes; ++l) {
+    const int within = count[l] == 0 ? 0 : std::min(slot, count[l] - 1);
+    index[l] = static_cast<std::size_t>(count[l] == 0 ? 0 : start[l] + within);
+  }
+}
+
+SOFTBODY_LANES_TARGET unsigned sure_moves_avx2(const BodySolve& s, const int* vertices, int count,
+                                               std::span<const Vec3> x, double volume, VertexMove* moves,
+                                               MoveCounts& counts) {
+  const VertexBlocks& b = s.blocks;
+  if (b.other_end.empty() || (s.gas && b.face_others.empty())) return 0;
+  if (s.gas && volume <= s.gas->guard_m3) return 0;  // sure_descent refuses every vertex there
+  std::size_t v[kLanes];
+  int first[kLanes], valence[kLanes], face_first[kLanes], faces[kLanes];
+  int most = 0, most_faces = 0;
+  for (int l = 0; l < kLanes; ++l) {
+    v[l] = static_cast<std::size_t>(vertices[l < count ? l : 0]);  // lanes past count repeat the first: never taken
+    first[l] = b.constraint_start[v[l]];
+    valence[l] = b.constraint_start[v[l] + 1] - first[l];
+    face_first[l] = b.face_start[v[l]];
+    faces[l] = b.face_start[v[l] + 1] - face_first[l];
+    most = std::max(most, valence[l]);
+    most_faces = std::max(most_faces, faces[l]);
+  }
+  const Lane valences = lanes_of(valence[0], valence[1], valence[2], valence[3]);
+  const Lane face_counts = lanes_of(faces[0], faces[1], faces[2], faces[3]);
+  Lane refused = _mm256_cmp_pd(lanes_of(0, 1, 2, 3), splat(count), _CMP_NLT_UQ);  // the lanes past count
+
+  // vertex_terms: inertia.
+  const Lane3 xi = gather(x, v), base_i = gather(s.base, v), target = gather(s.target, v);
+  const Lane inertia =
+      lanes_of(s.mass_kg[v[0]], s.mass_kg[v[1]], s.mass_kg[v[2]], s.mass_kg[v[3]]) * splat(s.inverse_h2);
+  Lane3 g{inertia * (xi.x - target.x), inertia * (xi.y - target.y), inertia * (xi.z - target.z)};
+  const Lane zero = splat(0.0);
+  LaneBlock h{zero + inertia, zero, zero, zero + inertia, zero, zero + inertia};
+  const Lane inverse_h = splat(1.0 / s.h_hat);
+  const Lane3 moved_i = minus(xi, base_i);
+  Lane shortest = select(less(zero, valences), splat(std::numeric_limits<double>::infinity()), zero);
+  Lane spring_variation = zero;
+  // Its constraints, in row order.
+  for (int slot = 0; slot < most; ++slot) {
+    std::size_t e[kLanes], j[kLanes];
+    row_entries(first, valence, slot, e);
+    for (int l = 0; l < kLanes; ++l) j[l] = static_cast<std::size_t>(b.other_end[e[l]]);
+    const Lane valid = less(splat(slot), valences);
+    const Lane3 xj = gather(x, j);
+    const Lane3 d = minus(xi, xj);
+    const Lane length = _mm256_sqrt_pd(dot(d, d));
+    shortest = select(valid, select(less(length, shortest), length, shortest), shortest);
+    refused = any_of(refused, _mm256_and_pd(valid, _mm256_cmp_pd(length, zero, _CMP_EQ_OQ)));
+    const Lane inverse_length = splat(1.0) / length, rest = gather(b.rest_length_m, e);
+    const Lane3 axis{inverse_length * d.x, inverse_length * d.y, inverse_length * d.z};
+    const Lane k = gather(b.stiffness_N_per_m, e), c_over_h = gather(b.damping_N_s_per_m, e) * inverse_h;
+    spring_variation = select(valid, spring_variation + k * rest * inverse_length * inverse_length, spring_variation);
+    const Lane3 base_j = gather(s.base, j);
+    const Lane rate = dot(minus(moved_i, minus(xj, base_j)), axis);
+    const Lane force = k * (length - rest) + c_over_h * rate;
+    g = {select(valid, g.x + force * axis.x, g.x), select(valid, g.y + force * axis.y, g.y),
+         select(valid, g.z + force * axis.z, g.z)};
+    const Lane stretch = splat(1.0) - rest * inverse_length;
+    const Lane transverse = k * select(less(zero, stretch), stretch, zero);
+    h.xx = select(valid, h.xx + transverse, h.xx);
+    h.yy = select(valid, h.yy + transverse, h.yy);
+    h.zz = select(valid, h.zz + transverse, h.zz);
+    add_outer(h, valid, k + c_over_h - transverse, axis);
+  }
+  // The gas: g_i = Σ_f (x_b − x_i) × (x_c − x_i) / 6 (the same bits as from the edge vectors: both factors negated).
+  Lane3 volume_gradient{zero, zero, zero};
+  if (s.gas) {
+    Lane3 sum{zero, zero, zero};
+    for (int slot = 0; slot < most_faces; ++slot) {
+      std::size_t f[kLanes], corner_b[kLanes], corner_c[kLanes];
+      row_entries(face_first, faces, slot, f);
+      for (int l = 0; l < kLanes; ++l) {
+        corner_b[l] = static_cast<std::size_t>(b.face_others[f[l]][0]);
+        corner_c[l] = static_cast<std::size_t>(b.face_others[f[l]][1]);
+      }
+      const Lane valid = less(splat(slot), face_counts);
+      const Lane3 u = minus(gather(x, corner_b), xi), w = minus(gather(x, corner_c), xi);
+      sum = {select(valid, sum.x + (u.y * w.z - u.z * w.y), sum.x),
+             select(valid, sum.y + (u.z * w.x - u.x * w.z), sum.y),
+             select(valid, sum.z + (u.x * w.y - u.y * w.x), sum.z)};
+    }
+    const Lane sixth = splat(1.0 / 6.0);
+    volume_gradient = {sum.x * sixth, sum.y * sixth, sum.z * sixth};
+    const Lane pressure = splat(s.gas->pressure(volume));
+    g = {g.x - pressure * volume_gradient.x, g.y - pressure * volume_gradient.y, g.z - pressure * volume_gradient.z};
+    add_outer(h, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)), splat(s.gas->stiffness(volume)), volume_gradient);
+  }
+  // The smooth floor: a lane whose vertex is in its range takes the scalar path.
+  if (s.floor) refused = any_of(refused, _mm256_cmp_pd(splat(s.floor->height_m) - xi.y, zero, _CMP_NLE_UQ));
+
+  // vertex_move: the Newton step by the adjugate (Block3::solve), negated.
+  const Lane c_xx = h.yy * h.zz - h.yz * h.yz, c_xy = h.xz * h.yz - h.xy * h.zz, c_xz = h.xy * h.yz - h.xz * h.yy;
+  const Lane c_yy = h.xx * h.zz - h.xz * h.xz, c_yz = h.xy * h.xz - h.xx * h.yz, c_zz = h.xx * h.yy - h.xy * h.xy;
+  const Lane inverse_det = splat(1.0) / (h.xx * c_xx + h.xy * c_xy + h.xz * c_xz);
+  const Lane3 step{negate(inverse_det * (c_xx * g.x + c_xy * g.y + c_xz * g.z)),
+                   negate(inverse_det * (c_xy * g.x + c_yy * g.y + c_yz * g.z)),
+                   negate(inverse_det * (c_xz * g.x + c_yz * g.y + c_zz * g.z))};
+  const Lane slope = dot(g, step);
+  refused = any_of(refused, _mm256_cmp_pd(slope, zero, _CMP_NLT_UQ));
+  const Lane step2 = dot(step, step);
+  refused = any_of(refused, _mm256_cmp_pd(step2, splat(s.negligible_step_m * s.negligible_step_m), _CMP_LE_OQ));
+
+  // sure_descent.
+  if (s.floor) {
+    refused = any_of(refused, _mm256_cmp_pd(splat(s.floor->height_m) - (xi.y + step.y), zero, _CMP_GT_OQ));
+  }
+  const Lane length = _mm256_sqrt_pd(step2);
+  refused = any_of(refused, _mm256_cmp_pd(length, splat(0.5) * shortest, _CMP_NLT_UQ));
+  const Lane margin = shortest - length, margin2 = margin * margin;
+  const Lane allowed = splat(-0.5) * slope * margin2;
+  const Lane length2 = length * length;
+  Lane spent = splat(kSpringHessianVariation) * length * length2 * spring_variation * shortest * shortest;
+  const Lane volume_change = dot(volume_gradient, step);
+  if (s.gas) {
+    const Lane start = splat(volume), guard = splat(s.gas->guard_m3);
+    const Lane after = start + volume_change;
+    const Lane least = select(less(after, guard), guard, after);
+    const Lane gas = splat(s.gas->nRT_J) * dot(volume_gradient, volume_gradient) * (start - least) * (start + least) /
+                     (least * least * start * start);
+    spent = select(less(after, start), spent + gas * length2 * margin2, spent);
+  }
+  refused = any_of(refused, _mm256_cmp_pd(spent, allowed, _CMP_NLE_UQ));
+
+  // The sure lanes' moves: α = 1, E's change bounded by ¼ ∇E·Δ.
+  alignas(32) double sx[kLanes], sy[kLanes], sz[kLanes], dv[kLanes], bound[kLanes];
+  _mm256_store_pd(sx, step.x);
+  _mm256_store_pd(sy, step.y);
+  _mm256_store_pd(sz, step.z);
+  _mm256_store_pd(dv, volume_change);
+  _mm256_store_pd(bound, splat(0.25) * slope);
+  const unsigned taken = ~static_cast<unsigned>(_mm256_movemask_pd(refused)) & ((1u << kLanes) - 1u);
+  for (int l = 0; l < kLanes; ++l) {
+    if ((taken & (1u << l)) == 0) continue;
+    moves[l].step = Vec3(sx[l], sy[l], sz[l]);
+    moves[l].volume_change_m3 = s.gas ? dv[l] : 0.0;
+    moves[l].energy_bound_J = bound[l];
+    ++counts.vertex_solves;
+    ++counts.sure_steps;
+    ++counts.lane_moves;
+  }
+  return taken;
+}
+
+bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+
+}  // namespace
+
+bool lanes_available() { return cpu_has_avx2(); }
+
+bool lanes_serve(const BodySolve& s) {
+  return lanes_enabled.load(std::memory_order_relaxed) && cpu_has_avx2() && s.colliders.empty() &&
+         s.contacts == nullptr;
+}
+
+unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
+                             VertexMove* moves, MoveCounts& counts) {
+  return sure_moves_avx2(s, vertices, count, x, volume, moves, counts);
+}
+
+#else
+
+bool lanes_available() { return false; }
+
+bool lanes_serve(const BodySolve&) { return false; }
+
+unsigned sure_moves_in_lanes(const BodySolve&, const int*, int, std::span<const Vec3>, double, VertexMove*,
+                             MoveCounts&) {
+  return 0;
+}
+
+#endif
+
+}  // namespace sim

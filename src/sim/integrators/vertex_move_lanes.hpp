@@ -1,0 +1,32 @@
+// Four vertices of one colour moved at once, one per SIMD lane (AVX2, four doubles): each lane does vertex_move's
+// arithmetic in vertex_move's order, so a lane's step is the same bits as vertex_move's.
+#pragma once
+
+#include <span>
+
+#include "sim/integrators/vertex_energy.hpp"
+#include "sim/integrators/vertex_moves.hpp"
+
+namespace sim {
+
+inline constexpr int kLanes = 4;
+
+// Whether the lanes serve body `s` on this machine: the CPU has AVX2, and the body's terms are inertia, springs,
+// dampers, the gas and at most a smooth floor (no smooth colliders or body contacts, whose terms take their own paths).
+bool lanes_serve(const BodySolve& s);
+
+// The moves of vertices[0 .. count) (count ≤ kLanes, of one colour) from x with the body's volume V, for the lanes
+// whose Newton step is certain without a line search (sure_descent) and touches no floor: their moves[l] are set and
+// bit l of the result. The others (a step for the line search, a negligible or non-descending step, a vertex in or
+// reaching the floor's range, coincident ends) are left to vertex_move. Adds the moves it made to counts. Whether this
+// CPU runs the lanes (AVX2).
+bool lanes_available();
+
+// Switches the lanes off (false) or on again, for the whole program: the tests and benchmarks that compare them with
+// the scalar path. On by default.
+void enable_lanes(bool enabled);
+
+unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
+                             VertexMove* moves, MoveCounts& counts);
+
+}  // namespace sim
