@@ -45,6 +45,29 @@ pid_t dead_pid() {
   return child;
 }
 
+// Whether a lock's or a temporary's process still runs: this one does, a sleeping child does until it is killed, and
+// a child that ended does not, reaped or not (a zombie). (A process in its exit, PF_EXITING, is too brief to catch.)
+TEST(OutputSafety, ProcessRunsOnlyWhileTheProcessHasNotEnded) {
+  EXPECT_TRUE(output::process_runs(::getpid()));
+  const pid_t sleeper = ::fork();
+  ASSERT_GE(sleeper, 0);
+  if (sleeper == 0) {
+    ::pause();
+    ::_exit(0);
+  }
+  EXPECT_TRUE(output::process_runs(sleeper));
+  ::kill(sleeper, SIGKILL);
+  bool ended = false;
+  for (int k = 0; k < 500 && !ended; ++k) {  // a zombie until reaped below
+    ended = !output::process_runs(sleeper);
+    if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  EXPECT_TRUE(ended) << "a killed child must not count as running before it is reaped";
+  int status = 0;
+  ::waitpid(sleeper, &status, 0);
+  EXPECT_FALSE(output::process_runs(sleeper));
+}
+
 TEST(OutputSafety, DevicesAreWrittenThroughNotReplaced) {
   output::write_file_atomically("/dev/null", "rows\n");
   struct stat info {};

@@ -7,8 +7,10 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -30,8 +32,20 @@ bool process_runs(pid_t pid) {
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
   std::string text;
   std::getline(stat, text);
-  const std::size_t paren = text.rfind(')');  // "pid (comm) S ...": the state follows the command's name
-  return paren == std::string::npos || paren + 2 >= text.size() || (text[paren + 2] != 'Z' && text[paren + 2] != 'X');
+  const std::size_t paren = text.rfind(')');  // "pid (comm) S ppid pgrp session tty tpgid flags ...": after the name
+  if (paren == std::string::npos || paren + 2 >= text.size()) return true;
+  if (text[paren + 2] == 'Z' || text[paren + 2] == 'X') return false;
+  // A process that a signal killed but that is still tearing itself down (closing its files, releasing its locks)
+  // is no longer running: the kernel marks it PF_EXITING in its flags, the sixth field after the state. A killer
+  // that does not wait for it (`timeout -s KILL` kills itself with its process group) returns before that ends.
+  std::istringstream fields(text.substr(paren + 2));
+  std::string field;
+  unsigned long long flags = 0;
+  for (int k = 0; k <= 6 && fields >> field; ++k) {
+    if (k == 6) flags = std::strtoull(field.c_str(), nullptr, 10);
+  }
+  constexpr unsigned long long kExiting = 0x4;  // PF_EXITING (include/linux/sched.h)
+  return (flags & kExiting) == 0;
 }
 
 int remove_stale_temporaries(const std::filesystem::path& dir) {

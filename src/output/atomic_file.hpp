@@ -22,7 +22,8 @@ bool is_written_through(const std::filesystem::path& path);
 // then removed).
 void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path);
 
-// True while process `pid` runs on this machine (a zombie, killed but not yet reaped, does not run).
+// True while process `pid` runs on this machine (a zombie, killed but not yet reaped, does not run; nor does a
+// process that is exiting, PF_EXITING).
 bool process_runs(pid_t pid);
 
 // The temporary name used for `path` (same folder, so that the rename is atomic): ".NAME.tmpPID".
