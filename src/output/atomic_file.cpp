@@ -7,7 +7,6 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -39,11 +38,10 @@ bool process_runs(pid_t pid) {
   // is no longer running: the kernel marks it PF_EXITING in its flags, the sixth field after the state. A killer
   // that does not wait for it (`timeout -s KILL` kills itself with its process group) returns before that ends.
   std::istringstream fields(text.substr(paren + 2));
-  std::string field;
-  unsigned long long flags = 0;
-  for (int k = 0; k <= 6 && fields >> field; ++k) {
-    if (k == 6) flags = std::strtoull(field.c_str(), nullptr, 10);
-  }
+  std::string skipped;
+  for (int k = 0; k < 6; ++k) fields >> skipped;  // state, ppid, pgrp, session, tty_nr, tpgid
+  unsigned long long flags = 0;                   // stays 0 (running) where the field cannot be read
+  fields >> flags;
   constexpr unsigned long long kExiting = 0x4;  // PF_EXITING (include/linux/sched.h)
   return (flags & kExiting) == 0;
 }

@@ -125,9 +125,6 @@ SOFTBODY_LANES_TARGET LaneTerms inertia_terms(const BodySolve& s, std::span<cons
   const Lane zero = splat(0.0);
   t.hessian = {zero + inertia, zero, zero, zero + inertia, zero, zero + inertia};
   t.volume_gradient = {zero, zero, zero};
-  const Lane valences = lanes_of(rows.valence[0], rows.valence[1], rows.valence[2], rows.valence[3]);
-  t.shortest = select(less(zero, valences), splat(std::numeric_limits<double>::infinity()), zero);
-  t.spring_variation = zero;
   return t;
 }
 
@@ -138,6 +135,8 @@ SOFTBODY_LANES_TARGET void add_constraint_terms(const BodySolve& s, std::span<co
   const VertexBlocks& b = s.blocks;
   const Lane zero = splat(0.0), inverse_h = splat(1.0 / s.h_hat);
   const Lane valences = lanes_of(rows.valence[0], rows.valence[1], rows.valence[2], rows.valence[3]);
+  t.shortest = select(less(zero, valences), splat(std::numeric_limits<double>::infinity()), zero);
+  t.spring_variation = zero;
   for (int slot = 0; slot < rows.most; ++slot) {
     std::size_t e[kLanes], j[kLanes];
     row_entries(rows.first, rows.valence, slot, e);

@@ -1,6 +1,7 @@
 // One vertex's Newton step with its line search, and a colour's steps taken at once with their joint safeguard.
 #include "sim/integrators/vertex_moves.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -108,29 +109,27 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
     const auto move_slot = [&](std::size_t slot) {
       apply(slot, vertex_move(s, colour[slot], x, start_volume, lags, part_counts));
     };
-    // The part's slots kLanes at a time: the lanes take the vertices whose step is sure, vertex_move the others.
+    // The part's slots kLanes at a time (the last group may be shorter): the lanes take the vertices whose step is
+    // sure, vertex_move the others.
     const auto move_slots = [&](auto slot_at, std::size_t count) {
-      std::size_t k = 0;
-      if (lanes) {
-        for (; k + kLanes <= count; k += kLanes) {
-          std::size_t slots[kLanes];
-          int vertices[kLanes];
-          VertexMove moves[kLanes];
-          for (int l = 0; l < kLanes; ++l) {
-            slots[l] = slot_at(k + static_cast<std::size_t>(l));
-            vertices[l] = colour[slots[l]];
-          }
-          const unsigned taken = sure_moves_in_lanes(s, vertices, kLanes, x, start_volume, moves, part_counts);
-          for (int l = 0; l < kLanes; ++l) {
-            if ((taken & (1u << l)) != 0) {
-              apply(slots[l], moves[l]);
-            } else {
-              move_slot(slots[l]);
-            }
+      for (std::size_t k = 0; k < count; k += kLanes) {
+        const int group = static_cast<int>(std::min<std::size_t>(kLanes, count - k));
+        std::size_t slots[kLanes];
+        int vertices[kLanes];
+        VertexMove moves[kLanes];
+        for (int l = 0; l < group; ++l) {
+          slots[l] = slot_at(k + static_cast<std::size_t>(l));
+          vertices[l] = colour[slots[l]];
+        }
+        const unsigned taken = lanes ? sure_moves_in_lanes(s, vertices, group, x, start_volume, moves, part_counts) : 0;
+        for (int l = 0; l < group; ++l) {
+          if ((taken & (1u << l)) != 0) {
+            apply(slots[l], moves[l]);
+          } else {
+            move_slot(slots[l]);
           }
         }
       }
-      for (; k < count; ++k) move_slot(slot_at(k));
     };
     if (parts.bounds.empty()) {
       move_slots([](std::size_t k) { return k; }, n);
