@@ -1,5 +1,6 @@
 // Google Benchmark: the cost of one vbd sweep per vertex (ns per vertex per sweep), with and without the affine
-// correction, on scenes/bounce_smooth.json's ball in flight.
+// correction, and of one coarse-level correction (sim/integrators/coarse_space.hpp), on scenes/bounce_smooth.json's
+// ball in flight.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -8,10 +9,14 @@
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/forces/dynamics.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
 
 namespace {
+
+using softbody::Vec3;
 
 constexpr int kSweeps = 4;  // sweeps per measured step (the bench's default setting)
 
@@ -65,8 +70,44 @@ void BM_VbdSweep(benchmark::State& st) {
       static_cast<double>(vbd.statistics().halvings) / static_cast<double>(vbd.statistics().vertex_solves);
 }
 
+// One coarse correction (128 cells and the linear fields, as solver.coarse_space "auto" takes above 5000 vertices) on
+// the flying ball's BDF2 step from its start x = y, one thread. Args: {level, matrix assembled and factored 1/0 (vbd
+// assembles it at every kCoarseMatrixSteps-th step and reuses it between)}.
+void BM_CoarseCorrection(benchmark::State& st) {
+  const int level = static_cast<int>(st.range(0));
+  const bool refresh = st.range(1) == 1;
+  const sim::World world = flying_ball(level, 1);
+  const sim::Body& body = world.model.bodies[0];
+  const sim::VertexBlocks blocks = sim::vertex_blocks(body);
+  const sim::CoarseSpace space = sim::smooth_coarse_space(blocks, sim::kAutoCoarseCells, body.rest.position_m);
+  const double h = world.state.carry.previous_dt_s, h_hat = 2.0 * h / 3.0;
+  std::vector<Vec3> target, base;
+  for (std::size_t i = 0; i < world.state.x.size(); ++i) {
+    base.push_back(world.state.x[i]);
+    target.push_back(world.state.x[i] + h_hat * world.state.v[i] + h_hat * h_hat * world.model.gravity_m_per_s2);
+  }
+  sim::BodySolve s{blocks, world.model.mass_kg,   target,       base,    h_hat,
+                   0.0,    1.0 / (h_hat * h_hat), std::nullopt, nullptr, {}};
+  s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
+  sim::CoarseScratch scratch;
+  std::vector<Vec3> x = target;
+  sim::coarse_correction(body, s, space, x, true, scratch);  // sizes the scratch and factors the matrix once
+  for (auto _ : st) {
+    st.PauseTiming();
+    x = target;
+    st.ResumeTiming();
+    benchmark::DoNotOptimize(sim::coarse_correction(body, s, space, x, refresh, scratch));
+  }
+  st.SetLabel(std::string(refresh ? "assembling and factoring" : "reusing") + " the matrix, " +
+              std::to_string(space.aggregates) + " aggregates, " + std::to_string(space.weight.size()) + " weights");
+  st.counters["ns_per_vertex"] =
+      benchmark::Counter(static_cast<double>(x.size()) * 1e-9,
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
+BENCHMARK(BM_CoarseCorrection)->ArgsProduct({{5, 6}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VbdSweep)->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}, {1, 0}})->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

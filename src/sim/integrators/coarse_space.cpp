@@ -6,7 +6,9 @@
 #include <utility>
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/correction_lanes.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
+#include "sim/integrators/vertex_move_lanes.hpp"
 #include "sim/step/chunked_sum.hpp"
 
 namespace sim {
@@ -66,20 +68,67 @@ void merge_repeats(Weights& w) {
   w.resize(kept);
 }
 
-// += scale × block into K's block (a, b) (3×3, all nine entries).
-void add_block(Eigen::MatrixXd& K, int a, int b, double scale, const Block3& h) {
-  const double entries[3][3] = {{h.xx, h.xy, h.xz}, {h.xy, h.yy, h.yz}, {h.xz, h.yz, h.zz}};
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) K(3 * a + r, 3 * b + c) += scale * entries[r][c];
+// A block's entries in the compact storage: Σ w_a w_b H over symmetric H is symmetric, so each block keeps its upper
+// triangle xx, xy, xz, yy, yz, zz (Block3's), and entry (r, c) of the block is kBlockEntry[r][c].
+constexpr int kBlockEntries = 6;
+constexpr int kBlockEntry[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+
+// += scale × block into the kBlockEntries entries at `entries`.
+void add_block(double* entries, double scale, const Block3& h) {
+  const double upper[kBlockEntries] = {h.xx, h.xy, h.xz, h.yy, h.yz, h.zz};
+  for (int k = 0; k < kBlockEntries; ++k) entries[k] += scale * upper[k];
+}
+
+// += Σ over pairs a ≥ b of the sparse weights (aggregates ascending) of w_a w_b × block, into the space's slots of
+// `blocks`: the lower triangle of wᵀ ⊗ block ⊗ w, which is all that the Cholesky factorisation reads.
+void add_outer_blocks(const CoarseSpace& space, std::vector<double>& blocks, std::span<const int> aggregates,
+                      std::span<const double> weights, const Block3& h) {
+  for (std::size_t p = 0; p < aggregates.size(); ++p) {
+    const auto row = static_cast<std::size_t>(aggregates[p]) * static_cast<std::size_t>(space.aggregates);
+    for (std::size_t r = 0; r <= p; ++r) {
+      const auto slot = static_cast<std::size_t>(space.block_slot[row + static_cast<std::size_t>(aggregates[r])]);
+      add_block(&blocks[kBlockEntries * slot], weights[p] * weights[r], h);
+    }
   }
 }
 
-// += Σ over pairs a ≥ b of the sparse weights (aggregates ascending) of w_a w_b × block: the lower triangle of
-// wᵀ ⊗ block ⊗ w, which is all that the Cholesky factorisation reads.
-void add_outer_blocks(Eigen::MatrixXd& K, std::span<const int> aggregates, std::span<const double> weights,
-                      const Block3& h) {
-  for (std::size_t p = 0; p < aggregates.size(); ++p) {
-    for (std::size_t r = 0; r <= p; ++r) add_block(K, aggregates[p], aggregates[r], weights[p] * weights[r], h);
+// Marks the blocks (a, b), a ≥ b, of every pair of the ascending aggregates `reach` as reached.
+void mark_pairs(std::span<const int> reach, int aggregates, std::vector<int>& block_slot) {
+  for (std::size_t p = 0; p < reach.size(); ++p) {
+    for (std::size_t r = 0; r <= p; ++r) block_slot[static_cast<std::size_t>(reach[p] * aggregates + reach[r])] = 0;
+  }
+}
+
+// space.block_slot and block_pair: the blocks that a vertex's weights or a constraint's two ends' weights together
+// reach (a superset of the weight difference's, which leaves out the aggregates where both ends weigh the same).
+void number_blocks(const VertexBlocks& blocks, CoarseSpace& space) {
+  const std::size_t n = blocks.constraint_start.size() - 1;
+  const int aggregates = space.aggregates;
+  space.block_slot.assign(static_cast<std::size_t>(aggregates) * static_cast<std::size_t>(aggregates), -1);
+  std::vector<int> reach;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto own = std::span<const int>(space.aggregate)
+                         .subspan(static_cast<std::size_t>(space.weight_start[i]),
+                                  static_cast<std::size_t>(space.weight_start[i + 1] - space.weight_start[i]));
+    mark_pairs(own, aggregates, space.block_slot);
+    for (const int j : neighbours(blocks, i)) {
+      const auto vj = static_cast<std::size_t>(j);
+      reach.assign(own.begin(), own.end());
+      reach.insert(reach.end(), space.aggregate.begin() + space.weight_start[vj],
+                   space.aggregate.begin() + space.weight_start[vj + 1]);
+      std::sort(reach.begin(), reach.end());
+      reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
+      mark_pairs(reach, aggregates, space.block_slot);
+    }
+  }
+  space.block_pair.clear();
+  for (int a = 0; a < aggregates; ++a) {
+    for (int b = 0; b <= a; ++b) {
+      int& slot = space.block_slot[static_cast<std::size_t>(a * aggregates + b)];
+      if (slot < 0) continue;
+      slot = static_cast<int>(space.block_pair.size());
+      space.block_pair.push_back({a, b});
+    }
   }
 }
 
@@ -135,6 +184,7 @@ CoarseSpace smooth_coarse_space(const VertexBlocks& blocks, int aggregates, std:
     }
     space.weight_start.push_back(static_cast<int>(space.aggregate.size()));
   }
+  number_blocks(blocks, space);
   return space;
 }
 
@@ -192,7 +242,7 @@ void add_vertex_blocks(const BodySolve& s, const CoarseSpace& space, std::span<c
     }
     if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), unused, hessian);
     const auto [aggregates, weights] = weights_of(space, i);
-    add_outer_blocks(part.matrix, aggregates, weights, hessian);
+    add_outer_blocks(space, part.blocks, aggregates, weights, hessian);
     if (!s.gas) continue;
     const Vec3 six_gradient = six_volume_gradient(s.blocks, i, x);  // 6 ∂V/∂x_i
     for (std::size_t p = 0; p < aggregates.size(); ++p) {
@@ -218,7 +268,18 @@ void add_constraint_blocks(const Body& body, const BodySolve& s, const CoarseSpa
     Block3 hessian;
     hessian.add_diagonal(transverse);
     hessian.add_outer(k + c_over_h - transverse, d / length);
-    add_outer_blocks(part.matrix, part.difference.aggregate, part.difference.weight, hessian);
+    add_outer_blocks(space, part.blocks, part.difference.aggregate, part.difference.weight, hessian);
+  }
+}
+
+// K's lower triangle += the blocks (a diagonal block's upper entries are left out).
+void add_lower_blocks(const CoarseSpace& space, const std::vector<double>& blocks, Eigen::MatrixXd& K) {
+  for (std::size_t slot = 0; slot < space.block_pair.size(); ++slot) {
+    const auto [a, b] = space.block_pair[slot];
+    const double* entries = &blocks[kBlockEntries * slot];
+    for (int c = 0; c < 3; ++c) {
+      for (int r = a == b ? c : 0; r < 3; ++r) K(3 * a + r, 3 * b + c) += entries[kBlockEntry[r][c]];
+    }
   }
 }
 
@@ -236,7 +297,7 @@ void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& sp
   std::vector<CoarsePart>& parts = scratch.parts;
   if (parts.size() < vertex_chunks + constraint_chunks) parts.resize(vertex_chunks + constraint_chunks);
   for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
-    parts[c].matrix.setZero(unknowns, unknowns);
+    parts[c].blocks.assign(kBlockEntries * space.block_pair.size(), 0.0);
     parts[c].u.setZero(unknowns);
   }
   for_each_chunk(s.runner, x.size(), static_cast<int>(vertex_chunks),
@@ -252,7 +313,7 @@ void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& sp
   Eigen::VectorXd& u = scratch.volume_gradient;
   u.setZero(unknowns);
   for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
-    K.triangularView<Eigen::Lower>() += parts[c].matrix;
+    add_lower_blocks(space, parts[c].blocks, K);
     u += parts[c].u;
   }
   // The gas's rank-one part of the curvature, nRT/V² (Pᵀ∇V)(Pᵀ∇V)ᵀ.
@@ -270,7 +331,8 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
   search.edges_lagged = true;
   const double inverse_h = 1.0 / s.h_hat;
   chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
-    for (std::size_t e = first; e < last; ++e) {
+    for (std::size_t e = edge_forces_in_lanes(constraints, s, x, first, last, search, scratch.edge_force); e < last;
+         ++e) {
       take_edge_lag(constraints, s, x, e, search);
       const double length = search.edge_length_m[e];
       if (length == 0.0) {
@@ -288,17 +350,27 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
   });
 }
 
-// ∇E per vertex at x into scratch.gradient: its own terms, and its constraints' from take_edge_forces, in chunks on
-// s.runner's threads. Returns V(x) (0 without gas).
-double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
+// ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces) projected as −Pᵀ ∇E into
+// scratch.projection_sums, one partial sum per chunk on s.runner's threads. Returns V(x) (0 without gas).
+double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                        CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
+  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   const double volume = s.gas ? enclosed_volume(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
   take_edge_forces(body, s, x, scratch);
-  scratch.gradient.resize(n);
-  chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
+  scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
+  for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
+    Eigen::VectorXd& part = scratch.projection_sums[c];
+    part.setZero(unknowns);
+    Vec3 six_gradients[kLanes];  // 6 ∂V/∂x_i of the group of four that i is in, where the lanes computed them
+    bool in_lanes = false;
     for (std::size_t i = first; i < last; ++i) {
+      const std::size_t lane = (i - first) % kLanes;
+      if (s.gas && lane == 0) {
+        in_lanes = i + kLanes <= last && six_volume_gradients_in_lanes(blocks, i, x, six_gradients);
+      }
       const double m = s.mass_kg[i];
       Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
       Block3 unused;
@@ -314,28 +386,16 @@ double gradient_by_vertex(const Body& body, const BodySolve& s, std::span<const 
         const Vec3& force = scratch.edge_force[e];
         gradient += static_cast<std::size_t>(body.constraints.ends[e][0]) == i ? force : Vec3(-force);
       }
-      if (s.gas) gradient -= gas_per_six * six_volume_gradient(blocks, i, x);
-      scratch.gradient[i] = gradient;
+      if (s.gas) gradient -= gas_per_six * (in_lanes ? six_gradients[lane] : six_volume_gradient(blocks, i, x));
+      const auto [aggregates, weights] = weights_of(space, i);
+      for (std::size_t p = 0; p < aggregates.size(); ++p) part.segment<3>(3 * aggregates[p]) -= weights[p] * gradient;
     }
   });
   return volume;
 }
 
-// −Pᵀ ∇E into q, summed in chunks on s.runner's threads.
-void project_gradient(const BodySolve& s, const CoarseSpace& space, CoarseScratch& scratch, Eigen::VectorXd& q) {
-  const std::size_t n = scratch.gradient.size();
-  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
-  scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
-  for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
-    Eigen::VectorXd& part = scratch.projection_sums[c];
-    part.setZero(unknowns);
-    for (std::size_t i = first; i < last; ++i) {
-      const auto [aggregates, weights] = weights_of(space, i);
-      for (std::size_t p = 0; p < aggregates.size(); ++p) {
-        part.segment<3>(3 * aggregates[p]) -= weights[p] * scratch.gradient[i];
-      }
-    }
-  });
+// −Pᵀ ∇E into q: the chunks' partial sums (project_gradient) in chunk order.
+void sum_projection(const CoarseScratch& scratch, Eigen::VectorXd& q) {
   q = scratch.projection_sums[0];
   for (std::size_t c = 1; c < scratch.projection_sums.size(); ++c) q += scratch.projection_sums[c];
 }
@@ -346,7 +406,7 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
                        bool refresh_matrix, CoarseScratch& scratch) {
   const std::size_t n = x.size();
   const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
-  const double volume = gradient_by_vertex(body, s, x, scratch);
+  const double volume = project_gradient(body, s, space, x, scratch);
   scratch.search.volume_after = volume;  // where it does not move
   if (matrix) {
     assemble_matrix(body, s, space, x, volume, scratch);
@@ -355,7 +415,7 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
   }
   if (!scratch.factored) return false;
   Eigen::VectorXd& q = scratch.solution;  // −Pᵀ ∇E, then q
-  project_gradient(s, space, scratch, q);
+  sum_projection(scratch, q);
   scratch.rhs = q;
   scratch.factor.solveInPlace(q);
   const double descent = -scratch.rhs.dot(q);  // ∇E·P q = −(−Pᵀ∇E)·q < 0

@@ -2,6 +2,7 @@
 // few hundred aggregates of vertices, and one Galerkin Newton step of the body's step energy restricted to them.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -30,6 +31,12 @@ struct CoarseSpace {
   std::vector<int> weight_start;
   std::vector<int> aggregate;
   std::vector<double> weight;
+  // The 3×3 blocks (a, b), a ≥ b, of Pᵀ H P that a vertex's or a constraint's term can reach (a pair of one vertex's
+  // aggregates, or of the two ends' together): block_slot[a · aggregates + b] is the block's place in the assembly's
+  // compact storage (CoarsePart::blocks), −1 where no term reaches it; block_pair[slot] is its (a, b). A few thousand
+  // of the dense matrix's blocks, so that the assembly writes to a store that stays in cache.
+  std::vector<int> block_slot;
+  std::vector<std::array<int, 2>> block_pair;
 };
 
 // Smoothing passes: ramps about this many rings wide between the cells. Measured on one step at icosphere:5
@@ -60,15 +67,15 @@ struct CoarseDifference {
   std::vector<int> aggregate;
   std::vector<double> weight;
 };
-// A chunk's part of Pᵀ H P (its lower triangle) and of Pᵀ∇V, with its own scratch.
+// A chunk's part of Pᵀ H P (its blocks' upper triangles, in CoarseSpace's slots) and of Pᵀ∇V, with its
+// own scratch.
 struct CoarsePart {
-  Eigen::MatrixXd matrix;
+  std::vector<double> blocks;
   Eigen::VectorXd u;
   CoarseDifference difference;
 };
 // The buffers one correction fills, kept between calls so that a step allocates nothing once sizes settle.
 struct CoarseScratch {
-  std::vector<Vec3> gradient;                        // ∇_i E per vertex [N]
   std::vector<Vec3> edge_force;                      // per constraint, its force on its first end's ∇E [N]
   std::vector<CoarsePart> parts;                     // the assembly's chunks (vertices', then constraints')
   Eigen::MatrixXd matrix;                            // Pᵀ H P [N/m], its lower triangle

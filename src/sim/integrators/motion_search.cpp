@@ -2,6 +2,7 @@
 #include "sim/integrators/motion_search.hpp"
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/correction_lanes.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/step/chunked_sum.hpp"
 
@@ -85,7 +86,8 @@ double constraint_energy_changes(const Body& body, const BodySolve& s, std::span
   const DistanceConstraints& constraints = body.constraints;
   const double half_over_h = 0.5 / s.h_hat;
   double change = 0.0;
-  for (std::size_t e = first; e < last; ++e) {
+  for (std::size_t e = edge_energy_changes_in_lanes(constraints, s, x, alpha, scratch, first, last, change); e < last;
+       ++e) {
     const double before = scratch.edge_length_m[e];
     if (before == 0.0) continue;
     const auto [i, j] = constraints.ends[e];

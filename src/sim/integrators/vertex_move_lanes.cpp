@@ -8,9 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
+#include "sim/integrators/lane_math.hpp"
 
 namespace sim {
 namespace {
@@ -25,33 +23,7 @@ void enable_lanes(bool enabled) { lanes_enabled.store(enabled, std::memory_order
 
 namespace {
 
-#define SOFTBODY_LANES_TARGET __attribute__((target("avx2")))
-
-using Lane = __m256d;  // one double per vertex
-
-SOFTBODY_LANES_TARGET inline Lane splat(double a) { return _mm256_set1_pd(a); }
-SOFTBODY_LANES_TARGET inline Lane lanes_of(double a0, double a1, double a2, double a3) {
-  return _mm256_set_pd(a3, a2, a1, a0);
-}
-SOFTBODY_LANES_TARGET inline Lane select(Lane mask, Lane a, Lane b) { return _mm256_blendv_pd(b, a, mask); }
-SOFTBODY_LANES_TARGET inline Lane negate(Lane a) { return _mm256_xor_pd(a, splat(-0.0)); }
-SOFTBODY_LANES_TARGET inline Lane less(Lane a, Lane b) { return _mm256_cmp_pd(a, b, _CMP_LT_OQ); }
-SOFTBODY_LANES_TARGET inline Lane any_of(Lane a, Lane b) { return _mm256_or_pd(a, b); }
-
-// A vector per lane, each component as one Lane.
-struct Lane3 {
-  Lane x, y, z;
-};
-SOFTBODY_LANES_TARGET inline Lane3 gather(std::span<const Vec3> p, const std::size_t* i) {
-  return {lanes_of(p[i[0]].x(), p[i[1]].x(), p[i[2]].x(), p[i[3]].x()),
-          lanes_of(p[i[0]].y(), p[i[1]].y(), p[i[2]].y(), p[i[3]].y()),
-          lanes_of(p[i[0]].z(), p[i[1]].z(), p[i[2]].z(), p[i[3]].z())};
-}
-SOFTBODY_LANES_TARGET inline Lane gather(const std::vector<double>& a, const std::size_t* i) {
-  return lanes_of(a[i[0]], a[i[1]], a[i[2]], a[i[3]]);
-}
-SOFTBODY_LANES_TARGET inline Lane3 minus(const Lane3& a, const Lane3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-SOFTBODY_LANES_TARGET inline Lane dot(const Lane3& a, const Lane3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+using namespace lane_math;
 
 // The lanes' symmetric 3×3 blocks (Block3's upper triangle).
 struct LaneBlock {
@@ -279,6 +251,8 @@ bool cpu_has_avx2() {
 
 bool lanes_available() { return cpu_has_avx2(); }
 
+bool lanes_on() { return lanes_enabled.load(std::memory_order_relaxed) && cpu_has_avx2(); }
+
 bool lanes_serve(const BodySolve& s) {
   return lanes_enabled.load(std::memory_order_relaxed) && cpu_has_avx2() && s.colliders.empty() &&
          s.contacts == nullptr;
@@ -292,6 +266,8 @@ unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count,
 #else
 
 bool lanes_available() { return false; }
+
+bool lanes_on() { return false; }
 
 bool lanes_serve(const BodySolve&) { return false; }
 

@@ -22,6 +22,10 @@ bool lanes_serve(const BodySolve& s);
 // CPU runs the lanes (AVX2).
 bool lanes_available();
 
+// Whether the lanes run now: this CPU has AVX2 and they are enabled (the edge lanes of the coarse corrections,
+// correction_lanes.hpp, follow the same switch).
+bool lanes_on();
+
 // Switches the lanes off (false) or on again, for the whole program: the tests and benchmarks that compare them with
 // the scalar path. On by default.
 void enable_lanes(bool enabled);

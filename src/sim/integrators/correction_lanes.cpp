@@ -1,0 +1,162 @@
+// Four constraints at once, one per AVX2 lane (see lane_math.hpp): each expression is the scalar loop's, in its order.
+#include "sim/integrators/correction_lanes.hpp"
+
+#include <algorithm>
+
+#include "sim/integrators/lane_math.hpp"
+#include "sim/integrators/vertex_move_lanes.hpp"
+
+namespace sim {
+
+#if defined(__x86_64__)
+
+namespace {
+
+using namespace lane_math;
+
+// The two ends of constraints e .. e + 3.
+struct LaneEnds {
+  std::size_t i[kLanes], j[kLanes];
+};
+LaneEnds lane_ends(const DistanceConstraints& constraints, std::size_t e) {
+  LaneEnds ends;
+  for (int l = 0; l < kLanes; ++l) {
+    ends.i[l] = static_cast<std::size_t>(constraints.ends[e + static_cast<std::size_t>(l)][0]);
+    ends.j[l] = static_cast<std::size_t>(constraints.ends[e + static_cast<std::size_t>(l)][1]);
+  }
+  return ends;
+}
+
+SOFTBODY_LANES_TARGET inline Lane load(const std::vector<double>& a, std::size_t e) { return _mm256_loadu_pd(&a[e]); }
+
+SOFTBODY_LANES_TARGET std::size_t edge_forces_avx2(const DistanceConstraints& constraints, const BodySolve& s,
+                                                   std::span<const Vec3> x, std::size_t first, std::size_t last,
+                                                   MotionScratch& scratch, std::span<Vec3> force) {
+  const Lane zero = splat(0.0), inverse_h = splat(1.0 / s.h_hat);
+  std::size_t e = first;
+  for (; e + kLanes <= last; e += kLanes) {
+    const LaneEnds ends = lane_ends(constraints, e);
+    const Lane3 xi = gather(x, ends.i), xj = gather(x, ends.j);
+    // take_edge_lag
+    const Lane3 d = minus(xi, xj);
+    const Lane length = _mm256_sqrt_pd(dot(d, d));
+    const Lane zero_length = _mm256_cmp_pd(length, zero, _CMP_EQ_OQ);
+    const Lane inverse_length = select(zero_length, zero, splat(1.0) / length);
+    const Lane3 approach = minus(minus(xi, gather(s.base, ends.i)), minus(xj, gather(s.base, ends.j)));
+    const Lane rate = dot(approach, times(inverse_length, d));
+    _mm256_storeu_pd(&scratch.edge_length_m[e], length);
+    _mm256_storeu_pd(&scratch.edge_inverse_length[e], inverse_length);
+    _mm256_storeu_pd(&scratch.edge_rate_m[e], rate);
+    // The force: (k (l − L0) + c (1/ĥ) ĥ l̇) d/l, with ĥ l̇ along d/l (the lag's is along d (1/l): other bits).
+    const Lane3 axis{d.x / length, d.y / length, d.z / length};
+    const Lane magnitude = load(constraints.stiffness_N_per_m, e) * (length - load(constraints.rest_length_m, e)) +
+                           load(constraints.damping_N_s_per_m, e) * inverse_h * dot(approach, axis);
+    double fx[kLanes], fy[kLanes], fz[kLanes];
+    _mm256_storeu_pd(fx, select(zero_length, zero, magnitude * axis.x));
+    _mm256_storeu_pd(fy, select(zero_length, zero, magnitude * axis.y));
+    _mm256_storeu_pd(fz, select(zero_length, zero, magnitude * axis.z));
+    for (int l = 0; l < kLanes; ++l) force[e + static_cast<std::size_t>(l)] = Vec3(fx[l], fy[l], fz[l]);
+  }
+  return e;
+}
+
+SOFTBODY_LANES_TARGET std::size_t edge_energy_changes_avx2(const DistanceConstraints& constraints, const BodySolve& s,
+                                                           std::span<const Vec3> x, double alpha,
+                                                           const MotionScratch& scratch, std::size_t first,
+                                                           std::size_t last, double& change) {
+  const std::span<const Vec3> motion = scratch.motion;
+  const Lane half_over_h = splat(0.5 / s.h_hat), a = splat(alpha);
+  std::size_t e = first;
+  for (; e + kLanes <= last; e += kLanes) {
+    const LaneEnds ends = lane_ends(constraints, e);
+    const Lane3 d = minus(gather(x, ends.i), gather(x, ends.j));
+    const Lane3 relative = times(a, minus(gather(motion, ends.i), gather(motion, ends.j)));
+    const Lane3 moved = plus(d, relative);
+    const Lane after = _mm256_sqrt_pd(dot(moved, moved)), before = load(scratch.edge_length_m, e);
+    const Lane k = load(constraints.stiffness_N_per_m, e), rest = load(constraints.rest_length_m, e);
+    const Lane spring = splat(0.5) * k * (after - before) * (after + before - splat(2.0) * rest);
+    const Lane rate = load(scratch.edge_rate_m, e), along = dot(relative, d) * load(scratch.edge_inverse_length, e);
+    const Lane damper = half_over_h * load(constraints.damping_N_s_per_m, e) * along * (splat(2.0) * rate + along);
+    double springs[kLanes], dampers[kLanes];
+    _mm256_storeu_pd(springs, spring);
+    _mm256_storeu_pd(dampers, damper);
+    for (int l = 0; l < kLanes; ++l) {
+      if (scratch.edge_length_m[e + static_cast<std::size_t>(l)] == 0.0) continue;
+      change += springs[l];
+      change += dampers[l];
+    }
+  }
+  return e;
+}
+
+SOFTBODY_LANES_TARGET void six_volume_gradients_avx2(const VertexBlocks& blocks, std::size_t first,
+                                                     std::span<const Vec3> x, Vec3* six_gradient) {
+  std::size_t vertex[kLanes];
+  int face_first[kLanes], faces[kLanes], most = 0;
+  for (int l = 0; l < kLanes; ++l) {
+    vertex[l] = first + static_cast<std::size_t>(l);
+    face_first[l] = blocks.face_start[vertex[l]];
+    faces[l] = blocks.face_start[vertex[l] + 1] - face_first[l];
+    most = std::max(most, faces[l]);
+  }
+  const Lane zero = splat(0.0), face_counts = lanes_of(faces[0], faces[1], faces[2], faces[3]);
+  const Lane3 xi = gather(x, vertex);
+  Lane3 sum{zero, zero, zero};
+  for (int slot = 0; slot < most; ++slot) {
+    std::size_t corner_b[kLanes], corner_c[kLanes];
+    for (int l = 0; l < kLanes; ++l) {  // past a row's end: its first face (or face 0), discarded below
+      const auto f = static_cast<std::size_t>(faces[l] == 0 ? 0 : face_first[l] + (slot < faces[l] ? slot : 0));
+      corner_b[l] = static_cast<std::size_t>(blocks.face_others[f][0]);
+      corner_c[l] = static_cast<std::size_t>(blocks.face_others[f][1]);
+    }
+    const Lane valid = less(splat(slot), face_counts);
+    const Lane3 u = minus(gather(x, corner_b), xi), w = minus(gather(x, corner_c), xi);
+    sum = {select(valid, sum.x + (u.y * w.z - u.z * w.y), sum.x), select(valid, sum.y + (u.z * w.x - u.x * w.z), sum.y),
+           select(valid, sum.z + (u.x * w.y - u.y * w.x), sum.z)};
+  }
+  double sx[kLanes], sy[kLanes], sz[kLanes];
+  _mm256_storeu_pd(sx, sum.x);
+  _mm256_storeu_pd(sy, sum.y);
+  _mm256_storeu_pd(sz, sum.z);
+  for (int l = 0; l < kLanes; ++l) six_gradient[l] = Vec3(sx[l], sy[l], sz[l]);
+}
+
+}  // namespace
+
+bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
+                                   Vec3* six_gradient) {
+  if (!lanes_on()) return false;
+  six_volume_gradients_avx2(blocks, first, x, six_gradient);
+  return true;
+}
+
+std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x,
+                                 std::size_t first, std::size_t last, MotionScratch& scratch, std::span<Vec3> force) {
+  if (!lanes_on()) return first;
+  return edge_forces_avx2(constraints, s, x, first, last, scratch, force);
+}
+
+std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints, const BodySolve& s,
+                                         std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
+                                         std::size_t first, std::size_t last, double& change) {
+  if (!lanes_on()) return first;
+  return edge_energy_changes_avx2(constraints, s, x, alpha, scratch, first, last, change);
+}
+
+#else
+
+bool six_volume_gradients_in_lanes(const VertexBlocks&, std::size_t, std::span<const Vec3>, Vec3*) { return false; }
+
+std::size_t edge_forces_in_lanes(const DistanceConstraints&, const BodySolve&, std::span<const Vec3>, std::size_t first,
+                                 std::size_t, MotionScratch&, std::span<Vec3>) {
+  return first;
+}
+
+std::size_t edge_energy_changes_in_lanes(const DistanceConstraints&, const BodySolve&, std::span<const Vec3>, double,
+                                         const MotionScratch&, std::size_t first, std::size_t, double&) {
+  return first;
+}
+
+#endif
+
+}  // namespace sim

@@ -1,0 +1,33 @@
+// The coarse corrections' whole-body passes, four constraints or vertices at once, one per AVX2 lane: each lane
+// evaluates the scalar loop's expressions in its order (motion_search.cpp's take_edge_lag and
+// constraint_energy_changes, coarse_space.cpp's edge forces, six_volume_gradient), so the results are its bits.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "sim/integrators/motion_search.hpp"
+#include "sim/integrators/vertex_energy.hpp"
+#include "sim/model/body.hpp"
+
+namespace sim {
+
+// Constraints [first, last): their lags at x into scratch (take_edge_lag) and their spring and damper force on their
+// first end, (k (l − L0) + (c/ĥ) ĥ l̇) d/l [N], into force[e] (zero where l = 0). Returns the first constraint it left
+// to the scalar loop: the tail short of four, or `first` where the lanes do not run (lanes_on).
+std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x,
+                                 std::size_t first, std::size_t last, MotionScratch& scratch, std::span<Vec3> force);
+
+// The springs' and dampers' change of E along α scratch.motion over constraints [first, last), with scratch's lags at
+// x, added to `change` constraint by constraint in order (spring, then damper; none where l = 0) [J]. Returns where
+// it stopped, as above.
+std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints, const BodySolve& s,
+                                         std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
+                                         std::size_t first, std::size_t last, double& change);
+
+// six_volume_gradient(blocks, i, x) of the four vertices i = first .. first + 3 into six_gradient[0 .. 4). Returns
+// whether it did (false where the lanes do not run).
+bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
+                                   Vec3* six_gradient);
+
+}  // namespace sim
