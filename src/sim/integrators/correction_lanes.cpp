@@ -1,8 +1,6 @@
 // Four constraints at once, one per AVX2 lane (see lane_math.hpp): each expression is the scalar loop's, in its order.
 #include "sim/integrators/correction_lanes.hpp"
 
-#include <algorithm>
-
 #include "sim/integrators/lane_math.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
 
@@ -89,46 +87,7 @@ SOFTBODY_LANES_TARGET std::size_t edge_energy_changes_avx2(const DistanceConstra
   return e;
 }
 
-SOFTBODY_LANES_TARGET void six_volume_gradients_avx2(const VertexBlocks& blocks, std::size_t first,
-                                                     std::span<const Vec3> x, Vec3* six_gradient) {
-  std::size_t vertex[kLanes];
-  int face_first[kLanes], faces[kLanes], most = 0;
-  for (int l = 0; l < kLanes; ++l) {
-    vertex[l] = first + static_cast<std::size_t>(l);
-    face_first[l] = blocks.face_start[vertex[l]];
-    faces[l] = blocks.face_start[vertex[l] + 1] - face_first[l];
-    most = std::max(most, faces[l]);
-  }
-  const Lane zero = splat(0.0), face_counts = lanes_of(faces[0], faces[1], faces[2], faces[3]);
-  const Lane3 xi = gather(x, vertex);
-  Lane3 sum{zero, zero, zero};
-  for (int slot = 0; slot < most; ++slot) {
-    std::size_t corner_b[kLanes], corner_c[kLanes];
-    for (int l = 0; l < kLanes; ++l) {  // past a row's end: its first face (or face 0), discarded below
-      const auto f = static_cast<std::size_t>(faces[l] == 0 ? 0 : face_first[l] + (slot < faces[l] ? slot : 0));
-      corner_b[l] = static_cast<std::size_t>(blocks.face_others[f][0]);
-      corner_c[l] = static_cast<std::size_t>(blocks.face_others[f][1]);
-    }
-    const Lane valid = less(splat(slot), face_counts);
-    const Lane3 u = minus(gather(x, corner_b), xi), w = minus(gather(x, corner_c), xi);
-    sum = {select(valid, sum.x + (u.y * w.z - u.z * w.y), sum.x), select(valid, sum.y + (u.z * w.x - u.x * w.z), sum.y),
-           select(valid, sum.z + (u.x * w.y - u.y * w.x), sum.z)};
-  }
-  double sx[kLanes], sy[kLanes], sz[kLanes];
-  _mm256_storeu_pd(sx, sum.x);
-  _mm256_storeu_pd(sy, sum.y);
-  _mm256_storeu_pd(sz, sum.z);
-  for (int l = 0; l < kLanes; ++l) six_gradient[l] = Vec3(sx[l], sy[l], sz[l]);
-}
-
 }  // namespace
-
-bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
-                                   Vec3* six_gradient) {
-  if (!lanes_on()) return false;
-  six_volume_gradients_avx2(blocks, first, x, six_gradient);
-  return true;
-}
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x,
                                  std::size_t first, std::size_t last, MotionScratch& scratch, std::span<Vec3> force) {
@@ -144,8 +103,6 @@ std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints,
 }
 
 #else
-
-bool six_volume_gradients_in_lanes(const VertexBlocks&, std::size_t, std::span<const Vec3>, Vec3*) { return false; }
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints&, const BodySolve&, std::span<const Vec3>, std::size_t first,
                                  std::size_t, MotionScratch&, std::span<Vec3>) {

@@ -1,6 +1,7 @@
-// The coarse corrections' whole-body passes, four constraints or vertices at once, one per AVX2 lane: each lane
+// The coarse corrections' passes over a body's constraints, four constraints at once, one per AVX2 lane: each lane
 // evaluates the scalar loop's expressions in its order (motion_search.cpp's take_edge_lag and
-// constraint_energy_changes, coarse_space.cpp's edge forces, six_volume_gradient), so the results are its bits.
+// constraint_energy_changes, coarse_space.cpp's edge forces), so the results are its bits. (Their gas gradients
+// take the vertex lanes' sums: six_volume_gradients_in_lanes, vertex_move_lanes.hpp.)
 #pragma once
 
 #include <cstddef>
@@ -24,10 +25,5 @@ std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const B
 std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints, const BodySolve& s,
                                          std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
                                          std::size_t first, std::size_t last, double& change);
-
-// six_volume_gradient(blocks, i, x) of the four vertices i = first .. first + 3 into six_gradient[0 .. 4). Returns
-// whether it did (false where the lanes do not run).
-bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
-                                   Vec3* six_gradient);
 
 }  // namespace sim

@@ -139,11 +139,10 @@ SOFTBODY_LANES_TARGET void add_constraint_terms(const BodySolve& s, std::span<co
   }
 }
 
-// The gas at volume V: g_i = Σ_f (x_b − x_i) × (x_c − x_i) / 6 (the same bits as vertex_terms' from the edge vectors:
-// both factors negated), −P g_i in ∇E and nRT/V² g_i g_iᵀ in H.
-SOFTBODY_LANES_TARGET void add_gas_terms(const BodySolve& s, std::span<const Vec3> x, const LaneRows& rows,
-                                         double volume, LaneTerms& t) {
-  const VertexBlocks& b = s.blocks;
+// 6 ∂V/∂x_i = Σ_f (x_b − x_i) × (x_c − x_i) over each lane's faces, as six_volume_gradient (vertex_energy.hpp) sums
+// them.
+SOFTBODY_LANES_TARGET Lane3 six_volume_gradient_sums(const VertexBlocks& b, std::span<const Vec3> x,
+                                                     const LaneRows& rows, const Lane3& xi) {
   const Lane zero = splat(0.0);
   const Lane face_counts = lanes_of(rows.faces[0], rows.faces[1], rows.faces[2], rows.faces[3]);
   Lane3 sum{zero, zero, zero};
@@ -155,10 +154,18 @@ SOFTBODY_LANES_TARGET void add_gas_terms(const BodySolve& s, std::span<const Vec
       corner_c[l] = static_cast<std::size_t>(b.face_others[f[l]][1]);
     }
     const Lane valid = less(splat(slot), face_counts);
-    const Lane3 u = minus(gather(x, corner_b), t.xi), w = minus(gather(x, corner_c), t.xi);
+    const Lane3 u = minus(gather(x, corner_b), xi), w = minus(gather(x, corner_c), xi);
     sum = {select(valid, sum.x + (u.y * w.z - u.z * w.y), sum.x), select(valid, sum.y + (u.z * w.x - u.x * w.z), sum.y),
            select(valid, sum.z + (u.x * w.y - u.y * w.x), sum.z)};
   }
+  return sum;
+}
+
+// The gas at volume V: g_i = Σ_f (x_b − x_i) × (x_c − x_i) / 6 (the same bits as vertex_terms' from the edge vectors:
+// both factors negated), −P g_i in ∇E and nRT/V² g_i g_iᵀ in H.
+SOFTBODY_LANES_TARGET void add_gas_terms(const BodySolve& s, std::span<const Vec3> x, const LaneRows& rows,
+                                         double volume, LaneTerms& t) {
+  const Lane3 sum = six_volume_gradient_sums(s.blocks, x, rows, t.xi);
   const Lane sixth = splat(1.0 / 6.0);
   t.volume_gradient = {sum.x * sixth, sum.y * sixth, sum.z * sixth};
   const Lane pressure = splat(s.gas->pressure(volume));
@@ -242,6 +249,20 @@ SOFTBODY_LANES_TARGET unsigned sure_moves_avx2(const BodySolve& s, const int* ve
   return taken;
 }
 
+// six_volume_gradient of vertices first .. first + 3 (six_volume_gradients_in_lanes).
+SOFTBODY_LANES_TARGET void six_volume_gradients_avx2(const VertexBlocks& blocks, std::size_t first,
+                                                     std::span<const Vec3> x, Vec3* six_gradient) {
+  int vertices[kLanes];
+  for (int l = 0; l < kLanes; ++l) vertices[l] = static_cast<int>(first) + l;
+  const LaneRows rows = lane_rows(blocks, vertices, kLanes);
+  const Lane3 sum = six_volume_gradient_sums(blocks, x, rows, gather(x, rows.vertex));
+  double sx[kLanes], sy[kLanes], sz[kLanes];
+  _mm256_storeu_pd(sx, sum.x);
+  _mm256_storeu_pd(sy, sum.y);
+  _mm256_storeu_pd(sz, sum.z);
+  for (int l = 0; l < kLanes; ++l) six_gradient[l] = Vec3(sx[l], sy[l], sz[l]);
+}
+
 bool cpu_has_avx2() {
   static const bool has = __builtin_cpu_supports("avx2");
   return has;
@@ -253,11 +274,14 @@ bool lanes_available() { return cpu_has_avx2(); }
 
 bool lanes_on() { return lanes_enabled.load(std::memory_order_relaxed) && cpu_has_avx2(); }
 
-bool lanes_serve(const BodySolve& s) {
-  return lanes_enabled.load(std::memory_order_relaxed) && cpu_has_avx2() && s.colliders.empty() &&
-         s.contacts == nullptr;
-}
+bool lanes_serve(const BodySolve& s) { return lanes_on() && s.colliders.empty() && s.contacts == nullptr; }
 
+bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
+                                   Vec3* six_gradient) {
+  if (!lanes_on()) return false;
+  six_volume_gradients_avx2(blocks, first, x, six_gradient);
+  return true;
+}
 unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
                              VertexMove* moves, MoveCounts& counts) {
   return sure_moves_avx2(s, vertices, count, x, volume, moves, counts);
@@ -270,6 +294,8 @@ bool lanes_available() { return false; }
 bool lanes_on() { return false; }
 
 bool lanes_serve(const BodySolve&) { return false; }
+
+bool six_volume_gradients_in_lanes(const VertexBlocks&, std::size_t, std::span<const Vec3>, Vec3*) { return false; }
 
 unsigned sure_moves_in_lanes(const BodySolve&, const int*, int, std::span<const Vec3>, double, VertexMove*,
                              MoveCounts&) {

@@ -15,11 +15,7 @@ inline constexpr int kLanes = 4;
 // dampers, the gas and at most a smooth floor (no smooth colliders or body contacts, whose terms take their own paths).
 bool lanes_serve(const BodySolve& s);
 
-// The moves of vertices[0 .. count) (count ≤ kLanes, of one colour) from x with the body's volume V, for the lanes
-// whose Newton step is certain without a line search (sure_descent) and touches no floor: their moves[l] are set and
-// bit l of the result. The others (a step for the line search, a negligible or non-descending step, a vertex in or
-// reaching the floor's range, coincident ends) are left to vertex_move. Adds the moves it made to counts. Whether this
-// CPU runs the lanes (AVX2).
+// Whether this CPU runs the lanes (AVX2).
 bool lanes_available();
 
 // Whether the lanes run now: this CPU has AVX2 and they are enabled (the edge lanes of the coarse corrections,
@@ -30,7 +26,16 @@ bool lanes_on();
 // the scalar path. On by default.
 void enable_lanes(bool enabled);
 
+// The moves of vertices[0 .. count) (count ≤ kLanes, of one colour) from x with the body's volume V, for the lanes
+// whose Newton step is certain without a line search (sure_descent) and touches no floor: their moves[l] are set and
+// bit l of the result. The others (a step for the line search, a negligible or non-descending step, a vertex in or
+// reaching the floor's range, coincident ends) are left to vertex_move. Adds the moves it made to counts.
 unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
                              VertexMove* moves, MoveCounts& counts);
+
+// six_volume_gradient(blocks, i, x) of the four vertices i = first .. first + 3 into six_gradient[0 .. 4), by the
+// lanes' sums of the gas terms. Returns whether it did (false where the lanes do not run).
+bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first, std::span<const Vec3> x,
+                                   Vec3* six_gradient);
 
 }  // namespace sim
