@@ -35,14 +35,19 @@ sim::World flying_ball(int level, int threads) {
 }
 
 // One BDF2 step (ratio 1: h is the last step's, so vbd takes it whole) per iteration from the same state.
-// Args: {level, affine correction 1/0, threads, lanes 1/0 (sim/integrators/vertex_move_lanes.hpp)}; CPU time is
-// summed over the threads, so compare wall time (real_time).
+// Args: {level, affine correction 1/0, threads, lanes: 0 one vertex at a time, 1 four (AVX2), 2 eight (AVX-512F)
+// (sim/integrators/vertex_move_lanes.hpp)}; CPU time is summed over the threads, so compare wall time (real_time).
 void BM_VbdSweep(benchmark::State& st) {
   const int level = static_cast<int>(st.range(0));
   const bool affine = st.range(1) == 1;
   const int threads = static_cast<int>(st.range(2));
-  const bool lanes = st.range(3) == 1;
-  sim::enable_lanes(lanes);
+  const int lanes = static_cast<int>(st.range(3));
+  if (lanes == 2 && !sim::wide_lanes_available()) {
+    st.SkipWithError("this CPU has no AVX-512F: no eight lanes");
+    return;
+  }
+  sim::enable_lanes(lanes > 0);
+  sim::enable_wide_lanes(lanes == 2);
   sim::World world = flying_ball(level, threads);
   const sim::State start = world.state;
   const double h = start.carry.previous_dt_s;
@@ -58,8 +63,13 @@ void BM_VbdSweep(benchmark::State& st) {
   const auto vertices = static_cast<double>(state.x.size());
   const double vertex_sweeps = vertices * kSweeps * static_cast<double>(vbd.statistics().steps);
   sim::enable_lanes(true);
+  sim::enable_wide_lanes(true);
   st.SetLabel(std::string(affine ? "with" : "without") + " affine correction, " + std::to_string(threads) +
-              " thread(s), " + (lanes ? "lanes" : "one vertex at a time") + ", h " + std::to_string(h) + " s");
+              " thread(s), " +
+              (lanes == 0   ? "one vertex at a time"
+               : lanes == 1 ? "four lanes"
+                            : "eight lanes") +
+              ", h " + std::to_string(h) + " s");
   st.counters["vertices"] = vertices;
   st.counters["steps_per_call"] = static_cast<double>(vbd.statistics().steps) / static_cast<double>(st.iterations());
   st.counters["ns_per_vertex_sweep"] =
@@ -108,6 +118,9 @@ void BM_CoarseCorrection(benchmark::State& st) {
 }  // namespace
 
 BENCHMARK(BM_CoarseCorrection)->ArgsProduct({{5, 6}, {0, 1}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_VbdSweep)->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}, {1, 0}})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VbdSweep)
+    ->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}, {2, 1, 0}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

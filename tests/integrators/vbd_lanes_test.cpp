@@ -1,9 +1,11 @@
-// vbd's lanes (sim/integrators/vertex_move_lanes.hpp): four vertices of a colour moved at once must give the same bits
-// as vertex_move one vertex at a time, through an impact on the smooth floor, with the coarse level and on threads.
+// vbd's lanes (sim/integrators/vertex_move_lanes.hpp): four or eight vertices of a colour moved at once must give the
+// same bits as vertex_move one vertex at a time, through an impact on the smooth floor, with the coarse level and on
+// threads.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -28,9 +30,11 @@ struct LanesRun {
   sim::VertexBlockDescent::Statistics statistics;
 };
 
-// 0.25 s of steps of 1/60 s with the lanes on or off, the ball an icosphere of `level`.
-LanesRun run(bool lanes, int level, int threads, int coarse_cells) {
-  sim::enable_lanes(lanes);
+// 0.25 s of steps of 1/60 s with `lanes` vertices at once (1: the lanes off; 4: AVX2; 8: AVX-512F), the ball an
+// icosphere of `level`.
+LanesRun run(int lanes, int level, int threads, int coarse_cells) {
+  sim::enable_lanes(lanes > 1);
+  sim::enable_wide_lanes(lanes == 8);
   sim::Solver solver;
   solver.integrator = sim::IntegratorKind::Vbd;
   solver.threads = threads;
@@ -41,6 +45,7 @@ LanesRun run(bool lanes, int level, int threads, int coarse_cells) {
   sim::Dynamics dynamics(world.model, world.workspace.forces);
   for (int step = 0; step < 15; ++step) vbd.step(dynamics, world.state, 1.0 / 60.0);
   sim::enable_lanes(true);
+  sim::enable_wide_lanes(true);
   return {world.state, vbd.statistics()};
 }
 
@@ -49,26 +54,37 @@ bool same_bits(const sim::State& a, const sim::State& b) {
          std::memcmp(a.v.data(), b.v.data(), a.v.size() * sizeof(softbody::Vec3)) == 0;
 }
 
+// The lane counts this CPU runs, beside one vertex at a time.
+std::vector<int> lane_counts() {
+  std::vector<int> counts;
+  if (sim::lanes_available()) counts.push_back(4);
+  if (sim::wide_lanes_available()) counts.push_back(8);
+  return counts;
+}
+
 TEST(VbdLanes, TheSameBitsAsOneVertexAtATime) {
   struct Case {
     int level, threads, cells;
   };
+  if (!sim::wide_lanes_available()) std::printf("this CPU has no AVX-512F: the eight lanes are not tested here\n");
   // Icosphere:4's larger colours are shared between two threads (at least 256 vertices each); icosphere:3's are not.
   for (const Case c : {Case{3, 1, 0}, Case{3, 1, 16}, Case{4, 2, 0}}) {
-    const LanesRun with = run(true, c.level, c.threads, c.cells), without = run(false, c.level, c.threads, c.cells);
-    const auto& s = with.statistics;
-    double lowest = with.state.x[0].y();
-    for (const softbody::Vec3& x : with.state.x) lowest = std::min(lowest, x.y());
-    std::printf(
-        "icosphere:%d, %d thread(s), %d cells: %lld of %lld local steps in lanes, %lld steps, lowest vertex at "
-        "y %.4f m\n",
-        c.level, c.threads, c.cells, s.lane_moves, s.vertex_solves, s.steps, lowest);
-    EXPECT_TRUE(same_bits(with.state, without.state)) << c.level << ", " << c.threads << " thread(s), " << c.cells;
+    const LanesRun without = run(1, c.level, c.threads, c.cells);
     EXPECT_EQ(without.statistics.lane_moves, 0);
-    EXPECT_EQ(s.vertex_solves, without.statistics.vertex_solves);
-    EXPECT_EQ(s.sure_steps, without.statistics.sure_steps);
+    double lowest = without.state.x[0].y();
+    for (const softbody::Vec3& x : without.state.x) lowest = std::min(lowest, x.y());
     EXPECT_LT(lowest, 0.0) << "the steps should reach the floor";
-    if (sim::lanes_available()) {
+    for (const int lanes : lane_counts()) {
+      const LanesRun with = run(lanes, c.level, c.threads, c.cells);
+      const auto& s = with.statistics;
+      std::printf(
+          "icosphere:%d, %d thread(s), %d cells, %d lanes: %lld of %lld local steps in lanes, %lld steps, "
+          "lowest vertex at y %.4f m\n",
+          c.level, c.threads, c.cells, lanes, s.lane_moves, s.vertex_solves, s.steps, lowest);
+      EXPECT_TRUE(same_bits(with.state, without.state))
+          << c.level << ", " << c.threads << " thread(s), " << c.cells << " cells, " << lanes << " lanes";
+      EXPECT_EQ(s.vertex_solves, without.statistics.vertex_solves);
+      EXPECT_EQ(s.sure_steps, without.statistics.sure_steps);
       EXPECT_GT(s.lane_moves, s.vertex_solves / 2) << "the lanes should serve";
     }
   }

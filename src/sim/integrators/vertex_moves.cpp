@@ -96,6 +96,7 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
   size_scratch(s, n, part_count, scratch);
   const double start_volume = volume;
   const bool lanes = lanes_serve(s);
+  const int width = lane_width();
   runner.run(part_count, [&](int part) {
     ConstraintLags& lags = scratch.lags[static_cast<std::size_t>(part)];
     MoveCounts part_counts;  // on this thread's stack: the parts' counts share cache lines
@@ -109,14 +110,14 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
     const auto move_slot = [&](std::size_t slot) {
       apply(slot, vertex_move(s, colour[slot], x, start_volume, lags, part_counts));
     };
-    // The part's slots kLanes at a time (the last group may be shorter): the lanes take the vertices whose step is
-    // sure, vertex_move the others.
+    // The part's slots lane_width() at a time (the last group may be shorter): the lanes take the vertices whose
+    // step is sure, vertex_move the others.
     const auto move_slots = [&](auto slot_at, std::size_t count) {
-      for (std::size_t k = 0; k < count; k += kLanes) {
-        const int group = static_cast<int>(std::min<std::size_t>(kLanes, count - k));
-        std::size_t slots[kLanes];
-        int vertices[kLanes];
-        VertexMove moves[kLanes];
+      for (std::size_t k = 0; k < count; k += static_cast<std::size_t>(width)) {
+        const int group = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(width), count - k));
+        std::size_t slots[kMostLanes];
+        int vertices[kMostLanes];
+        VertexMove moves[kMostLanes];
         for (int l = 0; l < group; ++l) {
           slots[l] = slot_at(k + static_cast<std::size_t>(l));
           vertices[l] = colour[slots[l]];
