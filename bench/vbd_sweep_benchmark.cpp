@@ -82,10 +82,15 @@ void BM_VbdSweep(benchmark::State& st) {
 
 // One coarse correction (128 cells and the linear fields, as solver.coarse_space "auto" takes above 5000 vertices) on
 // the flying ball's BDF2 step from its start x = y, one thread. Args: {level, matrix assembled and factored 1/0 (vbd
-// assembles it at every kCoarseMatrixSteps-th step and reuses it between)}.
+// assembles it at every kCoarseMatrixSteps-th step and reuses it between), lanes as BM_VbdSweep's}.
 void BM_CoarseCorrection(benchmark::State& st) {
   const int level = static_cast<int>(st.range(0));
   const bool refresh = st.range(1) == 1;
+  const int lanes = static_cast<int>(st.range(2));
+  if (lanes == 2 && !sim::wide_lanes_available()) {
+    st.SkipWithError("this CPU has no AVX-512F: no eight lanes");
+    return;
+  }
   const sim::World world = flying_ball(level, 1);
   const sim::Body& body = world.model.bodies[0];
   const sim::VertexBlocks blocks = sim::vertex_blocks(body);
@@ -101,6 +106,8 @@ void BM_CoarseCorrection(benchmark::State& st) {
   s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
   sim::CoarseScratch scratch;
   std::vector<Vec3> x = target;
+  sim::enable_lanes(lanes > 0);
+  sim::enable_wide_lanes(lanes == 2);
   sim::coarse_correction(body, s, space, x, true, scratch);  // sizes the scratch and factors the matrix once
   for (auto _ : st) {
     st.PauseTiming();
@@ -108,7 +115,12 @@ void BM_CoarseCorrection(benchmark::State& st) {
     st.ResumeTiming();
     benchmark::DoNotOptimize(sim::coarse_correction(body, s, space, x, refresh, scratch));
   }
+  sim::enable_lanes(true);
+  sim::enable_wide_lanes(true);
   st.SetLabel(std::string(refresh ? "assembling and factoring" : "reusing") + " the matrix, " +
+              (lanes == 0   ? "one at a time, "
+               : lanes == 1 ? "four lanes, "
+                            : "eight lanes, ") +
               std::to_string(space.aggregates) + " aggregates, " + std::to_string(space.weight.size()) + " weights");
   st.counters["ns_per_vertex"] =
       benchmark::Counter(static_cast<double>(x.size()) * 1e-9,
@@ -117,7 +129,7 @@ void BM_CoarseCorrection(benchmark::State& st) {
 
 }  // namespace
 
-BENCHMARK(BM_CoarseCorrection)->ArgsProduct({{5, 6}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CoarseCorrection)->ArgsProduct({{5, 6}, {0, 1}, {2, 1, 0}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VbdSweep)
     ->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}, {2, 1, 0}})
     ->UseRealTime()

@@ -54,14 +54,11 @@ SOFTBODY_WIDE_LANES_TARGET inline Lane gather(std::span<const double> a, const s
   return _mm512_set_pd(a[i[7]], a[i[6]], a[i[5]], a[i[4]], a[i[3]], a[i[2]], a[i[1]], a[i[0]]);
 }
 SOFTBODY_WIDE_LANES_TARGET inline Lane3 gather(std::span<const Vec3> p, const std::size_t* i) {
-  alignas(64) double x[kWidth], y[kWidth], z[kWidth];
-  for (int l = 0; l < kWidth; ++l) {
-    const Vec3& v = p[i[l]];
-    x[l] = v.x();
-    y[l] = v.y();
-    z[l] = v.z();
-  }
-  return {_mm512_load_pd(x), _mm512_load_pd(y), _mm512_load_pd(z)};
+  const Vec3 &p0 = p[i[0]], &p1 = p[i[1]], &p2 = p[i[2]], &p3 = p[i[3]];
+  const Vec3 &p4 = p[i[4]], &p5 = p[i[5]], &p6 = p[i[6]], &p7 = p[i[7]];
+  return {_mm512_set_pd(p7.x(), p6.x(), p5.x(), p4.x(), p3.x(), p2.x(), p1.x(), p0.x()),
+          _mm512_set_pd(p7.y(), p6.y(), p5.y(), p4.y(), p3.y(), p2.y(), p1.y(), p0.y()),
+          _mm512_set_pd(p7.z(), p6.z(), p5.z(), p4.z(), p3.z(), p2.z(), p1.z(), p0.z())};
 }
 SOFTBODY_WIDE_LANES_TARGET inline Lane3 minus(const Lane3& a, const Lane3& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
