@@ -59,6 +59,7 @@ SOFTBODY_LANES_TARGET inline unsigned mask_bits(Mask m) { return static_cast<uns
 SOFTBODY_LANES_TARGET inline Lane root(Lane a) { return _mm256_sqrt_pd(a); }
 SOFTBODY_LANES_TARGET inline Lane lane_numbers() { return lanes_of(0, 1, 2, 3); }
 SOFTBODY_LANES_TARGET inline Lane from_ints(const int* a) { return lanes_of(a[0], a[1], a[2], a[3]); }
+SOFTBODY_LANES_TARGET inline Lane load(const double* a) { return _mm256_loadu_pd(a); }
 SOFTBODY_LANES_TARGET inline void store(double* to, Lane a) { _mm256_storeu_pd(to, a); }
 SOFTBODY_LANES_TARGET inline Lane gather(std::span<const double> a, const std::size_t* i) {
   return lanes_of(a[i[0]], a[i[1]], a[i[2]], a[i[3]]);

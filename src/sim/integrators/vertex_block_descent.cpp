@@ -10,6 +10,7 @@
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/affine_correction.hpp"
 #include "sim/integrators/joint_affine_correction.hpp"
+#include "sim/integrators/vertex_move_lanes.hpp"
 
 namespace sim {
 namespace {
@@ -173,7 +174,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
         volume = enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
       }
     }
-    sweep_colours(s, shares_[b], x, volume);
+    sweep_colours(s, shares_[b], lane_groups_[b], x, volume);
   }
 }
 
@@ -196,8 +197,8 @@ void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std:
   }
 }
 
-void VertexBlockDescent::sweep_colours(const BodySolve& s, const ThreadShares& shares, std::span<Vec3> x,
-                                       double& volume) {
+void VertexBlockDescent::sweep_colours(const BodySolve& s, const ThreadShares& shares, const LaneGroups& groups,
+                                       std::span<Vec3> x, double& volume) {
   const VertexColouring& colouring = s.blocks.colouring;
   for (int c = 0; c < colouring.colours(); ++c) {
     const auto first = static_cast<std::size_t>(colouring.colour_start[static_cast<std::size_t>(c)]);
@@ -207,6 +208,8 @@ void VertexBlockDescent::sweep_colours(const BodySolve& s, const ThreadShares& s
       // each gets at least kLeastVerticesPerThread: a hand-over costs a few microseconds.
       const std::span<const int> colour(colouring.vertices.data() + first, last - first);
       ColourParts parts;
+      parts.groups = &groups;
+      parts.colour = c;
       if (shares.threads > 1 && colour.size() >= kLeastVerticesPerThread * static_cast<std::size_t>(shares.threads)) {
         parts.slots = std::span<const int>(shares.slots.data() + first, last - first);
         parts.bounds =
@@ -319,6 +322,12 @@ void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   if (shares_.size() != blocks_.size() || (!shares_.empty() && shares_.front().threads != runner_->threads())) {
     shares_.clear();
     for (const VertexBlocks& blocks : blocks_) shares_.push_back(thread_shares(blocks, runner_->threads()));
+    lane_groups_.clear();
+  }
+  if (lane_groups_.size() != blocks_.size() || (!lane_groups_.empty() && lane_groups_.front().width != lane_width())) {
+    lane_groups_.clear();
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+      lane_groups_.push_back(lane_groups(blocks_[b], shares_[b], lane_width()));
   }
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);

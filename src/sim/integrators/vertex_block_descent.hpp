@@ -10,6 +10,7 @@
 #include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/integrators.hpp"
 #include "sim/integrators/joint_affine_correction.hpp"
+#include "sim/integrators/lane_groups.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/integrators/vertex_energy.hpp"
@@ -100,7 +101,8 @@ class VertexBlockDescent final : public Integrator {
   void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
   // One sweep over body s's vertices, colour by colour: each colour at once on the threads (move_colour_at_once)
   // unless body contacts couple its vertices or the safeguard refuses, then one vertex at a time.
-  void sweep_colours(const BodySolve& s, const ThreadShares& shares, std::span<Vec3> x, double& volume);
+  void sweep_colours(const BodySolve& s, const ThreadShares& shares, const LaneGroups& groups, std::span<Vec3> x,
+                     double& volume);
   // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
   void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
@@ -116,6 +118,7 @@ class VertexBlockDescent final : public Integrator {
   std::size_t affine_body_ = 0;                   // the body whose affine matrix coarse_scratch_ holds
   std::vector<VertexBlocks> blocks_;              // per body
   std::vector<ThreadShares> shares_;              // per body, for the runner's threads
+  std::vector<LaneGroups> lane_groups_;           // per body, for shares_ and the lanes' width
   std::optional<SmoothFloor> smooth_floor_;       // the floor's constants when its contact is smooth
   std::vector<SmoothCollider> smooth_colliders_;  // the colliders whose contact is smooth
   VertexContacts contacts_;                       // the smooth contact between bodies

@@ -39,13 +39,26 @@ namespace {
 
 using namespace lane_math;
 
-// six_volume_gradient of vertices first .. first + 3 (six_volume_gradients_in_lanes).
+// six_volume_gradient of vertices first .. first + 3 (six_volume_gradients_in_lanes), their faces from the blocks'
+// rows (the lanes past a row's end take its last face, discarded).
 SOFTBODY_LANES_TARGET void six_volume_gradients_avx2(const VertexBlocks& blocks, std::size_t first,
                                                      std::span<const Vec3> x, Vec3* six_gradient) {
-  int vertices[kLanes];
-  for (int l = 0; l < kLanes; ++l) vertices[l] = static_cast<int>(first) + l;
-  const avx2_lanes::LaneRows rows = avx2_lanes::lane_rows(blocks, vertices, kLanes);
-  const Lane3 sum = avx2_lanes::six_volume_gradient_sums(blocks, x, rows, gather(x, rows.vertex));
+  int face_first[kLanes], faces[kLanes], most_faces = 0;
+  std::size_t vertex[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    vertex[l] = first + static_cast<std::size_t>(l);
+    face_first[l] = blocks.face_start[vertex[l]];
+    faces[l] = blocks.face_start[vertex[l] + 1] - face_first[l];
+    most_faces = std::max(most_faces, faces[l]);
+  }
+  const auto corners = [&](int slot, std::size_t* corner_b, std::size_t* corner_c) {
+    for (int l = 0; l < kLanes; ++l) {
+      const auto f = static_cast<std::size_t>(faces[l] == 0 ? 0 : face_first[l] + std::min(slot, faces[l] - 1));
+      corner_b[l] = static_cast<std::size_t>(blocks.face_others[f][0]);
+      corner_c[l] = static_cast<std::size_t>(blocks.face_others[f][1]);
+    }
+  };
+  const Lane3 sum = avx2_lanes::six_volume_gradient_sums(x, from_ints(faces), most_faces, gather(x, vertex), corners);
   double sx[kLanes], sy[kLanes], sz[kLanes];
   store(sx, sum.x);
   store(sy, sum.y);
@@ -84,10 +97,12 @@ bool six_volume_gradients_in_lanes(const VertexBlocks& blocks, std::size_t first
   return true;
 }
 
-unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
-                             VertexMove* moves, MoveCounts& counts) {
-  if (count > kLanes) return avx512_lanes::sure_moves_in_eight(s, vertices, count, x, volume, moves, counts);
-  return avx2_lanes::sure_moves(s, vertices, count, x, volume, moves, counts);
+unsigned sure_moves_in_lanes(const BodySolve& s, const LaneGroups& groups, int group, const int* vertices, int count,
+                             std::span<const Vec3> x, double volume, VertexMove* moves, MoveCounts& counts) {
+  if (groups.width == kMostLanes) {
+    return avx512_lanes::sure_moves_in_eight(s, groups, group, vertices, count, x, volume, moves, counts);
+  }
+  return avx2_lanes::sure_moves(s, groups, group, vertices, count, x, volume, moves, counts);
 }
 
 #else
@@ -104,8 +119,8 @@ bool lanes_serve(const BodySolve&) { return false; }
 
 bool six_volume_gradients_in_lanes(const VertexBlocks&, std::size_t, std::span<const Vec3>, Vec3*) { return false; }
 
-unsigned sure_moves_in_lanes(const BodySolve&, const int*, int, std::span<const Vec3>, double, VertexMove*,
-                             MoveCounts&) {
+unsigned sure_moves_in_lanes(const BodySolve&, const LaneGroups&, int, const int*, int, std::span<const Vec3>, double,
+                             VertexMove*, MoveCounts&) {
   return 0;
 }
 

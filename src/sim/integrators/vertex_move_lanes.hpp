@@ -5,6 +5,7 @@
 
 #include <span>
 
+#include "sim/integrators/lane_groups.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/integrators/vertex_moves.hpp"
 
@@ -34,15 +35,16 @@ void enable_lanes(bool enabled);
 void enable_wide_lanes(bool enabled);
 
 // How many vertices sure_moves_in_lanes takes at once now: 8 where the lanes run and the CPU has AVX-512F (unless
-// switched off), else 4.
+// switched off), else 4 (the width of the LaneGroups to build, lane_groups.hpp).
 int lane_width();
 
-// The moves of vertices[0 .. count) (count ≤ lane_width(), of one colour) from x with the body's volume V, for the
-// lanes whose Newton step is certain without a line search (sure_descent) and touches no floor: their moves[l] are set
-// and bit l of the result. The others (a step for the line search, a negligible or non-descending step, a vertex in or
-// reaching the floor's range, coincident ends) are left to vertex_move. Adds the moves it made to counts.
-unsigned sure_moves_in_lanes(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
-                             VertexMove* moves, MoveCounts& counts);
+// The moves of group `group` of `groups` (lane_groups.hpp, groups.width = lane_width()): its vertices[0 .. count) of
+// one colour, from x with the body's volume V, for the lanes whose Newton step is certain without a line search
+// (sure_descent) and touches no floor: their moves[l] are set and bit l of the result. The others (a step for the line
+// search, a negligible or non-descending step, a vertex in or reaching the floor's range, coincident ends) are left to
+// vertex_move. Adds the moves it made to counts.
+unsigned sure_moves_in_lanes(const BodySolve& s, const LaneGroups& groups, int group, const int* vertices, int count,
+                             std::span<const Vec3> x, double volume, VertexMove* moves, MoveCounts& counts);
 
 // six_volume_gradient(blocks, i, x) of the four vertices i = first .. first + 3 into six_gradient[0 .. 4), by the
 // lanes' sums of the gas terms. Returns whether it did (false where the lanes do not run).

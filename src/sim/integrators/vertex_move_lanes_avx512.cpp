@@ -19,15 +19,15 @@ using namespace lane_math_avx512;
 #undef LANES_TARGET
 }  // namespace
 
-unsigned sure_moves_in_eight(const BodySolve& s, const int* vertices, int count, std::span<const Vec3> x, double volume,
-                             VertexMove* moves, MoveCounts& counts) {
-  return sure_moves(s, vertices, count, x, volume, moves, counts);
+unsigned sure_moves_in_eight(const BodySolve& s, const LaneGroups& groups, int group, const int* vertices, int count,
+                             std::span<const Vec3> x, double volume, VertexMove* moves, MoveCounts& counts) {
+  return sure_moves(s, groups, group, vertices, count, x, volume, moves, counts);
 }
 
 #else
 
-unsigned sure_moves_in_eight(const BodySolve&, const int*, int, std::span<const Vec3>, double, VertexMove*,
-                             MoveCounts&) {
+unsigned sure_moves_in_eight(const BodySolve&, const LaneGroups&, int, const int*, int, std::span<const Vec3>, double,
+                             VertexMove*, MoveCounts&) {
   return 0;
 }
 

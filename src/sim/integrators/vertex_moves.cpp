@@ -95,8 +95,8 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
   const int part_count = parts.bounds.empty() ? 1 : static_cast<int>(parts.bounds.size()) - 1;
   size_scratch(s, n, part_count, scratch);
   const double start_volume = volume;
-  const bool lanes = lanes_serve(s);
-  const int width = lane_width();
+  const bool lanes = lanes_serve(s) && parts.groups != nullptr && parts.groups->width == lane_width();
+  const int width = lanes ? parts.groups->width : kMostLanes;
   runner.run(part_count, [&](int part) {
     ConstraintLags& lags = scratch.lags[static_cast<std::size_t>(part)];
     MoveCounts part_counts;  // on this thread's stack: the parts' counts share cache lines
@@ -112,8 +112,9 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
     };
     // The part's slots lane_width() at a time (the last group may be shorter): the lanes take the vertices whose
     // step is sure, vertex_move the others.
-    const auto move_slots = [&](auto slot_at, std::size_t count) {
+    const auto move_slots = [&](auto slot_at, std::size_t count, int first_group) {
       for (std::size_t k = 0; k < count; k += static_cast<std::size_t>(width)) {
+        const int lane_group = first_group + static_cast<int>(k / static_cast<std::size_t>(width));
         const int group = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(width), count - k));
         std::size_t slots[kMostLanes];
         int vertices[kMostLanes];
@@ -122,7 +123,9 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
           slots[l] = slot_at(k + static_cast<std::size_t>(l));
           vertices[l] = colour[slots[l]];
         }
-        const unsigned taken = lanes ? sure_moves_in_lanes(s, vertices, group, x, start_volume, moves, part_counts) : 0;
+        const unsigned taken = lanes ? sure_moves_in_lanes(s, *parts.groups, lane_group, vertices, group, x,
+                                                           start_volume, moves, part_counts)
+                                     : 0;
         for (int l = 0; l < group; ++l) {
           if ((taken & (1u << l)) != 0) {
             apply(slots[l], moves[l]);
@@ -132,12 +135,18 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
         }
       }
     };
+    const auto colour_index = static_cast<std::size_t>(parts.colour);
     if (parts.bounds.empty()) {
-      move_slots([](std::size_t k) { return k; }, n);
+      move_slots([](std::size_t k) { return k; }, n, lanes ? parts.groups->colour_group[colour_index] : 0);
     } else {
       const auto begin = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part)]);
       const auto end = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part) + 1]);
-      move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + k]); }, end - begin);
+      const int first_group =
+          lanes ? parts.groups->part_group[colour_index * static_cast<std::size_t>(parts.groups->threads) +
+                                           static_cast<std::size_t>(part)]
+                : 0;
+      move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + k]); }, end - begin,
+                 first_group);
     }
     scratch.counts[static_cast<std::size_t>(part)] = part_counts;
   });

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "sim/integrators/lane_groups.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/step/part_runner.hpp"
 
@@ -45,10 +46,13 @@ struct ColourScratch {
 };
 
 // How a colour's vertices are split among threads: part p takes the slots (positions in the colour) slots[bounds[p] ..
-// bounds[p + 1]); no bounds: one part, the colour in order.
+// bounds[p + 1]); no bounds: one part, the colour in order. The lanes take each part's vertices in the groups of
+// `groups` (lane_groups.hpp) for colour `colour`, of the lanes' width (lane_width(), vertex_move_lanes.hpp).
 struct ColourParts {
   std::span<const int> slots;
   std::span<const int> bounds;
+  const LaneGroups* groups = nullptr;
+  int colour = 0;
 };
 
 // A colour's vertices (no two share a constraint, a face or a bending link) moved at once, each by its vertex_move
