@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 
 #include "sim/forces/forces.hpp"
+#include "sim/integrators/correction_lanes.hpp"
 #include "sim/integrators/vertex_contacts.hpp"
 #include "sim/step/chunked_sum.hpp"
 
@@ -232,7 +233,7 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
   // V(x + A (x − c) + t) = det(I + A) V(x), so Bᵀ∇V = V vec(I): V on A's diagonal, 0 on t.
   double volume = 0.0;
   if (s.gas) {
-    volume = enclosed_volume(body.topology.faces, x, s.runner, scratch.volume_sums);
+    volume = enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.volume_sums);
     static constexpr int kDiagonal[3] = {0, 4, 8};  // A_aa in q
     for (const int a : kDiagonal) {
       G(a) -= s.gas->pressure(volume) * volume;

@@ -357,7 +357,8 @@ double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace&
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
-  const double volume = s.gas ? enclosed_volume(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
+  const double volume =
+      s.gas ? enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
   take_edge_forces(body, s, x, scratch);
   scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));

@@ -1,8 +1,10 @@
 // Four constraints at once, one per AVX2 lane (see lane_math.hpp): each expression is the scalar loop's, in its order.
 #include "sim/integrators/correction_lanes.hpp"
 
+#include "sim/forces/forces.hpp"
 #include "sim/integrators/lane_math.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
+#include "sim/step/chunked_sum.hpp"
 
 namespace sim {
 
@@ -87,7 +89,47 @@ SOFTBODY_LANES_TARGET std::size_t edge_energy_changes_avx2(const DistanceConstra
   return e;
 }
 
+// The faces' six-volume terms (x_a − o)·((x_b − o) × (x_c − o)) from `first`, four at a time, added to six_volume one
+// at a time in face order (forces.cpp's six_volume_of, Eigen's cross and dot). Returns where it stopped.
+SOFTBODY_LANES_TARGET std::size_t six_volume_avx2(std::span<const Triangle> faces, std::span<const Vec3> x,
+                                                  const Vec3& origin, std::size_t first, std::size_t last,
+                                                  double& six_volume) {
+  const Lane3 o{splat(origin.x()), splat(origin.y()), splat(origin.z())};
+  std::size_t f = first;
+  for (; f + kLanes <= last; f += kLanes) {
+    std::size_t corner[3][kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      for (int k = 0; k < 3; ++k) {
+        corner[k][l] = static_cast<std::size_t>(faces[f + static_cast<std::size_t>(l)][static_cast<std::size_t>(k)]);
+      }
+    }
+    const Lane3 a = minus(gather(x, corner[0]), o), b = minus(gather(x, corner[1]), o),
+                c = minus(gather(x, corner[2]), o);
+    const Lane3 b_cross_c{b.y * c.z - b.z * c.y, b.z * c.x - b.x * c.z, b.x * c.y - b.y * c.x};
+    double terms[kLanes];
+    store(terms, dot(a, b_cross_c));
+    for (int l = 0; l < kLanes; ++l) six_volume += terms[l];
+  }
+  return f;
+}
+
 }  // namespace
+
+double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                                std::vector<double>& partials) {
+  if (!lanes_on()) return enclosed_volume(faces, x, runner, partials);
+  const Vec3& origin = x[0];
+  const double six_volume =
+      chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
+        double sum = 0.0;
+        for (std::size_t f = six_volume_avx2(faces, x, origin, first, last, sum); f < last; ++f) {
+          const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
+          sum += a.dot(b.cross(c));
+        }
+        part = sum;
+      });
+  return six_volume / 6.0;
+}
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x,
                                  std::size_t first, std::size_t last, MotionScratch& scratch, std::span<Vec3> force) {
@@ -103,6 +145,11 @@ std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints,
 }
 
 #else
+
+double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                                std::vector<double>& partials) {
+  return enclosed_volume(faces, x, runner, partials);
+}
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints&, const BodySolve&, std::span<const Vec3>, std::size_t first,
                                  std::size_t, MotionScratch&, std::span<Vec3>) {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "sim/integrators/motion_search.hpp"
 #include "sim/integrators/vertex_energy.hpp"
@@ -25,5 +26,10 @@ std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const B
 std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints, const BodySolve& s,
                                          std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
                                          std::size_t first, std::size_t last, double& change);
+
+// V(x) of `faces` as enclosed_volume(faces, x, runner, partials) gives it (forces.hpp: the same chunks, each chunk's
+// faces summed in order), the faces' terms x_a·(x_b × x_c) (about x[0]) four at a time where the lanes run [m³].
+double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                                std::vector<double>& partials);
 
 }  // namespace sim

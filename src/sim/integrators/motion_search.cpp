@@ -55,7 +55,7 @@ double volume_change(const Body& body, const BodySolve& s, std::span<const Vec3>
   chunked_for(s.runner, x.size(), [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) trial[i] = x[i] + alpha * scratch.motion[i];
   });
-  return enclosed_volume(body.topology.faces, trial, s.runner, scratch.volume_sums) - volume;
+  return enclosed_volume_in_lanes(body.topology.faces, trial, s.runner, scratch.volume_sums) - volume;
 }
 
 // The vertices' part of E's change along α motion (inertia, floor, colliders) over [first, last) [J].

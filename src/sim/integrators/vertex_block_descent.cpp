@@ -9,6 +9,7 @@
 #include "sim/contact/collider_shape.hpp"
 #include "sim/forces/forces.hpp"
 #include "sim/integrators/affine_correction.hpp"
+#include "sim/integrators/correction_lanes.hpp"
 #include "sim/integrators/joint_affine_correction.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
 
@@ -171,7 +172,7 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
       } else if (own_affine) {
         volume = coarse_scratch_.search.volume_after;
       } else {
-        volume = enclosed_volume(body.topology.faces, x, runner_, volume_sums_);
+        volume = enclosed_volume_in_lanes(body.topology.faces, x, runner_, volume_sums_);
       }
     }
     sweep_colours(s, shares_[b], lane_groups_[b], x, volume);
