@@ -329,8 +329,8 @@ struct Table {
         key("max_file_mb", {integer(1, 1 << 20)}, "MiB", "Size of a mesh file; larger ones are not read.", 256),
         key("max_total_vertices", {integer(1, kMost)}, "",
             "Vertices of the whole scene: every body's mesh and simulation proxy and every collider's mesh, summed. "
-            "Each body vertex takes about 0.4 kB of memory with the explicit integrators and 1.2 kB with vbd "
-            "(4,000,000: about 5 GB).",
+            "Each body vertex takes about 0.4 kB of memory with the explicit integrators and 1.4 kB with vbd, 1.6 kB "
+            "on several threads (4,000,000: about 6 GB).",
             4'000'000),
         key("max_total_triangles", {integer(1, kMost)}, "", "Triangles of the whole scene, summed as the vertices.",
             8'000'000),
