@@ -20,6 +20,29 @@ using softbody::Vec3;
 
 constexpr int kSweeps = 4;  // sweeps per measured step (the bench's default setting)
 
+// The benchmarks' lanes argument: 0 one vertex at a time, 1 four lanes (AVX2), 2 eight (AVX-512F)
+// (sim/integrators/vertex_move_lanes.hpp). Switches them for the program; false (the benchmark skipped) where this CPU
+// has no eight lanes.
+bool use_lanes(benchmark::State& st, int lanes) {
+  if (lanes == 2 && !sim::wide_lanes_available()) {
+    st.SkipWithError("this CPU has no AVX-512F: no eight lanes");
+    return false;
+  }
+  sim::enable_lanes(lanes > 0);
+  sim::enable_wide_lanes(lanes == 2);
+  return true;
+}
+
+// The lanes back to their default (on, eight where the CPU has them).
+void restore_lanes() {
+  sim::enable_lanes(true);
+  sim::enable_wide_lanes(true);
+}
+
+std::string lanes_label(int lanes) {
+  return lanes == 0 ? "one vertex at a time" : lanes == 1 ? "four lanes" : "eight lanes";
+}
+
 // bounce_smooth.json's ball at icosphere:level, stepped by vbd for 0.1 s from its start 3 m up: in flight, its BDF2
 // history made by vbd's own steps.
 sim::World flying_ball(int level, int threads) {
@@ -35,19 +58,14 @@ sim::World flying_ball(int level, int threads) {
 }
 
 // One BDF2 step (ratio 1: h is the last step's, so vbd takes it whole) per iteration from the same state.
-// Args: {level, affine correction 1/0, threads, lanes: 0 one vertex at a time, 1 four (AVX2), 2 eight (AVX-512F)
-// (sim/integrators/vertex_move_lanes.hpp)}; CPU time is summed over the threads, so compare wall time (real_time).
+// Args: {level, affine correction 1/0, threads, lanes (use_lanes)}; CPU time is summed over the threads, so compare
+// wall time (real_time).
 void BM_VbdSweep(benchmark::State& st) {
   const int level = static_cast<int>(st.range(0));
   const bool affine = st.range(1) == 1;
   const int threads = static_cast<int>(st.range(2));
   const int lanes = static_cast<int>(st.range(3));
-  if (lanes == 2 && !sim::wide_lanes_available()) {
-    st.SkipWithError("this CPU has no AVX-512F: no eight lanes");
-    return;
-  }
-  sim::enable_lanes(lanes > 0);
-  sim::enable_wide_lanes(lanes == 2);
+  if (!use_lanes(st, lanes)) return;
   sim::World world = flying_ball(level, threads);
   const sim::State start = world.state;
   const double h = start.carry.previous_dt_s;
@@ -62,14 +80,9 @@ void BM_VbdSweep(benchmark::State& st) {
   }
   const auto vertices = static_cast<double>(state.x.size());
   const double vertex_sweeps = vertices * kSweeps * static_cast<double>(vbd.statistics().steps);
-  sim::enable_lanes(true);
-  sim::enable_wide_lanes(true);
+  restore_lanes();
   st.SetLabel(std::string(affine ? "with" : "without") + " affine correction, " + std::to_string(threads) +
-              " thread(s), " +
-              (lanes == 0   ? "one vertex at a time"
-               : lanes == 1 ? "four lanes"
-                            : "eight lanes") +
-              ", h " + std::to_string(h) + " s");
+              " thread(s), " + lanes_label(lanes) + ", h " + std::to_string(h) + " s");
   st.counters["vertices"] = vertices;
   st.counters["steps_per_call"] = static_cast<double>(vbd.statistics().steps) / static_cast<double>(st.iterations());
   st.counters["ns_per_vertex_sweep"] =
@@ -82,15 +95,12 @@ void BM_VbdSweep(benchmark::State& st) {
 
 // One coarse correction (128 cells and the linear fields, as solver.coarse_space "auto" takes above 5000 vertices) on
 // the flying ball's BDF2 step from its start x = y, one thread. Args: {level, matrix assembled and factored 1/0 (vbd
-// assembles it at every kCoarseMatrixSteps-th step and reuses it between), lanes as BM_VbdSweep's}.
+// assembles it at every kCoarseMatrixSteps-th step and reuses it between), lanes (use_lanes)}.
 void BM_CoarseCorrection(benchmark::State& st) {
   const int level = static_cast<int>(st.range(0));
   const bool refresh = st.range(1) == 1;
   const int lanes = static_cast<int>(st.range(2));
-  if (lanes == 2 && !sim::wide_lanes_available()) {
-    st.SkipWithError("this CPU has no AVX-512F: no eight lanes");
-    return;
-  }
+  if (!use_lanes(st, lanes)) return;
   const sim::World world = flying_ball(level, 1);
   const sim::Body& body = world.model.bodies[0];
   const sim::VertexBlocks blocks = sim::vertex_blocks(body);
@@ -106,8 +116,6 @@ void BM_CoarseCorrection(benchmark::State& st) {
   s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
   sim::CoarseScratch scratch;
   std::vector<Vec3> x = target;
-  sim::enable_lanes(lanes > 0);
-  sim::enable_wide_lanes(lanes == 2);
   sim::coarse_correction(body, s, space, x, true, scratch);  // sizes the scratch and factors the matrix once
   for (auto _ : st) {
     st.PauseTiming();
@@ -115,13 +123,10 @@ void BM_CoarseCorrection(benchmark::State& st) {
     st.ResumeTiming();
     benchmark::DoNotOptimize(sim::coarse_correction(body, s, space, x, refresh, scratch));
   }
-  sim::enable_lanes(true);
-  sim::enable_wide_lanes(true);
-  st.SetLabel(std::string(refresh ? "assembling and factoring" : "reusing") + " the matrix, " +
-              (lanes == 0   ? "one at a time, "
-               : lanes == 1 ? "four lanes, "
-                            : "eight lanes, ") +
-              std::to_string(space.aggregates) + " aggregates, " + std::to_string(space.weight.size()) + " weights");
+  restore_lanes();
+  st.SetLabel(std::string(refresh ? "assembling and factoring" : "reusing") + " the matrix, " + lanes_label(lanes) +
+              ", " + std::to_string(space.aggregates) + " aggregates, " + std::to_string(space.weight.size()) +
+              " weights");
   st.counters["ns_per_vertex"] =
       benchmark::Counter(static_cast<double>(x.size()) * 1e-9,
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);

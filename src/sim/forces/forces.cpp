@@ -82,20 +82,14 @@ void add_spring_dampers(const DistanceConstraints& constraints, std::span<const 
   }
 }
 
-namespace {
-
-// Σ x_a·(x_b × x_c) over faces [first, last), positions relative to `origin` [m³].
 double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, const Vec3& origin, std::size_t first,
-                     std::size_t last) {
-  double six_volume = 0.0;
+                     std::size_t last, double six_volume) {
   for (std::size_t f = first; f < last; ++f) {
     const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
     six_volume += a.dot(b.cross(c));
   }
   return six_volume;
 }
-
-}  // namespace
 
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x) {
   return six_volume_of(faces, x, x[0], 0, faces.size()) / 6.0;

@@ -31,6 +31,11 @@ void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::spa
 void add_spring_dampers(const DistanceConstraints& constraints, std::span<const Vec3> x, std::span<const Vec3> v,
                         std::span<Vec3> force);
 
+// six_volume + Σ x_a·(x_b × x_c) over faces [first, last), positions relative to `origin`, each face's term added in
+// face order [m³]: the face loop of enclosed_volume (and of its lanes, sim/integrators/correction_lanes.hpp).
+double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, const Vec3& origin, std::size_t first,
+                     std::size_t last, double six_volume = 0.0);
+
 // Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);

@@ -122,11 +122,8 @@ double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const
   const double six_volume =
       chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
         double sum = 0.0;
-        for (std::size_t f = six_volume_avx2(faces, x, origin, first, last, sum); f < last; ++f) {
-          const Vec3 a = x[faces[f][0]] - origin, b = x[faces[f][1]] - origin, c = x[faces[f][2]] - origin;
-          sum += a.dot(b.cross(c));
-        }
-        part = sum;
+        const std::size_t tail = six_volume_avx2(faces, x, origin, first, last, sum);
+        part = six_volume_of(faces, x, origin, tail, last, sum);
       });
   return six_volume / 6.0;
 }

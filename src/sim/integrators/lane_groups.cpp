@@ -8,17 +8,13 @@
 namespace sim {
 namespace {
 
-// Entry `slot` of a row of `count` entries from `start`: past its end its last entry, 0 for an empty row.
-int row_entry(int start, int count, int slot) { return count == 0 ? 0 : start + std::min(slot, count - 1); }
-
 // Appends the group of the colour's vertices at `slots` (count ≤ width of them) and its rows.
 void add_group(const VertexBlocks& b, const int* colour, const int* slots, int count, LaneGroups& out) {
   const int width = out.width;
   LaneGroups::Group g;
-  g.count = count;
   g.slot_first = static_cast<int>(out.other_end.size()) / width;
   g.face_slot_first = static_cast<int>(out.face_corners.size()) / (2 * width);
-  int first[8], face_first[8];
+  int first[kMostLanes], face_first[kMostLanes];
   for (int l = 0; l < width; ++l) {
     const auto v = static_cast<std::size_t>(colour[slots[l < count ? l : 0]]);
     first[l] = b.constraint_start[v];

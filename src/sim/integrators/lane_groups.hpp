@@ -4,20 +4,26 @@
 // instead of one per lane.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "sim/integrators/vertex_blocks.hpp"
 
 namespace sim {
 
+inline constexpr int kMostLanes = 8;  // the widest lanes (AVX-512's eight doubles)
+
+// Entry `slot` of a compressed row of `count` entries from `start`, as the lanes read it: past the row's end its last
+// entry, 0 for an empty row (valid indices whose values the lanes' masks discard).
+inline int row_entry(int start, int count, int slot) { return count == 0 ? 0 : start + std::min(slot, count - 1); }
+
 struct LaneGroups {
-  // One group: up to `width` vertices of one colour; lanes past `count` repeat the first vertex's rows (their results
+  // One group: up to `width` vertices of one colour; the lanes past them repeat the first vertex's rows (their results
   // are discarded).
   struct Group {
-    int count = 0;
-    int most = 0, most_faces = 0;             // the longest constraint and face rows
-    int slot_first = 0, face_slot_first = 0;  // its first slots in the arrays below
-    int valence[8] = {}, faces[8] = {};       // each lane's row lengths
+    int most = 0, most_faces = 0;                          // the longest constraint and face rows
+    int slot_first = 0, face_slot_first = 0;               // its first slots in the arrays below
+    int valence[kMostLanes] = {}, faces[kMostLanes] = {};  // each lane's row lengths
   };
   int width = 0;    // the lanes per group (4 or 8, vertex_move_lanes.hpp's lane_width())
   int threads = 1;  // the thread shares' (ThreadShares::threads)
@@ -25,9 +31,8 @@ struct LaneGroups {
   // ColourParts) groups[part_group[c threads + t] ..].
   std::vector<int> colour_group, part_group;
   std::vector<Group> groups;
-  // Slot s of a group holds its lanes' entries at [(slot_first + s) width, (slot_first + s + 1) width): the row's s-th
-  // entry, past its end its last entry, and entry 0 for an empty row (valid values that the lanes' masks discard), as
-  // VertexBlocks' rows hold them.
+  // Slot s of a group holds its lanes' entries at [(slot_first + s) width, (slot_first + s + 1) width): each lane's
+  // row_entry(.., s) of VertexBlocks' rows.
   std::vector<int> other_end;
   std::vector<double> rest_length_m, stiffness_N_per_m, damping_N_s_per_m;
   // Face slot s: the lanes' first other corners at [2 (face_slot_first + s) width, .. + width), the second after them.

@@ -53,7 +53,7 @@ SOFTBODY_LANES_TARGET void six_volume_gradients_avx2(const VertexBlocks& blocks,
   }
   const auto corners = [&](int slot, std::size_t* corner_b, std::size_t* corner_c) {
     for (int l = 0; l < kLanes; ++l) {
-      const auto f = static_cast<std::size_t>(faces[l] == 0 ? 0 : face_first[l] + std::min(slot, faces[l] - 1));
+      const auto f = static_cast<std::size_t>(row_entry(face_first[l], faces[l], slot));
       corner_b[l] = static_cast<std::size_t>(blocks.face_others[f][0]);
       corner_c[l] = static_cast<std::size_t>(blocks.face_others[f][1]);
     }

@@ -11,8 +11,7 @@
 
 namespace sim {
 
-inline constexpr int kLanes = 4;      // AVX2's lanes
-inline constexpr int kMostLanes = 8;  // AVX-512's
+inline constexpr int kLanes = 4;  // AVX2's lanes (kMostLanes, lane_groups.hpp: AVX-512's)
 
 // Whether the lanes serve body `s` on this machine: the CPU has AVX2, and the body's terms are inertia, springs,
 // dampers, the gas and at most a smooth floor (no smooth colliders or body contacts, whose terms take their own paths).
