@@ -109,7 +109,8 @@ TEST(Cli, InfoExpectsACostPerSimulatedSecondForEachIntegrator) {
 }
 
 // vbd's line: on the smooth floor one step per 1/30 s frame in flight, priced as steps x sweeps x vertices x 155 ns
-// (30 x 4 x 642 x 155 ns = 0.0119 s), and the impacts' steps of at most kVbdImpactPhase / ω = 0.5 × 2 ms = 1 ms named.
+// (30 x 4 x 642 x 155 ns = 0.0119 s), and the impacts' steps of at most solver.impact_phase / ω = 0.5 × 2 ms = 1 ms
+// named.
 TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   const auto result = run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd");
   ASSERT_EQ(result.exit_status, 0) << result.output;

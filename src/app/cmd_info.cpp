@@ -164,7 +164,7 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
               "vbd", limit, frame_interval_s / steps, per_frame, cost, steps_per_s, sweeps, vertices,
               kVbdSweepNsPerVertex);
   if (const double omega = stiffest_smooth_contact(model); omega > 0.0) {
-    std::printf("; impacts add steps of at most %.2g ms while they last", 1e3 * sim::kVbdImpactPhase / omega);
+    std::printf("; impacts add steps of at most %.2g ms while they last", 1e3 * model.solver.impact_phase / omega);
   }
   std::printf("\n");
   print_vbd_coarse_level(model);

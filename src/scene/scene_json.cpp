@@ -255,6 +255,7 @@ sim::Solver read_solver(const ObjectReader& top) {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
   solver.iterations = r.integer("iterations");
+  solver.impact_phase = r.number("impact_phase");
   // vbd's coarse level: cells per body, or "auto" (the default; sim::auto_coarse_cells).
   if (!r.has("coarse_space") || r.at("coarse_space").is_string()) {
     if (r.has("coarse_space") && r.at("coarse_space").get<std::string>() != "auto") {

@@ -232,6 +232,36 @@ TEST(Vbd, ImpactsOnTheSmoothFloorNeverAddEnergy) {
   }
 }
 
+// solver.impact_phase sets the impacts' steps: the shallowest level of the frame's step dt (dt / 2^level) with ω h at
+// most the phase, so the smallest step a bounce takes has ω h in (phase/2, phase], and a smaller phase takes more
+// steps.
+TEST(Vbd, TheImpactsStepsKeepOmegaHWithinTheImpactPhase) {
+  const std::string scene = R"({ "gravity": [0, -9.81, 0],
+      "floor": { "height": 0.0, "contact": "smooth", "time_constant": 0.002, "friction": 0.5 },
+      "bodies": [ { "mesh": "icosphere:2", "position": [0, 1.1, 0], "velocity": [1, -5, 0],
+                    "mass": 1.0, "stiffness": 1000.0, "damping": 0.1, "pressure": 100.0 } ] })";
+  const double omega = 1.0 / 0.002;
+  long long steps_at[2] = {};
+  const double phases[2] = {sim::kVbdImpactPhase, sim::kVbdImpactPhase / 4.0};
+  for (int p = 0; p < 2; ++p) {
+    sim::Solver solver;
+    solver.integrator = sim::IntegratorKind::Vbd;
+    solver.coarse_space_auto = false;
+    solver.impact_phase = phases[p];
+    sim::World world = integrator_tests::make_world(scene, solver);
+    double smallest = 1.0;
+    for (int n = 0; n < 30; ++n) {  // half a second at 60 frames per second: the fall and the impact
+      world.step(1.0 / 60.0);
+      smallest = std::min(smallest, world.state.carry.previous_dt_s);
+    }
+    EXPECT_LE(omega * smallest, phases[p]) << phases[p];
+    EXPECT_GT(omega * smallest, phases[p] / 2.0) << phases[p];
+    steps_at[p] = dynamic_cast<const sim::VertexBlockDescent&>(*world.workspace.integrator).statistics().steps;
+  }
+  EXPECT_GT(steps_at[1], 2 * steps_at[0])
+      << steps_at[0] << " steps at phase " << phases[0] << ", " << steps_at[1] << " at " << phases[1];
+}
+
 // A ball thrown at the smooth floor at 5 m/s: no vertex goes much deeper than rk45 at a tight tolerance takes it
 // (1.7 cm: the skin of a 2 ms contact under the whole ball's momentum), at one step per 1/60 s frame with 16 sweeps
 // (2.5 cm) or four per frame with 4 (1.8 cm). With 4 sweeps at 1/60 s it reaches 8.4 cm: the sweeps do not converge.

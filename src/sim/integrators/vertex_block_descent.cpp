@@ -20,9 +20,9 @@ namespace {
 // below its own round-off (about k ε l |l − L0| for a spring), so the test could only refuse a harmless move.
 constexpr double kNegligibleStep = 1e-8;
 // Around an impact on the smooth floor, a smooth collider or another body (smooth contact) the steps shrink to ω h ≤
-// kVbdImpactPhase (ω = 1/τ, the contact's spring per unit mass; the impact lasts about π/ω). A step counts as an impact
-// where the vertices in or reaching contact within it carry more normal momentum Σ m |v·n| than the body would at
-// kImpactSpeed: a roll or a rest, whose vertices touch down slowly, keeps full steps. Measured on
+// solver.impact_phase (ω = 1/τ, the contact's spring per unit mass; the impact lasts about π/ω). A step counts as an
+// impact where the vertices in or reaching contact within it carry more normal momentum Σ m |v·n| than the body would
+// at kImpactSpeed: a roll or a rest, whose vertices touch down slowly, keeps full steps. Measured on
 // scenes/bounce_smooth.json (docs/notes/2026-12-05-vbd.md).
 constexpr double kImpactSpeed = 0.01;  // m/s
 // The steps within a driver's step dt are dt / 2^level, level 0 to kDeepestLevel, so that they always tile it.
@@ -287,8 +287,8 @@ int VertexBlockDescent::next_level(const Model& model, const State& state, doubl
   const IntegratorCarry& carry = state.carry;
   const double h = std::ldexp(dt, -level);
   if (const double omega = impact_omega(model, state, h);
-      omega > 0.0) {  // the shallowest level with ω h ≤ kVbdImpactPhase
-    const double pieces = dt * omega / kVbdImpactPhase;
+      omega > 0.0) {  // the shallowest level with ω h ≤ the impact phase
+    const double pieces = dt * omega / impact_phase_;
     const int impact_level = static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0))));
     return std::clamp(impact_level, level, kDeepestLevel);
   }

@@ -18,9 +18,6 @@
 
 namespace sim {
 
-// Around an impact on a smooth contact vbd's steps shrink to ω h ≤ kVbdImpactPhase (ω = 1/τ of the contact).
-inline constexpr double kVbdImpactPhase = 0.5;
-
 // Each step of h is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
 // SIGGRAPH 2024, for the solve; Ascher & Petzold, "Computer Methods for ODEs and DAEs", Sect. 5.1, for BDF2):
 //   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
@@ -67,8 +64,9 @@ class VertexBlockDescent final : public Integrator {
   // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
   // (sim/integrators/coarse_space.hpp), 0 for none, kAutoAggregates for auto_coarse_cells by each body's size.
   static constexpr int kAutoAggregates = -1;
-  explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0)
-      : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates) {}
+  // `impact_phase`: around an impact on a smooth contact the steps shrink to ω h ≤ it (solver.impact_phase).
+  explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0, double impact_phase = kVbdImpactPhase)
+      : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates), impact_phase_(impact_phase) {}
   void step(Dynamics& dynamics, State& state, double dt) override;
   const Statistics& statistics() const { return statistics_; }
 
@@ -110,6 +108,7 @@ class VertexBlockDescent final : public Integrator {
   bool coarse_ = true;  // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;
   int aggregates_ = 0;                      // the coarse level's cells per body (0: none; kAutoAggregates)
+  double impact_phase_ = kVbdImpactPhase;   // the impacts' steps keep ω h ≤ this
   std::vector<CoarseSpace> coarse_spaces_;  // per body; aggregates 0 where it has no coarse level
   CoarseScratch coarse_level_scratch_;
   std::size_t coarse_level_body_ = 0;             // the body whose matrix coarse_level_scratch_ holds

@@ -147,6 +147,10 @@ struct BodyContact {
   double push_speed_m_per_s = 0.1;
 };
 
+// vbd's default solver.impact_phase: around an impact on a smooth contact its steps shrink to ω h ≤ this (ω = 1/τ of
+// the contact's spring).
+inline constexpr double kVbdImpactPhase = 0.5;
+
 struct Solver {
   IntegratorKind integrator = IntegratorKind::Euler;
   double dt_s = 1e-4;    // requested time step; the run uses the largest dt <= this that divides 1/fps
@@ -158,6 +162,7 @@ struct Solver {
   int substeps = 0;
   bool substeps_auto = false;
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
+  double impact_phase = kVbdImpactPhase;  // vbd: its steps around an impact on a smooth contact keep ω h ≤ this
   int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
   bool coarse_space_auto = true;  // "coarse_space": "auto" (the default): each body's cells by its size
                                   // (sim::auto_coarse_cells); false: coarse_space for every body
