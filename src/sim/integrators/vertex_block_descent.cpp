@@ -12,6 +12,7 @@
 #include "sim/integrators/correction_lanes.hpp"
 #include "sim/integrators/joint_affine_correction.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
+#include "sim/step/chunked_sum.hpp"
 
 namespace sim {
 namespace {
@@ -91,7 +92,7 @@ void VertexBlockDescent::pose_smooth_colliders(const Model& model, double time_s
   }
 }
 
-double VertexBlockDescent::set_targets(const Model& model, const State& state, double h, double ratio,
+double VertexBlockDescent::set_targets(const Model& model, State& state, double h, double ratio,
                                        const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous) {
   const std::size_t n = state.x.size();
   target_.resize(n);
@@ -103,15 +104,23 @@ double VertexBlockDescent::set_targets(const Model& model, const State& state, d
   const double b = a - 1.0;                                                           // of step n − 1
   const double h_hat = bdf2 ? h * (1.0 + ratio) / (1.0 + 2.0 * ratio) : h;
   const Vec3 fall = (h_hat * h_hat) * model.gravity_m_per_s2;  // ĥ² g [m]
-  for (std::size_t i = 0; i < n; ++i) {
-    if (bdf2) {
-      base_[i] = a * state.x[i] - b * x_previous[i];                                // x̃
-      target_[i] = base_[i] + h_hat * (a * state.v[i] - b * v_previous[i]) + fall;  // x̃ + ĥ ṽ + ĥ² g
-    } else {
-      base_[i] = state.x[i];
-      target_[i] = state.x[i] + h * state.v[i] + fall;
+  start_x_.resize(n);
+  start_v_.resize(n);
+  // One pass on the threads: x̃ and y, the step's start kept (the next step's history), and y as the first iterate.
+  chunked_for(runner_, n, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      if (bdf2) {
+        base_[i] = a * state.x[i] - b * x_previous[i];                                // x̃
+        target_[i] = base_[i] + h_hat * (a * state.v[i] - b * v_previous[i]) + fall;  // x̃ + ĥ ṽ + ĥ² g
+      } else {
+        base_[i] = state.x[i];
+        target_[i] = state.x[i] + h * state.v[i] + fall;
+      }
+      start_x_[i] = state.x[i];
+      start_v_[i] = state.v[i];
+      state.x[i] = target_[i];
     }
-  }
+  });
   return h_hat;
 }
 
@@ -360,15 +369,14 @@ void VertexBlockDescent::take_step(const Model& model, State& state, double h) {
   }
   const double h_hat = set_targets(model, state, h, ratio, from_older ? carry.older_x : carry.previous_x,
                                    from_older ? carry.older_v : carry.previous_v);
-  start_x_ = state.x;
-  start_v_ = state.v;
-  state.x = target_;  // the initial guess: y
   if (contacts_.active()) {
     sweep_in_contact(model, h_hat, state.x);
   } else {
     for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, state.x, 0, sweeps_);
   }
-  for (std::size_t i = 0; i < n; ++i) state.v[i] = (state.x[i] - base_[i]) / h_hat;  // v' = (x' − x̃)/ĥ
+  chunked_for(runner_, n, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) state.v[i] = (state.x[i] - base_[i]) / h_hat;  // v' = (x' − x̃)/ĥ
+  });
   // The history moves one step on: older ← previous ← the step's start (start_x_ keeps the oldest as scratch).
   carry.older_x.swap(carry.previous_x);
   carry.older_v.swap(carry.previous_v);

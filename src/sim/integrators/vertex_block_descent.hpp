@@ -87,9 +87,10 @@ class VertexBlockDescent final : public Integrator {
   // One implicit step of h.
   void take_step(const Model& model, State& state, double h);
   // y, x̃ and ĥ of this step into target_, base_ (BDF2 with the step ratio ω = h_n/h_{n−1} from the history
-  // x_previous, v_previous; backward Euler where ratio is 0); returns ĥ [s].
-  double set_targets(const Model& model, const State& state, double h, double ratio,
-                     const std::vector<Vec3>& x_previous, const std::vector<Vec3>& v_previous);
+  // x_previous, v_previous; backward Euler where ratio is 0), state's x and v into start_x_, start_v_, and y into
+  // state.x as the first iterate; returns ĥ [s].
+  double set_targets(const Model& model, State& state, double h, double ratio, const std::vector<Vec3>& x_previous,
+                     const std::vector<Vec3>& v_previous);
   // What body b's local solves read (without the contacts between bodies).
   BodySolve body_solve(const Model& model, std::size_t b, double h_hat) const;
   // Sweeps first_sweep .. first_sweep + count − 1 of a step over body b's vertices (all solver.iterations of them,

@@ -62,9 +62,12 @@ namespace {
 
 void size_scratch(const BodySolve& s, std::size_t vertices, int parts, ColourScratch& scratch) {
   if (scratch.lags.size() < static_cast<std::size_t>(parts)) scratch.lags.resize(static_cast<std::size_t>(parts));
+  // Each part's lags with kLagPadding unused entries after them: the parts write theirs at every vertex visit, on
+  // different threads, and two parts' small arrays could otherwise share a cache line on the heap.
+  constexpr std::size_t kLagPadding = 16;
   for (ConstraintLags& lags : scratch.lags) {
-    if (lags.offset.size() < static_cast<std::size_t>(s.blocks.most_constraints)) {
-      lags.resize(static_cast<std::size_t>(s.blocks.most_constraints));
+    if (lags.offset.size() < static_cast<std::size_t>(s.blocks.most_constraints) + kLagPadding) {
+      lags.resize(static_cast<std::size_t>(s.blocks.most_constraints) + kLagPadding);
     }
     if (lags.colliders.size() < s.colliders.size()) lags.colliders.resize(s.colliders.size());
   }

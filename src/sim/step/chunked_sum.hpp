@@ -48,13 +48,18 @@ void chunked_for(PartRunner* runner, std::size_t n, Visit&& visit) {
 }
 
 // Σ over the chunks of visit(first, last, partial), each partial starting at `zero`, added in chunk order; `partials`
-// is scratch (no allocation once its capacity settles).
+// is scratch (no allocation once its capacity settles). Each chunk sums into a partial on its own thread's stack and
+// stores it once: the partials lie side by side, and a visit that adds to its partial at every index would make the
+// threads fight over their shared cache lines.
 template <class Partial, class Visit>
 Partial chunked_sum(PartRunner* runner, std::size_t n, const Partial& zero, std::vector<Partial>& partials,
                     Visit&& visit) {
   partials.assign(static_cast<std::size_t>(chunk_count(n)), zero);
-  for_each_chunk(runner, n,
-                 [&](std::size_t c, std::size_t first, std::size_t last) { visit(first, last, partials[c]); });
+  for_each_chunk(runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
+    Partial partial = zero;
+    visit(first, last, partial);
+    partials[c] = partial;
+  });
   Partial total = partials[0];
   for (std::size_t c = 1; c < partials.size(); ++c) total += partials[c];
   return total;
