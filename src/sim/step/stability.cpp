@@ -299,8 +299,13 @@ std::optional<double> lowest_contact_height(const Model& model) {
 
 }  // namespace
 
-StabilityEstimate estimate_stability(const Model& model, const State& state) {
-  StabilityEstimate estimate = estimate_stability(model.bodies, state.x);
+StabilityEstimate estimate_stability(const Model& model, const State& state, bool modes) {
+  StabilityEstimate estimate;
+  if (modes) {
+    estimate = estimate_stability(model.bodies, state.x);
+  } else {
+    estimate.stable_dt_s.fill(StabilityEstimate::kUnlimited);
+  }
   for (const Vec3& v : state.v) estimate.impact_speed_m_per_s = std::max(estimate.impact_speed_m_per_s, v.norm());
   const std::optional<double> ground = lowest_contact_height(model);
   if (!ground) {

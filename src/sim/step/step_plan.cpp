@@ -13,7 +13,8 @@ StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const
   const bool substepped = integrator_info(solver.integrator).frame_substeps;
   plan.substeps = substepped ? solver.substeps : 0;
   if (substepped && (solver.substeps_auto || solver.dt_auto)) {
-    const StabilityEstimate estimate = estimate_stability(model, state);
+    // vbd's substeps need only the contact's travel limit, not the bodies' modes.
+    const StabilityEstimate estimate = estimate_stability(model, state, solver.integrator != IntegratorKind::Vbd);
     plan.substeps = auto_substeps(solver.integrator, model, estimate, frame_interval_s);
     plan.substeps_chosen = true;
     plan.travel_dt_s = estimate.travel_dt_s;
