@@ -23,11 +23,7 @@ for level in 3 4; do
     --set solver.integrator=rk45 --set solver.tolerance=1e-8 --set solver.threads=1 \
     --csv $out/ref${level}_frictionless.csv > /dev/null
   for phase in 0.5 0.125; do for it in 4 16; do
-    name=frictionless_L${level}_phase${phase}_it$it
-    t=$( { /usr/bin/time -f "%U" $B simulate scenes/bounce_smooth.json --set bodies.0.mesh=\"icosphere:$level\" \
-      --set duration=$dur --set floor.friction=0 --set solver.threads=1 --set solver.integrator=\"vbd\" \
-      --set solver.iterations=$it --set solver.impact_phase=$phase --csv $out/$name.csv >/dev/null; } 2>&1 | tail -1)
-    echo "$name L$level cpu_s=$t per_sim_s=$(python3 -c "print(round($t/$dur,4))")" \
-         "first_impact:$(python3 bench/csv_errors.py $out/ref${level}_frictionless.csv $out/$name.csv | cut -d: -f2)"
+    REF=$out/ref${level}_frictionless.csv run frictionless_L${level}_phase${phase}_it$it $level $dur \
+      --set floor.friction=0 --set solver.integrator=\"vbd\" --set solver.iterations=$it --set solver.impact_phase=$phase
   done; done
 done
