@@ -61,11 +61,15 @@ LaneGroups lane_groups(const VertexBlocks& blocks, const ThreadShares& shares, i
     const int first = colouring.colour_start[static_cast<std::size_t>(c)];
     const int size = colouring.colour_start[static_cast<std::size_t>(c) + 1] - first;
     const int* colour = colouring.vertices.data() + first;
-    std::vector<int> in_order(static_cast<std::size_t>(size));
-    for (int slot = 0; slot < size; ++slot) in_order[static_cast<std::size_t>(slot)] = slot;
-    out.colour_group.push_back(static_cast<int>(out.groups.size()));
-    add_groups(blocks, colour, in_order.data(), size, out);
-    if (shares.threads <= 1) continue;
+    if (!shares.splits(c)) {  // walked in order by one thread
+      std::vector<int> in_order(static_cast<std::size_t>(size));
+      for (int slot = 0; slot < size; ++slot) in_order[static_cast<std::size_t>(slot)] = slot;
+      out.colour_group.push_back(static_cast<int>(out.groups.size()));
+      add_groups(blocks, colour, in_order.data(), size, out);
+      if (shares.threads > 1) out.part_group.insert(out.part_group.end(), static_cast<std::size_t>(shares.threads), -1);
+      continue;
+    }
+    out.colour_group.push_back(-1);
     const int* starts = &shares.part_start[static_cast<std::size_t>(c * (shares.threads + 1))];
     for (int t = 0; t < shares.threads; ++t) {
       out.part_group.push_back(static_cast<int>(out.groups.size()));

@@ -27,8 +27,9 @@ struct LaneGroups {
   };
   int width = 0;    // the lanes per group (4 or 8, vertex_move_lanes.hpp's lane_width())
   int threads = 1;  // the thread shares' (ThreadShares::threads)
-  // Colour c walked in order takes groups[colour_group[c] ..]; its part for thread t (where the colour is shared,
-  // ColourParts) groups[part_group[c threads + t] ..].
+  // Colour c walked in order takes groups[colour_group[c] ..]; where ThreadShares::splits(c), its part for thread t
+  // (ColourParts) takes groups[part_group[c threads + t] ..] instead. Each colour has only the groups it is walked in
+  // (−1 in the other's entries).
   std::vector<int> colour_group, part_group;
   std::vector<Group> groups;
   // Slot s of a group holds its lanes' entries at [(slot_first + s) width, (slot_first + s + 1) width): each lane's
@@ -39,8 +40,8 @@ struct LaneGroups {
   std::vector<int> face_corners;
 };
 
-// The groups of `width` lanes for the colouring of `blocks` walked in order and, where shares has several threads,
-// split as shares splits it.
+// The groups of `width` lanes for the colouring of `blocks`: each colour walked in order, or split as shares splits it
+// where it goes to the threads (ThreadShares::splits).
 LaneGroups lane_groups(const VertexBlocks& blocks, const ThreadShares& shares, int width);
 
 }  // namespace sim

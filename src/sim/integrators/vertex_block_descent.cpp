@@ -48,8 +48,6 @@ constexpr bool kLagEverySweep = true;
 // docs/notes/2026-12-05-vbd-levels.md).
 constexpr long long kCoarseMatrixSteps = 8;
 constexpr int kCoarseEverySweeps = 2;
-// A colour's vertices go to several threads only where each gets at least this many.
-constexpr std::size_t kLeastVerticesPerThread = 256;
 
 // Whether a and b are the same step size (both made by std::ldexp of one dt).
 bool same_step(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(a, b); }
@@ -220,7 +218,7 @@ void VertexBlockDescent::sweep_colours(const BodySolve& s, const ThreadShares& s
       ColourParts parts;
       parts.groups = &groups;
       parts.colour = c;
-      if (shares.threads > 1 && colour.size() >= kLeastVerticesPerThread * static_cast<std::size_t>(shares.threads)) {
+      if (shares.splits(c)) {
         parts.slots = std::span<const int>(shares.slots.data() + first, last - first);
         parts.bounds =
             std::span<const int>(shares.part_start.data() + static_cast<std::size_t>(c * (shares.threads + 1)),

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "sim/model/body.hpp"
@@ -35,6 +36,10 @@ struct VertexBlocks {
 inline constexpr int kSurfacePatches = 64;
 std::vector<int> surface_patches(const VertexBlocks& blocks);
 
+// A colour's vertices go to several threads only where each gets at least this many (a hand-over costs a few
+// microseconds).
+inline constexpr int kLeastVerticesPerThread = 256;
+
 // The vertices of every colour split among `threads` threads by surface patch (patch p to thread p mod threads), so
 // that each thread keeps to its own parts of the surface in every colour and sweep (only a patch's border reads what
 // another thread wrote). For one thread it is empty: the colour is walked in order.
@@ -46,6 +51,13 @@ struct ThreadShares {
   // Thread t of colour c takes slots[colour_start[c] + part_start[c (threads + 1) + t] ...
   // colour_start[c] + part_start[c (threads + 1) + t + 1]).
   std::vector<int> part_start;
+  // Whether colour c goes to the threads as split above (each thread at least kLeastVerticesPerThread of its vertices);
+  // otherwise one thread walks it in order.
+  bool splits(int c) const {
+    if (threads <= 1) return false;
+    const int size = part_start[static_cast<std::size_t>(c * (threads + 1) + threads)];  // the colour's vertices
+    return size >= kLeastVerticesPerThread * threads;
+  }
 };
 ThreadShares thread_shares(const VertexBlocks& blocks, int threads);
 
