@@ -50,8 +50,10 @@ TEST(VbdThreads, EveryColourIsSplitIntoEachThreadsPatches) {
       }
       std::sort(seen.begin(), seen.end());
       for (int slot = 0; slot < size; ++slot) ASSERT_EQ(seen[static_cast<std::size_t>(slot)], slot);  // each once
+      EXPECT_EQ(shares.splits(c), size >= sim::kLeastVerticesPerThread * threads) << "colour " << c;
     }
   }
+  EXPECT_FALSE(sim::thread_shares(blocks, 1).splits(0));
 }
 
 // The point of patches: a thread's vertices have most neighbours of its own, so little of what one thread writes is
