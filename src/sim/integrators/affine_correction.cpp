@@ -147,22 +147,25 @@ Vec3 centre_of_mass(const BodySolve& s, std::span<const Vec3> x, AffineScratch& 
   return sums.moment / sums.mass;
 }
 
-// Vertices [first, last): inertia, floor, colliders and contacts with bodies.
+// Vertices [first, last): inertia, floor, colliders and contacts with bodies; the floor's and colliders' lags at x
+// for the line search (MotionScratch::contacts_lagged).
 void add_vertex_terms(const BodySolve& s, std::span<const Vec3> x, const Vec3& centre, bool assemble, std::size_t first,
-                      std::size_t last, CoarseSums& sums) {
+                      std::size_t last, MotionScratch& search, CoarseSums& sums) {
+  const std::size_t n = x.size();
   for (std::size_t i = first; i < last; ++i) {
     const Vec3 r = x[i] - centre;
     const double m = s.mass_kg[i];
     if (assemble) sums.moments.add_inertia(m * s.inverse_h2, r);
     Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
-    if (s.floor && x[i].y() < s.floor->height_m) {
+    if (s.floor) {
       Block3 hessian;
-      add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
-      if (assemble) add_block(hessian, r, sums.contact_blocks);
+      search.floor_lags[i] = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      if (assemble && x[i].y() < s.floor->height_m) add_block(hessian, r, sums.contact_blocks);
     }
-    for (const SmoothCollider& collider : s.colliders) {
+    for (std::size_t c = 0; c < s.colliders.size(); ++c) {
       Block3 hessian;
-      add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, hessian);
+      search.collider_lags[c * n + i] =
+          add_collider_terms(s.colliders[c], m, x[i], s.base[i], s.h_hat, gradient, hessian);
       if (assemble) add_block(hessian, r, sums.contact_blocks);
     }
     if (s.contacts) {  // each vertex's own block c_j² K (a self-contact's cross terms left out: still a descent)
@@ -212,11 +215,12 @@ void add_constraint_terms(const Body& body, const BodySolve& s, std::span<const 
 AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
                            bool assemble) {
   const Vec3 centre = centre_of_mass(s, x, scratch);
+  MotionScratch& search = scratch.search;
+  search.size_contact_lags(s, x.size());
   CoarseSums sums = chunked_sum(s.runner, x.size(), CoarseSums{}, scratch.sums,
                                 [&](std::size_t first, std::size_t last, CoarseSums& part) {
-                                  add_vertex_terms(s, x, centre, assemble, first, last, part);
+                                  add_vertex_terms(s, x, centre, assemble, first, last, search, part);
                                 });
-  MotionScratch& search = scratch.search;
   const std::size_t edges = body.constraints.size();
   search.size_edge_lags(edges);
   sums += chunked_sum(s.runner, edges, CoarseSums{}, scratch.sums,
@@ -243,6 +247,7 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
   }
   search.volume_after = volume;
   search.edges_lagged = true;
+  search.contacts_lagged = true;
   return AffineSystem{K, G, centre, volume};
 }
 

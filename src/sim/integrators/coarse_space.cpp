@@ -351,16 +351,19 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
 }
 
 // ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces) projected as −Pᵀ ∇E into
-// scratch.projection_sums, one partial sum per chunk on s.runner's threads. Returns V(x) (0 without gas).
+// scratch.projection_sums, one partial sum per chunk on s.runner's threads, and the floor's and colliders' lags at x
+// for the line search (MotionScratch::contacts_lagged). Returns V(x) (0 without gas).
 double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
                         CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
-  const double volume =
-      s.gas ? enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.search.volume_sums) : 0.0;
+  MotionScratch& search = scratch.search;
+  const double volume = s.gas ? enclosed_volume_in_lanes(body.topology.faces, x, s.runner, search.volume_sums) : 0.0;
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
   take_edge_forces(body, s, x, scratch);
+  search.size_contact_lags(s, n);
+  search.contacts_lagged = true;
   scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
   for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
     Eigen::VectorXd& part = scratch.projection_sums[c];
@@ -375,11 +378,10 @@ double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace&
       const double m = s.mass_kg[i];
       Vec3 gradient = (m * s.inverse_h2) * (x[i] - s.target[i]);
       Block3 unused;
-      if (s.floor && x[i].y() < s.floor->height_m) {
-        add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, unused);
-      }
-      for (const SmoothCollider& collider : s.colliders) {
-        add_collider_terms(collider, m, x[i], s.base[i], s.h_hat, gradient, unused);
+      if (s.floor) search.floor_lags[i] = add_floor_terms(*s.floor, m, x[i], s.base[i], s.h_hat, gradient, unused);
+      for (std::size_t k = 0; k < s.colliders.size(); ++k) {
+        search.collider_lags[k * n + i] =
+            add_collider_terms(s.colliders[k], m, x[i], s.base[i], s.h_hat, gradient, unused);
       }
       if (s.contacts) s.contacts->add_terms(s.first_vertex + static_cast<int>(i), gradient, unused);
       for (int entry = blocks.constraint_start[i]; entry < blocks.constraint_start[i + 1]; ++entry) {

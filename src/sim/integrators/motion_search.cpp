@@ -12,8 +12,7 @@ namespace {
 // The floor's and the smooth colliders' lags of every vertex at x, as the vertex's own terms take them.
 void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
   const std::size_t n = x.size();
-  if (s.floor) scratch.floor_lags.resize(n);
-  scratch.collider_lags.resize(s.colliders.size() * n);
+  scratch.size_contact_lags(s, n);
   if (!s.floor && s.colliders.empty()) return;
   chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
     Vec3 unused_gradient = Vec3::Zero();
@@ -133,7 +132,7 @@ void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, s
 }
 
 void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
-  take_contact_lags(s, x, scratch);
+  if (!scratch.contacts_lagged) take_contact_lags(s, x, scratch);
   if (!scratch.edges_lagged) take_edge_lags(body, s, x, scratch);
 }
 

@@ -28,10 +28,17 @@ struct MotionScratch {
     edge_inverse_length.resize(constraints);
     edge_rate_m.resize(constraints);
   }
-  double volume_after = 0.0;                     // V where the search left x [m³]
-  std::vector<Vec3> trial;                       // x + α motion, for the gas's volume [m]
-  std::vector<FloorLag> floor_lags;              // per vertex, taken at x for the whole line search
-  std::vector<ColliderLag> collider_lags;        // per smooth collider, per vertex: collider c's at [c n + i]
+  double volume_after = 0.0;               // V where the search left x [m³]
+  std::vector<Vec3> trial;                 // x + α motion, for the gas's volume [m]
+  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
+  std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
+  // Whether the caller filled floor_lags and collider_lags at x (the corrections' gradient passes evaluate the floor
+  // and the colliders at every vertex anyway), sized by size_contact_lags; else the search takes them.
+  bool contacts_lagged = false;
+  void size_contact_lags(const BodySolve& s, std::size_t vertices) {
+    if (s.floor) floor_lags.resize(vertices);
+    collider_lags.resize(s.colliders.size() * vertices);
+  }
   std::vector<double> energy_sums, volume_sums;  // partial sums per chunk (sim/step/chunked_sum.hpp)
 };
 
@@ -48,8 +55,8 @@ void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, s
                    MotionScratch& scratch);
 
 // The search's parts, for a search over several bodies at once (joint_affine_correction.hpp): the floor's and the
-// colliders' lags of every vertex at x (and the constraints' unless edges_lagged), and E's change along
-// α scratch.motion with them.
+// colliders' lags of every vertex at x unless contacts_lagged (and the constraints' unless edges_lagged), and E's
+// change along α scratch.motion with them.
 void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch);
 double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
                             MotionScratch& scratch);
