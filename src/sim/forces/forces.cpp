@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/step/chunked_sum.hpp"
-
 namespace sim {
 
 void start_with_gravity(std::span<const double> mass_kg, const Vec3& g, std::span<Vec3> force) {
@@ -93,14 +91,6 @@ double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, c
 
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x) {
   return six_volume_of(faces, x, x[0], 0, faces.size()) / 6.0;
-}
-
-double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
-                       std::vector<double>& partials) {
-  const double six_volume = chunked_sum(
-      runner, faces.size(), 0.0, partials,
-      [&](std::size_t first, std::size_t last, double& part) { part = six_volume_of(faces, x, x[0], first, last); });
-  return six_volume / 6.0;
 }
 
 void volume_gradient(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& gradient) {

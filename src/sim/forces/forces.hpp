@@ -10,7 +10,6 @@
 
 #include "core/vec.hpp"
 #include "sim/model/body.hpp"
-#include "sim/step/part_runner.hpp"
 
 namespace sim {
 
@@ -32,17 +31,14 @@ void add_spring_dampers(const DistanceConstraints& constraints, std::span<const 
                         std::span<Vec3> force);
 
 // six_volume + Σ x_a·(x_b × x_c) over faces [first, last), positions relative to `origin`, each face's term added in
-// face order [m³]: the face loop of enclosed_volume (and of its lanes, sim/integrators/correction_lanes.hpp).
+// face order [m³]: the face loop of enclosed_volume (and of its chunked form on threads and lanes,
+// sim/integrators/correction_lanes.hpp's enclosed_volume_in_lanes).
 double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, const Vec3& origin, std::size_t first,
                      std::size_t last, double six_volume = 0.0);
 
 // Signed enclosed volume V = Σ_f x_a·(x_b × x_c) / 6 (divergence theorem) [m³]. Positions are taken
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);
-// The same sum in chunks of faces on runner's threads (none: in turn), added in chunk order: the same bits on any
-// number of threads, not the same bits as the one-pass sum. `partials`: scratch.
-double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
-                       std::vector<double>& partials);
 
 // ∂V/∂x_i = Σ_{f ∋ i} A_f n̂_f / 3 for every vertex [m²] (sized here): the reference form that intent and the
 // stability estimate use. The gas's face pass below computes the same gradient fused with the volume, as

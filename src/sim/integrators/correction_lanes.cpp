@@ -115,18 +115,14 @@ SOFTBODY_LANES_TARGET std::size_t six_volume_avx2(std::span<const Triangle> face
 
 }  // namespace
 
-double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
-                                std::vector<double>& partials) {
-  if (!lanes_on()) return enclosed_volume(faces, x, runner, partials);
-  const Vec3& origin = x[0];
-  const double six_volume =
-      chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
-        double sum = 0.0;
-        const std::size_t tail = six_volume_avx2(faces, x, origin, first, last, sum);
-        part = six_volume_of(faces, x, origin, tail, last, sum);
-      });
-  return six_volume / 6.0;
+namespace {
+// The faces' terms from `first` in lanes where they run, added to six_volume; returns where it stopped.
+std::size_t six_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, const Vec3& origin,
+                                std::size_t first, std::size_t last, double& six_volume) {
+  if (!lanes_on()) return first;
+  return six_volume_avx2(faces, x, origin, first, last, six_volume);
 }
+}  // namespace
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x,
                                  std::size_t first, std::size_t last, MotionScratch& scratch, std::span<Vec3> force) {
@@ -143,10 +139,12 @@ std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints,
 
 #else
 
-double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
-                                std::vector<double>& partials) {
-  return enclosed_volume(faces, x, runner, partials);
+namespace {
+std::size_t six_volume_in_lanes(std::span<const Triangle>, std::span<const Vec3>, const Vec3&, std::size_t first,
+                                std::size_t, double&) {
+  return first;
 }
+}  // namespace
 
 std::size_t edge_forces_in_lanes(const DistanceConstraints&, const BodySolve&, std::span<const Vec3>, std::size_t first,
                                  std::size_t, MotionScratch&, std::span<Vec3>) {
@@ -159,5 +157,17 @@ std::size_t edge_energy_changes_in_lanes(const DistanceConstraints&, const BodyS
 }
 
 #endif
+
+double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
+                                std::vector<double>& partials) {
+  const Vec3& origin = x[0];
+  const double six_volume =
+      chunked_sum(runner, faces.size(), 0.0, partials, [&](std::size_t first, std::size_t last, double& part) {
+        double sum = 0.0;
+        const std::size_t tail = six_volume_in_lanes(faces, x, origin, first, last, sum);
+        part = six_volume_of(faces, x, origin, tail, last, sum);
+      });
+  return six_volume / 6.0;
+}
 
 }  // namespace sim

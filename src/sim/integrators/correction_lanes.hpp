@@ -11,6 +11,7 @@
 #include "sim/integrators/motion_search.hpp"
 #include "sim/integrators/vertex_energy.hpp"
 #include "sim/model/body.hpp"
+#include "sim/step/part_runner.hpp"
 
 namespace sim {
 
@@ -27,8 +28,10 @@ std::size_t edge_energy_changes_in_lanes(const DistanceConstraints& constraints,
                                          std::span<const Vec3> x, double alpha, const MotionScratch& scratch,
                                          std::size_t first, std::size_t last, double& change);
 
-// V(x) of `faces` as enclosed_volume(faces, x, runner, partials) gives it (forces.hpp: the same chunks, each chunk's
-// faces summed in order), the faces' terms x_a·(x_b × x_c) (about x[0]) four at a time where the lanes run [m³].
+// V(x) of `faces` as enclosed_volume's sum (forces.hpp: the faces' terms (x_a − x_0)·((x_b − x_0) × (x_c − x_0)) / 6)
+// in chunks of faces on runner's threads (none: in turn), each chunk's terms added in face order and the chunks in
+// chunk order: the same bits on any number of threads and with the lanes on or off (where they run, four faces' terms
+// at a time), not the same bits as the one-pass sum. `partials`: scratch [m³].
 double enclosed_volume_in_lanes(std::span<const Triangle> faces, std::span<const Vec3> x, PartRunner* runner,
                                 std::vector<double>& partials);
 
