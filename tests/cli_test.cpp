@@ -109,8 +109,8 @@ TEST(Cli, InfoExpectsACostPerSimulatedSecondForEachIntegrator) {
 }
 
 // vbd's line: on the smooth floor one step per 1/30 s frame in flight, priced as steps x sweeps x vertices x 155 ns
-// (30 x 4 x 642 x 155 ns = 0.0119 s), and the impacts' steps of at most solver.impact_phase / ω = 0.5 × 2 ms = 1 ms
-// named.
+// (30 x 4 x 642 x 155 ns = 0.0119 s), and the impacts' steps, the frame halved until ω h ≤ solver.impact_phase
+// (0.5 / (1/2 ms) = 1 ms: 1/30 s / 64 = 0.52 ms), priced per 0.1 s of impact (192 x 4 x 642 x 155 ns = 0.0764 s).
 TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   const auto result = run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd");
   ASSERT_EQ(result.exit_status, 0) << result.output;
@@ -120,7 +120,22 @@ TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   EXPECT_NE(text.find("no limit"), std::string::npos) << text;
   EXPECT_NE(text.find("1 steps"), std::string::npos) << text;
   EXPECT_NE(text.find("about 0.0119 s in flight"), std::string::npos) << text;
-  EXPECT_NE(text.find("impacts add steps of at most 1 ms"), std::string::npos) << text;
+  EXPECT_NE(text.find("impacts take steps of 0.52 ms while they last, about 0.0764 s per 0.1 s of impact"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(result.output.find("damp body"), std::string::npos) << "the bounce's dampers take its breathing out";
+}
+
+// scenes/breathing.json's dampers (c = 0.01) leave its breathing ringing for seconds (ζ = 0.0015 at 148 rad/s), which
+// BDF2 at one step per frame (ω h = 4.9) damps at a ratio of 0.15: info prints the mode and says so.
+TEST(Cli, InfoWarnsWhereVbdsStepsDampABreathingTheModelKeeps) {
+  const auto result = run_softbody("info scenes/breathing.json --set solver.integrator=vbd");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("breathing mode (the whole body swelling) 148 rad/s"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("vbd's steps of 0.0333 s damp body 0's breathing at a ratio of 0.15"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("take rk4 or rk45"), std::string::npos) << result.output;
 }
 
 TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {

@@ -290,14 +290,16 @@ bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State
   return true;
 }
 
+int vbd_impact_level(double dt, double omega, double impact_phase) {
+  const double pieces = dt * omega / impact_phase;
+  return std::min(static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0)))), kDeepestLevel);
+}
+
 int VertexBlockDescent::next_level(const Model& model, const State& state, double dt, int level, long long done) const {
   const IntegratorCarry& carry = state.carry;
   const double h = std::ldexp(dt, -level);
-  if (const double omega = impact_omega(model, state, h);
-      omega > 0.0) {  // the shallowest level with ω h ≤ the impact phase
-    const double pieces = dt * omega / impact_phase_;
-    const int impact_level = static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0))));
-    return std::clamp(impact_level, level, kDeepestLevel);
+  if (const double omega = impact_omega(model, state, h); omega > 0.0) {
+    return std::max(vbd_impact_level(dt, omega, impact_phase_), level);
   }
   // Double where the two steps before were both h (a BDF2 step of 2h from two steps back) and 2h ends on its grid.
   const long long double_ticks = 2LL << (kDeepestLevel - level);

@@ -51,6 +51,10 @@ namespace sim {
 // (joint_affine_correction.hpp). The paper's and the friction floor and the impulse contact between bodies stay
 // projections after the step (sim::step). What is carried from step to step is State::carry's BDF2 history (x_{n−1},
 // v_{n−1} and that step's h), so a copy of the State is a checkpoint. No allocation per step once sizes settle.
+// The level of vbd's steps (dt / 2^level) through an impact on a smooth contact of ω [1/s] within a driver's step dt:
+// the shallowest with ω h ≤ `impact_phase` (solver.impact_phase), at most its deepest level.
+int vbd_impact_level(double dt, double omega, double impact_phase);
+
 class VertexBlockDescent final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
