@@ -157,12 +157,10 @@ void print_vbd_coarse_level(const sim::Model& model) {
 // the floor for 0.175 s in its first impact [s].
 constexpr double kImpactSpan = 0.1;
 
-// vbd's line: the steps per frame `substeps: auto` picks and what they cost in flight; around impacts on a smooth
-// contact vbd takes smaller steps of its own, priced per kImpactSpan of impact (how long the impacts last depends on
-// the motion).
 // Below this damping ratio a body's breathing rings for several periods in the model, so a step that damps it far
-// faster changes the answer (on scenes/breathing.json, ζ = 0.001, vbd at one step per frame is 3.7 % off in volume
-// and rk4 0.04 %; on scenes/bounce_smooth.json, ζ = 0.07, the dampers take it out within about 0.1 s anyway).
+// faster changes the answer (scenes/breathing.json, ζ = 0.0015: vbd at one step per frame is 3.8 % off in volume and
+// rk4 0.17 %; scenes/bounce_smooth.json, ζ = 0.10: the dampers take it out within about 0.1 s themselves;
+// docs/notes/2026-12-06-vbd-breathing.md).
 constexpr double kLightlyDamped = 0.05;
 // Where BDF2's own damping ratio is at least this many times the model's, `info` says so.
 constexpr double kDampedTooFast = 10.0;
@@ -189,6 +187,9 @@ void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, doubl
   }
 }
 
+// vbd's line: the steps per frame `substeps: auto` picks and what they cost in flight; around impacts on a smooth
+// contact vbd takes smaller steps of its own, priced per kImpactSpan of impact (how long the impacts last depends on
+// the motion). Then its coarse level, and the breathing modes its steps would damp out.
 void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
                std::size_t vertices, const std::vector<sim::BreathingMode>& breathing) {
   const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);

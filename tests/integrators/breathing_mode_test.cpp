@@ -83,7 +83,8 @@ TEST(BreathingMode, IsThePeriodAtWhichTheModelsVolumeSwings) {
   EXPECT_NEAR(s.half_height.back() / s.half_height.front(), 1.0, 0.05) << "the model does not damp it";
 }
 
-// With dampers (the bounce's ball: c = 1 N s/m, nRT 200 J; ζ ≈ 0.1) each swing is e^(−2π ζ/√(1 − ζ²)) of the one before.
+// With dampers (the bounce's ball: c = 1 N s/m, nRT 200 J; ζ ≈ 0.1) each swing is e^(−2π ζ/√(1 − ζ²)) of the one
+// before.
 TEST(BreathingMode, DampingRatioIsTheSwingsDecay) {
   constexpr const char* kDampedBall = R"({
     "gravity": [0, 0, 0],

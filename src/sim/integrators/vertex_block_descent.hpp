@@ -18,6 +18,10 @@
 
 namespace sim {
 
+// The level of vbd's steps (dt / 2^level) through an impact on a smooth contact of ω [1/s] within a driver's step dt:
+// the shallowest with ω h ≤ `impact_phase` (solver.impact_phase), at most its deepest level.
+int vbd_impact_level(double dt, double omega, double impact_phase);
+
 // Each step of h is one implicit step of the model's ODE (Chen, Liu, Yang & Yuksel, "Vertex Block Descent",
 // SIGGRAPH 2024, for the solve; Ascher & Petzold, "Computer Methods for ODEs and DAEs", Sect. 5.1, for BDF2):
 //   BDF2      x' − x̃ = ĥ v',  v' − ṽ = ĥ f(x', v')/m,  ĥ = 2h/3, x̃ = (4x_n − x_{n−1})/3, ṽ = (4v_n − v_{n−1})/3
@@ -51,10 +55,6 @@ namespace sim {
 // (joint_affine_correction.hpp). The paper's and the friction floor and the impulse contact between bodies stay
 // projections after the step (sim::step). What is carried from step to step is State::carry's BDF2 history (x_{n−1},
 // v_{n−1} and that step's h), so a copy of the State is a checkpoint. No allocation per step once sizes settle.
-// The level of vbd's steps (dt / 2^level) through an impact on a smooth contact of ω [1/s] within a driver's step dt:
-// the shallowest with ω h ≤ `impact_phase` (solver.impact_phase), at most its deepest level.
-int vbd_impact_level(double dt, double omega, double impact_phase);
-
 class VertexBlockDescent final : public Integrator {
  public:
   // Counts over every step this object took, for benchmarks and tests.
