@@ -17,4 +17,4 @@ for p in sys.argv[2].split(','):
         q = ref[k]
         vol = max(vol, abs(float(r['volume']) - float(q['volume'])) / float(q['volume']))
         com = max(com, math.dist([float(r[c]) for c in ('com_x','com_y','com_z')], [float(q[c]) for c in ('com_x','com_y','com_z')]))
-    print(f"{p}: vol {vol*100:.3f} %  com {com*100:.3f} cm")
+    print(f"{p}: vol {vol*100:.3g} %  com {com*100:.3g} cm")

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The peers' work-precision curves: CPU s of one thread per simulated s against the worst volume error and the
 # worst centre-of-mass distance from softbody's rk45 reference (tolerance 1e-9), for Jolt Physics over its dt and
-# iterations and softbody's xpbd and vbd over their substeps and sweeps, on two scenes:
+# iterations and softbody's xpbd and vbd over their substeps and sweeps, its explicit methods at their "auto" steps
+# and rk45 over its tolerance, on two scenes:
 #   breathing (bench/peers/breathing.json): no gravity, no floor, no dampers; the whole 1 s;
 #   bounce    (bench/peers/bounce.json):    the first impact on the floor, 0-1.2 s (the contact models differ).
 # Usage: JOLT_PREFIX=/path/to/installed/jolt bench/run_peers.sh [LEVELS]      (default "3 5"; after scripts/build)
@@ -13,8 +14,9 @@
 # Writes out/peers/LEVEL/*.csv (every run's frames), out/peers/peers_LEVEL.csv (one row per run) and plots them with
 # bench/peers/peers.gp. Without JOLT_PREFIX only softbody's curves are measured.
 # Times: Jolt's are the thread CPU time of its PhysicsSystem::Update calls (the harness's own timing, single-threaded
-# job system); softbody's are the whole process's user CPU time (/usr/bin/time -f %U) with solver.threads 1, which
-# includes reading the scene and building the body (a few ms at level 3). One run each.
+# job system); softbody's are the wall time of its steps with solver.threads 1 (`--profile`'s step phase: the
+# integrator, the contacts and the guard, without reading the scene, building the body or writing the CSV, as Jolt's
+# time leaves out its setup; vbd's colouring and coarse level, built in its first step, are inside it). One run each.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 levels="${1:-3 5}"
@@ -37,7 +39,7 @@ for level in $levels; do
   # Rows of the programs not run now are kept (PROGRAMS="bullet" adds Bullet's to an earlier run's table).
   header="scene,level,program,family,dt_s,substeps,iterations,cpu_per_sim_s,volume_error_pct,com_error_cm,volume_max"
   kept=$( [ -f $table ] && tail -n +2 $table | awk -F, -v run=" $programs " \
-    '{ p = ($3 == "xpbd" || $3 == "vbd") ? "softbody" : $3; if (index(run, " " p " ") == 0) print }' || true)
+    '{ p = ($3 ~ /^(xpbd|vbd|symplectic|verlet|rk4|rk45)$/) ? "softbody" : $3; if (index(run, " " p " ") == 0) print }' || true)
   { echo "$header"; [ -z "$kept" ] || echo "$kept"; } > $table
   for scene in breathing bounce; do
     file=${scene_file[$scene]}
@@ -57,8 +59,10 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
     softbody() { # program family dt substeps iterations name --set...
       local p=$1 fam=$2 dt=$3 sub=$4 it=$5 name=$6; shift 6
       local csv=$out/${scene}_$name.csv t
-      t=$( { /usr/bin/time -f "%U" $SB simulate $file "${mesh[@]}" --csv $csv "$@" > /dev/null || true; } 2>&1 | tail -1)
-      row $p $fam $dt $sub $it "$(python3 -c "print(round($t/$dur,5))")" $csv
+      t=$( { $SB simulate $file "${mesh[@]}" --csv $csv --profile "$@" 2>&1 > /dev/null || true; } |
+        awk '$1 == "step" { print $2 }')
+      [ -n "$t" ] || t=inf
+      row "$p" "$fam" "$dt" "$sub" "$it" "$(python3 -c "print(round(float('$t')/$dur,5))")" $csv
     }
     if want bullet; then
       [ -x build/bench_peers_bullet ] || cmake --build build --target bench_peers_bullet
@@ -78,6 +82,15 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
       softbody vbd vbd_it$it "1/$((30 * s))" $s $it vbd_${s}_$it --set solver.integrator=vbd --set solver.substeps=$s \
         --set solver.iterations=$it
     done; done
+    # The explicit methods at their "auto" step (0.7 x the stable estimate), and rk45 over its tolerance.
+    for integrator in symplectic verlet rk4; do
+      softbody $integrator ${integrator}_auto auto - - ${integrator}_auto --set solver.integrator=$integrator \
+        --set 'solver.dt="auto"'
+    done
+    for tolerance in 1e-3 1e-4 1e-5 1e-6; do
+      softbody rk45 rk45_tolerance "tolerance $tolerance" - - rk45_$tolerance --set solver.integrator=rk45 \
+        --set solver.tolerance=$tolerance
+    done
     fi
     [ -n "$jolt" ] && want jolt || continue
     for it in ${JOLT_ITERATIONS:-1 2 5 10 20 40}; do for rate in 60 120 240 480 960 1920; do

@@ -21,7 +21,13 @@ def setting(r):
         return f"Jolt dt {r['dt_s']} s, {r['iterations']} it."
     if r['program'] == 'xpbd':
         return f"xpbd substeps {r['substeps']}"
-    return f"vbd substeps {r['substeps']}, {r['iterations']} sweeps"
+    if r['program'] == 'vbd':
+        return f"vbd substeps {r['substeps']}, {r['iterations']} sweeps"
+    if r['program'] == 'bullet':
+        return f"Bullet dt {r['dt_s']} s, {r['iterations']} position it."
+    if r['program'] == 'rk45':
+        return f"rk45 {r['dt_s']}"
+    return f"{r['program']} dt auto"
 
 def line(label, r):
     if r is None:
@@ -38,7 +44,7 @@ for path in sys.argv[1:]:
         jolt = [r for r in s if r['program'] == 'jolt']
         cheapest = min(jolt, key=lambda r: r['cpu'], default=None)
         print(line("Jolt's cheapest", cheapest))
-        for program in ('jolt', 'xpbd', 'vbd'):
+        for program in ('jolt', 'xpbd', 'vbd', 'symplectic', 'verlet', 'rk4', 'rk45'):
             p = [r for r in s if r['program'] == program]
             for limit in (10.0, 1.0):
                 ok = [r for r in p if r['vol'] <= limit]
