@@ -82,6 +82,11 @@ print(round(max(v)/v[0],5) if len(v) >= round(float(sys.argv[2])*30)+1 and all(m
       softbody vbd vbd_it$it "1/$((30 * s))" $s $it vbd_${s}_$it --set solver.integrator=vbd --set solver.substeps=$s \
         --set solver.iterations=$it
     done; done
+    # vbd with the affine correction alone (no coarse level: a flight's breathing is affine) and 1 or 2 sweeps.
+    for it in 1 2; do
+      softbody vbd vbd_affine 1/30 1 $it vbd_affine_1_$it --set solver.integrator=vbd --set solver.substeps=1 \
+        --set solver.iterations=$it --set solver.coarse_space=0
+    done
     # The explicit methods at their "auto" step (0.7 x the stable estimate), and rk45 over its tolerance.
     for integrator in symplectic verlet rk4; do
       softbody $integrator ${integrator}_auto auto - - ${integrator}_auto --set solver.integrator=$integrator \

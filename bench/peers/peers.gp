@@ -2,7 +2,7 @@
 # that holds peers_LEVEL.csv (bench/run_peers.sh); writes peers_LEVEL.png there. One panel per scene: CPU s of one
 # thread per simulated s against the worst volume error from softbody's rk45 reference, one curve per program and
 # setting family (Jolt: one curve per iteration count over dt 1/60 .. 1/1920 s; softbody: xpbd over its substeps,
-# vbd per sweep count over its substeps, symplectic, verlet and rk4 at their "auto" steps, rk45 over its tolerance;
+# vbd per sweep count over its substeps and without its coarse level, symplectic, verlet and rk4 at their "auto" steps, rk45 over its tolerance;
 # Bullet per position-iteration count over dt, on the bounce only). Failed runs (error inf) are left out. Also writes peers_breathing_volume_LEVEL.png: the breathing's volume history, where
 # Bullet (its own links, not our springs) is shown.
 if (!exists("level")) level = 3
@@ -16,16 +16,16 @@ set format y "10^{%L}"
 set grid
 set xlabel "worst volume error against the reference [%]"
 set ylabel "CPU s per simulated s (one thread)"
-families = "jolt_it1 jolt_it2 jolt_it5 jolt_it10 jolt_it20 jolt_it40 xpbd_fixed xpbd_auto vbd_it4 vbd_it8 bullet_it1 bullet_it4 bullet_it16 symplectic_auto verlet_auto rk4_auto rk45_tolerance"
-titles = "'Jolt, 1 iteration' 'Jolt, 2 iterations' 'Jolt, 5 iterations' 'Jolt, 10 iterations' 'Jolt, 20 iterations' 'Jolt, 40 iterations' 'softbody xpbd, substeps 2..64' 'softbody xpbd, auto' 'softbody vbd, 4 sweeps, substeps 1,2,4' 'softbody vbd, 8 sweeps, substeps 1,2,4' 'Bullet, 1 position iteration' 'Bullet, 4 position iterations' 'Bullet, 16 position iterations' 'softbody symplectic, dt auto' 'softbody verlet, dt auto' 'softbody rk4, dt auto' 'softbody rk45, tolerance 1e-3..1e-6'"
+families = "jolt_it1 jolt_it2 jolt_it5 jolt_it10 jolt_it20 jolt_it40 xpbd_fixed xpbd_auto vbd_it4 vbd_it8 bullet_it1 bullet_it4 bullet_it16 symplectic_auto verlet_auto rk4_auto rk45_tolerance vbd_affine"
+titles = "'Jolt, 1 iteration' 'Jolt, 2 iterations' 'Jolt, 5 iterations' 'Jolt, 10 iterations' 'Jolt, 20 iterations' 'Jolt, 40 iterations' 'softbody xpbd, substeps 2..64' 'softbody xpbd, auto' 'softbody vbd, 4 sweeps, substeps 1,2,4' 'softbody vbd, 8 sweeps, substeps 1,2,4' 'Bullet, 1 position iteration' 'Bullet, 4 position iterations' 'Bullet, 16 position iterations' 'softbody symplectic, dt auto' 'softbody verlet, dt auto' 'softbody rk4, dt auto' 'softbody rk45, tolerance 1e-3..1e-6' 'softbody vbd, no coarse level, 1 and 2 sweeps'"
 # Jolt in blues (darker: more iterations), softbody in red and black (xpbd), greens (vbd) and purples (the explicit
 # methods and rk45), Bullet in oranges
-colours = "#9ecae1 #6baed6 #4292c6 #2171b5 #08519c #08306b #e31a1c #000000 #74c476 #238b45 #fdae6b #f16913 #a63603 #bcbddc #9e9ac8 #6a51a3 #3f007d"
+colours = "#9ecae1 #6baed6 #4292c6 #2171b5 #08519c #08306b #e31a1c #000000 #74c476 #238b45 #fdae6b #f16913 #a63603 #bcbddc #9e9ac8 #6a51a3 #3f007d #00441b"
 rows(scene, family) = sprintf("< awk -F, '$1==\"%s\" && $4==\"%s\" && $9!=\"inf\"' %s", scene, family, data)
 set multiplot layout 1,2 margins 0.06,0.78,0.11,0.9 spacing 0.07 title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)", level)
 set title "breathing in flight, 1 s (no gravity, no floor, no dampers)"
 unset key
-plot for [i in "1 2 3 4 5 6 7 8 9 10 14 15 16 17"] rows("breathing", word(families, i+0)) using 9:8 with linespoints lw 2 lc rgb word(colours, i+0) pt (i+0 < 7 ? 7 : (i+0 < 11 ? 5 : (i+0 < 14 ? 9 : 13))) ps 1 title word(titles, i+0)
+plot for [i in "1 2 3 4 5 6 7 8 9 10 14 15 16 17 18"] rows("breathing", word(families, i+0)) using 9:8 with linespoints lw 2 lc rgb word(colours, i+0) pt (i+0 < 7 ? 7 : (i+0 < 11 ? 5 : (i+0 < 14 ? 9 : 13))) ps 1 title word(titles, i+0)
 set title "bounce, first impact 0-1.2 s"
 set key at screen 0.995,0.88 right top
 plot for [i=1:words(families)] rows("bounce", word(families, i)) using 9:8 with linespoints lw 2 lc rgb word(colours, i) pt (i < 7 ? 7 : (i < 11 ? 5 : (i < 14 ? 9 : 13))) ps 1 title word(titles, i)

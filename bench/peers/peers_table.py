@@ -22,7 +22,8 @@ def setting(r):
     if r['program'] == 'xpbd':
         return f"xpbd substeps {r['substeps']}"
     if r['program'] == 'vbd':
-        return f"vbd substeps {r['substeps']}, {r['iterations']} sweeps"
+        alone = ", no coarse level" if r['family'] == 'vbd_affine' else ""
+        return f"vbd substeps {r['substeps']}, {r['iterations']} sweeps{alone}"
     if r['program'] == 'bullet':
         return f"Bullet dt {r['dt_s']} s, {r['iterations']} position it."
     if r['program'] == 'rk45':
