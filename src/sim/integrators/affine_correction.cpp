@@ -148,7 +148,7 @@ Vec3 centre_of_mass(const BodySolve& s, std::span<const Vec3> x, AffineScratch& 
 }
 
 // Vertices [first, last): inertia, floor, colliders and contacts with bodies; the floor's and colliders' lags at x
-// for the line search (MotionScratch::contacts_lagged).
+// for the line search (MotionScratch).
 void add_vertex_terms(const BodySolve& s, std::span<const Vec3> x, const Vec3& centre, bool assemble, std::size_t first,
                       std::size_t last, MotionScratch& search, CoarseSums& sums) {
   const std::size_t n = x.size();
@@ -178,7 +178,7 @@ void add_vertex_terms(const BodySolve& s, std::span<const Vec3> x, const Vec3& c
 }
 
 // Constraints [first, last): (B_i − B_j) = [I ⊗ dᵀ | 0], so each adds K_e ⊗ d dᵀ and f_e ⊗ d to the A part. Each
-// edge's length, inverse and rate are kept for the line search (MotionScratch::edges_lagged).
+// edge's length, inverse and rate are kept for the line search (MotionScratch).
 void add_constraint_terms(const Body& body, const BodySolve& s, std::span<const Vec3> x, bool assemble,
                           std::size_t first, std::size_t last, MotionScratch& search, CoarseSums& sums) {
   const DistanceConstraints& constraints = body.constraints;
@@ -246,8 +246,6 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
     }
   }
   search.volume_after = volume;
-  search.edges_lagged = true;
-  search.contacts_lagged = true;
   return AffineSystem{K, G, centre, volume};
 }
 

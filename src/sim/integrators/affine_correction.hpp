@@ -51,7 +51,7 @@ struct AffineSystem {
   double volume = 0.0;
 };
 // With `assemble` false the matrix is left zero (the gradient only). Either way the constraints' lags for the line
-// search are left in scratch.search (edges_lagged), and so are the floor's and colliders' (contacts_lagged).
+// search are left in scratch.search, and so are the floor's and colliders'.
 AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
                            bool assemble = true);
 // B q: the motion A (x_i − c) + t of every vertex into search.motion, and A into search.linear_part.

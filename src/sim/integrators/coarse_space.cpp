@@ -328,7 +328,6 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
   MotionScratch& search = scratch.search;
   scratch.edge_force.resize(constraints.size());
   search.size_edge_lags(constraints.size());
-  search.edges_lagged = true;
   const double inverse_h = 1.0 / s.h_hat;
   chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
     for (std::size_t e = edge_forces_in_lanes(constraints, s, x, first, last, search, scratch.edge_force); e < last;
@@ -352,7 +351,7 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
 
 // ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces) projected as −Pᵀ ∇E into
 // scratch.projection_sums, one partial sum per chunk on s.runner's threads, and the floor's and colliders' lags at x
-// for the line search (MotionScratch::contacts_lagged). Returns V(x) (0 without gas).
+// for the line search (MotionScratch). Returns V(x) (0 without gas).
 double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
                         CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
@@ -363,7 +362,6 @@ double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace&
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
   take_edge_forces(body, s, x, scratch);
   search.size_contact_lags(s, n);
-  search.contacts_lagged = true;
   scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
   for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
     Eigen::VectorXd& part = scratch.projection_sums[c];

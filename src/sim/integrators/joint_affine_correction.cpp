@@ -107,7 +107,7 @@ bool joint_affine_correction(const Model& model, std::span<const BodySolve> solv
   step = scratch.factor.solve(scratch.rhs);
   const double slope = G.dot(step);
   if (!(slope < 0.0)) return false;
-  // The motion of every vertex, and each body's lags for the search.
+  // The motion of every vertex (each body's lags for the search are its affine_system's, taken at x).
   scratch.motion.resize(x.size());
   for (std::size_t b = 0; b < count; ++b) {
     const Body& body = model.bodies[b];
@@ -115,7 +115,6 @@ bool joint_affine_correction(const Model& model, std::span<const BodySolve> solv
     MotionScratch& search = scratch.bodies[b].search;
     affine_motion(q, Model::of(body, x), scratch.systems[b].centre, search);
     std::copy(search.motion.begin(), search.motion.end(), scratch.motion.begin() + body.first_vertex);
-    take_motion_lags(body, solves[b], Model::of(body, x), search);
   }
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
     double change = contacts.motion_energy_change(0, scratch.motion, alpha);

@@ -9,36 +9,6 @@
 namespace sim {
 namespace {
 
-// The floor's and the smooth colliders' lags of every vertex at x, as the vertex's own terms take them.
-void take_contact_lags(const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
-  const std::size_t n = x.size();
-  scratch.size_contact_lags(s, n);
-  if (!s.floor && s.colliders.empty()) return;
-  chunked_for(s.runner, n, [&](std::size_t first, std::size_t last) {
-    Vec3 unused_gradient = Vec3::Zero();
-    Block3 unused_hessian;
-    for (std::size_t i = first; i < last; ++i) {
-      if (s.floor) {
-        scratch.floor_lags[i] =
-            add_floor_terms(*s.floor, s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
-      }
-      for (std::size_t c = 0; c < s.colliders.size(); ++c) {
-        scratch.collider_lags[c * n + i] =
-            add_collider_terms(s.colliders[c], s.mass_kg[i], x[i], s.base[i], s.h_hat, unused_gradient, unused_hessian);
-      }
-    }
-  });
-}
-
-// Each constraint's length, its inverse and its ĥ × approach speed at x.
-void take_edge_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
-  const DistanceConstraints& constraints = body.constraints;
-  scratch.size_edge_lags(constraints.size());
-  chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
-    for (std::size_t e = first; e < last; ++e) take_edge_lag(constraints, s, x, e, scratch);
-  });
-}
-
 // det(I + M) − 1 without the cancellation of forming det(I + M) where M is small: tr M + ½(tr² M − tr M²) + det M.
 double determinant_change(const Eigen::Matrix3d& M) {
   const double trace = M.trace();
@@ -131,11 +101,6 @@ void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, s
   scratch.edge_rate_m[e] = ((x[vi] - s.base[vi]) - (x[vj] - s.base[vj])).dot(inverse_length * d);
 }
 
-void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch) {
-  if (!scratch.contacts_lagged) take_contact_lags(s, x, scratch);
-  if (!scratch.edges_lagged) take_edge_lags(body, s, x, scratch);
-}
-
 double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
                             MotionScratch& scratch) {
   const double volume_step = s.gas ? volume_change(body, s, x, volume, alpha, scratch) : 0.0;
@@ -144,7 +109,6 @@ double motion_energy_change(const Body& body, const BodySolve& s, std::span<cons
 
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch) {
-  take_motion_lags(body, s, x, scratch);  // once: they do not depend on α
   scratch.volume_after = volume;
   for (double alpha = 1.0; alpha > 1e-3; alpha *= 0.5) {
     const double volume_step = s.gas ? volume_change(body, s, x, volume, alpha, scratch) : 0.0;

@@ -19,10 +19,10 @@ struct MotionScratch {
   // Where the motion is affine, δx = A (x − c) + t, its A, set by the caller: then V(x + α motion) = det(I + αA) V(x)
   // (a closed surface), so the search needs no volume pass. Otherwise unset.
   std::optional<Eigen::Matrix3d> linear_part;
-  // Per constraint at x: l [m], 1/l [1/m] and ĥ × its approach speed [m]; filled by the caller where edges_lagged is
-  // set (the affine correction's gradient pass computes them anyway), else by the search.
+  // The lags, taken at x by the caller in the pass over the constraints and the vertices that its gradient makes
+  // anyway (take_edge_lag; add_floor_terms and add_collider_terms return theirs), once for the whole search.
+  // Per constraint: l [m], 1/l [1/m] and ĥ × its approach speed [m].
   std::vector<double> edge_length_m, edge_inverse_length, edge_rate_m;
-  bool edges_lagged = false;
   void size_edge_lags(std::size_t constraints) {
     edge_length_m.resize(constraints);
     edge_inverse_length.resize(constraints);
@@ -30,11 +30,8 @@ struct MotionScratch {
   }
   double volume_after = 0.0;               // V where the search left x [m³]
   std::vector<Vec3> trial;                 // x + α motion, for the gas's volume [m]
-  std::vector<FloorLag> floor_lags;        // per vertex, taken at x for the whole line search
+  std::vector<FloorLag> floor_lags;        // per vertex, with a floor
   std::vector<ColliderLag> collider_lags;  // per smooth collider, per vertex: collider c's at [c n + i]
-  // Whether the caller filled floor_lags and collider_lags at x (the corrections' gradient passes evaluate the floor
-  // and the colliders at every vertex anyway), sized by size_contact_lags; else the search takes them.
-  bool contacts_lagged = false;
   void size_contact_lags(const BodySolve& s, std::size_t vertices) {
     if (s.floor) floor_lags.resize(vertices);
     collider_lags.resize(s.colliders.size() * vertices);
@@ -45,19 +42,18 @@ struct MotionScratch {
 // Moves body `body`'s positions x by α scratch.motion with the largest α of 1, ½, ¼, … (down to 1e-3) whose change of
 // E is a sufficient decrease (Armijo, kArmijo α slope); `slope` = ∇E·motion < 0 [J], `volume` = V(x) [m³] (unused
 // without gas). The dampers' directions and the floor's and colliders' weights are lagged at x, as the vertices' own
-// line searches lag them. Returns whether it moved; scratch.volume_after is V at the new x.
+// line searches lag them (scratch's lags, which the caller took at x). Returns whether it moved; scratch.volume_after
+// is V at the new x.
 bool search_along_motion(const Body& body, const BodySolve& s, std::span<Vec3> x, double volume, double slope,
                          MotionScratch& scratch);
 
-// Constraint e's lags at x (its length, inverse and ĥ × approach speed) into scratch, sized by size_edge_lags: what
-// take_motion_lags takes for every constraint, for a pass over the constraints that needs them anyway.
+// Constraint e's lags at x (its length, inverse and ĥ × approach speed) into scratch, sized by size_edge_lags, for a
+// pass over the constraints that the caller makes anyway.
 void take_edge_lag(const DistanceConstraints& constraints, const BodySolve& s, std::span<const Vec3> x, std::size_t e,
                    MotionScratch& scratch);
 
-// The search's parts, for a search over several bodies at once (joint_affine_correction.hpp): the floor's and the
-// colliders' lags of every vertex at x unless contacts_lagged (and the constraints' unless edges_lagged), and E's
-// change along α scratch.motion with them.
-void take_motion_lags(const Body& body, const BodySolve& s, std::span<const Vec3> x, MotionScratch& scratch);
+// The search's part for a search over several bodies at once (joint_affine_correction.hpp): E's change along
+// α scratch.motion with scratch's lags.
 double motion_energy_change(const Body& body, const BodySolve& s, std::span<const Vec3> x, double volume, double alpha,
                             MotionScratch& scratch);
 
