@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The peers' work-precision curves: CPU s of one thread per simulated s against the worst volume error and the
 # worst centre-of-mass distance from softbody's rk45 reference (tolerance 1e-9), for Jolt Physics over its dt and
-# iterations and softbody's xpbd and vbd over their substeps and sweeps, its explicit methods at their "auto" steps
-# and rk45 over its tolerance, on two scenes:
+# iterations and softbody's xpbd and vbd over their substeps and sweeps (vbd also without its coarse level), its
+# explicit methods at their "auto" steps and rk45 over its tolerance, on two scenes:
 #   breathing (bench/peers/breathing.json): no gravity, no floor, no dampers; the whole 1 s;
 #   bounce    (bench/peers/bounce.json):    the first impact on the floor, 0-1.2 s (the contact models differ).
 # Usage: JOLT_PREFIX=/path/to/installed/jolt bench/run_peers.sh [LEVELS]      (default "3 5"; after scripts/build)

@@ -193,9 +193,12 @@ void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, doubl
 void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
                std::size_t vertices, const std::vector<sim::BreathingMode>& breathing) {
   const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);
-  const double steps_per_s = steps / frame_interval_s;
+  const double dt = frame_interval_s / steps;  // its step in flight [s]
   const int sweeps = model.solver.iterations;
-  const double cost = steps_per_s * sweeps * static_cast<double>(vertices) * kVbdSweepNsPerVertex * 1e-9;
+  // CPU s of `steps_per_s` steps per simulated second, each `sweeps` sweeps over the vertices.
+  const auto cost_of = [&](double steps_per_s) {
+    return steps_per_s * sweeps * static_cast<double>(vertices) * kVbdSweepNsPerVertex * 1e-9;
+  };
   char per_frame[32], limit[32] = "no limit";
   std::snprintf(per_frame, sizeof per_frame, "%d steps", steps);
   // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
@@ -203,19 +206,15 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
     std::snprintf(limit, sizeof limit, "%.4g", estimate.travel_dt_s);
   }
   std::printf("  %-10s  %-12s %-12.4g %-22s about %.3g s in flight (%.0f steps/s x %d sweeps x %zu vertices x %.0f ns)",
-              "vbd", limit, frame_interval_s / steps, per_frame, cost, steps_per_s, sweeps, vertices,
-              kVbdSweepNsPerVertex);
+              "vbd", limit, dt, per_frame, cost_of(1.0 / dt), 1.0 / dt, sweeps, vertices, kVbdSweepNsPerVertex);
   if (const double omega = stiffest_smooth_contact(model); omega > 0.0) {
-    const double dt = frame_interval_s / steps;
     const double impact_h = std::ldexp(dt, -sim::vbd_impact_level(dt, omega, model.solver.impact_phase));
-    const double impact_cost =
-        kImpactSpan / impact_h * sweeps * static_cast<double>(vertices) * kVbdSweepNsPerVertex * 1e-9;
     std::printf("; impacts take steps of %.2g ms while they last, about %.3g s per %.1f s of impact", 1e3 * impact_h,
-                impact_cost, kImpactSpan);
+                kImpactSpan * cost_of(1.0 / impact_h), kImpactSpan);
   }
   std::printf("\n");
   print_vbd_coarse_level(model);
-  print_vbd_breathing(breathing, frame_interval_s / steps);
+  print_vbd_breathing(breathing, dt);
 }
 
 struct InfoOptions {
@@ -237,7 +236,7 @@ int run_info(const InfoOptions& options) {
   std::vector<sim::BreathingMode> breathing;  // per body
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const auto x = run.world.model.of(bodies[b], run.world.state.x);
-    breathing.push_back(sim::breathing_mode(bodies[b], x, run.world.model.of(bodies[b], run.world.model.mass_kg)));
+    breathing.push_back(sim::breathing_mode(bodies[b], x));
     print_body(b, bodies[b], sim::body_stats(bodies[b], x), estimate.bodies[b], breathing.back());
     if (const sim::Skin* skin = run.world.model.skin_of(static_cast<int>(b))) {
       std::printf("  simulated on a proxy; render and export show its detailed mesh: %zu vertices, %zu faces\n",

@@ -23,7 +23,7 @@ constexpr const char* kUndampedBall = R"({
 
 sim::BreathingMode mode_of(const sim::World& world) {
   const sim::Body& body = world.model.bodies[0];
-  return sim::breathing_mode(body, world.model.of(body, world.state.x), world.model.of(body, world.model.mass_kg));
+  return sim::breathing_mode(body, world.model.of(body, world.state.x));
 }
 
 // The volume every `sample_s` over `duration_s`, the world stepped by `dt` (which divides sample_s).

@@ -5,18 +5,14 @@
 #include <cmath>
 #include <complex>
 
+#include "sim/forces/energy.hpp"
+
 namespace sim {
 
-BreathingMode breathing_mode(const Body& body, std::span<const Vec3> x, std::span<const double> mass_kg) {
-  Vec3 moment = Vec3::Zero();
-  double mass = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    moment += mass_kg[i] * x[i];
-    mass += mass_kg[i];
-  }
-  const Vec3 centre = moment / mass;
+BreathingMode breathing_mode(const Body& body, std::span<const Vec3> x) {
+  const Vec3 centre = centre_of_mass(body, x);
   double inertia = 0.0;  // I [kg m²]
-  for (std::size_t i = 0; i < x.size(); ++i) inertia += mass_kg[i] * (x[i] - centre).squaredNorm();
+  for (std::size_t i = 0; i < x.size(); ++i) inertia += body.masses.kg[i] * (x[i] - centre).squaredNorm();
   const DistanceConstraints& constraints = body.constraints;
   double stiffness = 3.0 * body.params.pressure_J;  // K [J]: the gas's −nRT ln(s³ V)'' at s = 1
   double damping = 0.0;                             // C [J s]

@@ -12,14 +12,14 @@ using softbody::Vec3;
 
 // The breathing mode as one degree of freedom: x = c + s (X − c) about the centre of mass c, at s = 1 (the shape X),
 //   stiffness  K = E''(s) = Σ_e k_e l_e² + 3 nRT       [J]    (E = Σ ½ k (s l − L0)² − nRT ln(s³ V))
-//   inertia    I = Σ_i m_i |X_i − c|²                  [kg m²]
+//   inertia    I = Σ_i m_i |X_i − c|²                  [kg m²]   (the body's lumped masses)
 //   damping    C = Σ_e c_e l_e²                        [J s]  (each damper along its edge sees l ṡ)
 // so ω = √(K/I) and ζ = C / (2 I ω), over every distance constraint (edges and bending links).
 struct BreathingMode {
   double omega = 0.0;          // [rad/s]
   double damping_ratio = 0.0;  // ζ of the model's dampers [1]
 };
-BreathingMode breathing_mode(const Body& body, std::span<const Vec3> x, std::span<const double> mass_kg);
+BreathingMode breathing_mode(const Body& body, std::span<const Vec3> x);
 
 // BDF2's own damping ratio of an undamped oscillator at steps of ω h = `omega_h`: −ln|ξ| / (ω h), ξ the larger root
 // of (3/2 − i ω h) ξ² − 2 ξ + ½ = 0 (a BDF2 step of ẋ = i ω x at a constant step): an amplitude ∝ e^(−ζ ω t).
