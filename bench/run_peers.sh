@@ -16,7 +16,8 @@
 # Times: Jolt's are the thread CPU time of its PhysicsSystem::Update calls (the harness's own timing, single-threaded
 # job system); softbody's are the wall time of its steps with solver.threads 1 (`--profile`'s step phase: the
 # integrator, the contacts and the guard, without reading the scene, building the body or writing the CSV, as Jolt's
-# time leaves out its setup; vbd's colouring and coarse level, built in its first step, are inside it). One run each.
+# time leaves out its setup, Optimize included; vbd's colouring and coarse level are built with the run's setup,
+# outside it). One run each.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 levels="${1:-3 5}"

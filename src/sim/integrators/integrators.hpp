@@ -22,6 +22,9 @@ class AdaptiveIntegrator;
 class Integrator {
  public:
   virtual ~Integrator() = default;
+  // Builds what depends on the model alone (vbd: its colouring, blocks and thread layouts) before the first step, so
+  // that a run's setup pays for it and its steps' time is their own; step() builds what was not.
+  virtual void set_up(const Model& /*model*/, PartRunner& /*runner*/) {}
   // Fills what the next step needs from `state` itself and has not been carried over (e.g. Verlet's and
   // rk45's first acceleration), so that a State saved after prepare() holds it too.
   virtual void prepare(Dynamics& /*dynamics*/, State& /*state*/) {}

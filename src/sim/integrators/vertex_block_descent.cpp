@@ -324,14 +324,11 @@ int previous_level(const State& state, double dt) {
 
 }  // namespace
 
-void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
-  const Model& model = dynamics.model();
+void VertexBlockDescent::set_up(const Model& model, PartRunner& runner) {
   prepare_once(model);
-  runner_ = &dynamics.runner();
-  coarse_matrix_age_ = 0;
-  if (shares_.size() != blocks_.size() || (!shares_.empty() && shares_.front().threads != runner_->threads())) {
+  if (shares_.size() != blocks_.size() || (!shares_.empty() && shares_.front().threads != runner.threads())) {
     shares_.clear();
-    for (const VertexBlocks& blocks : blocks_) shares_.push_back(thread_shares(blocks, runner_->threads()));
+    for (const VertexBlocks& blocks : blocks_) shares_.push_back(thread_shares(blocks, runner.threads()));
     lane_groups_.clear();
   }
   if (lane_groups_.size() != blocks_.size() || (!lane_groups_.empty() && lane_groups_.front().width != lane_width())) {
@@ -339,6 +336,13 @@ void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
     for (std::size_t b = 0; b < blocks_.size(); ++b)
       lane_groups_.push_back(lane_groups(blocks_[b], shares_[b], lane_width()));
   }
+}
+
+void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
+  const Model& model = dynamics.model();
+  runner_ = &dynamics.runner();
+  set_up(model, *runner_);  // nothing where the workspace set it up
+  coarse_matrix_age_ = 0;
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
   int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);
   const long long whole = 1LL << kDeepestLevel;  // dt in ticks of dt / 2^kDeepestLevel

@@ -71,11 +71,12 @@ class VertexBlockDescent final : public Integrator {
   // `impact_phase`: around an impact on a smooth contact the steps shrink to ω h ≤ it (solver.impact_phase).
   explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0, double impact_phase = kVbdImpactPhase)
       : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates), impact_phase_(impact_phase) {}
+  void set_up(const Model& model, PartRunner& runner) override;
   void step(Dynamics& dynamics, State& state, double dt) override;
   const Statistics& statistics() const { return statistics_; }
 
  private:
-  // The bodies' layouts, on the first step (again for a model with other bodies).
+  // The bodies' layouts, at set_up or the first step (again for a model with other bodies).
   void prepare_once(const Model& model);
   // The keyframed smooth colliders at their pose at time t (the static ones stay as prepare_once made them).
   void pose_smooth_colliders(const Model& model, double time_s);

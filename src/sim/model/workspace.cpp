@@ -17,6 +17,7 @@ int force_threads(const Solver& solver) {
 Workspace::Workspace(const Model& model)
     : forces(force_threads(model.solver)), integrator(make_integrator(model.solver)) {
   forces.area_sums.resize(model.bodies.size());
+  integrator->set_up(model, *forces.runner);
 }
 
 }  // namespace sim
