@@ -157,23 +157,13 @@ void print_vbd_coarse_level(const sim::Model& model) {
 // the floor for 0.175 s in its first impact [s].
 constexpr double kImpactSpan = 0.1;
 
-// Below this damping ratio a body's breathing rings for several periods in the model, so a step that damps it far
-// faster changes the answer (scenes/breathing.json, ζ = 0.0015: vbd at one step per frame is 3.8 % off in volume and
-// rk4 0.17 %; scenes/bounce_smooth.json, ζ = 0.10: the dampers take it out within about 0.1 s themselves;
-// docs/notes/2026-12-06-vbd-breathing.md).
-constexpr double kLightlyDamped = 0.05;
-// Where BDF2's own damping ratio is at least this many times the model's, `info` says so.
-constexpr double kDampedTooFast = 10.0;
-
-// A line per body whose lightly damped breathing mode vbd's steps of h damp at least kDampedTooFast times faster
-// than the model does (BDF2's numerical damping, sim::bdf2_damping_ratio).
+// A line per body whose lightly damped breathing mode vbd's steps of h damp at least sim::kDampedTooFast times faster
+// than the model does (BDF2's numerical damping, sim::damped_out_by_bdf2).
 void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, double h) {
   for (std::size_t b = 0; b < breathing.size(); ++b) {
     const sim::BreathingMode& mode = breathing[b];
+    if (!sim::damped_out_by_bdf2(mode, h)) continue;
     const double numerical = sim::bdf2_damping_ratio(mode.omega * h);
-    if (mode.omega <= 0.0 || mode.damping_ratio >= kLightlyDamped || numerical < kDampedTooFast * mode.damping_ratio) {
-      continue;
-    }
     std::printf(
         "  vbd's steps of %.3g s damp body %zu's breathing at a ratio of %.2g (BDF2 at omega h = %.2g), the "
         "model at %.2g: it fades within about %.2g s",

@@ -12,6 +12,7 @@
 #include "sim/contact/contact.hpp"
 #include "sim/forces/dynamics.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
+#include "sim/step/breathing_mode.hpp"
 #include "sim/step/diagnostics.hpp"
 #include "sim/step/diverged.hpp"
 #include "support.hpp"
@@ -100,6 +101,45 @@ TEST(Vbd, FreeFallFromTheStartIsOffByTheFirstSmallStepOnly) {
   EXPECT_GE(least, first_offset);
   EXPECT_LE(worst, 4.0 * first_offset);
   EXPECT_LT(worst_velocity, 1e-10);  // v = (x′ − x̃)/ĥ: round-off of x [m] over ĥ [s]
+}
+
+// Where the full steps would damp out every body's breathing anyway (sim::damped_out_by_bdf2: a lightly damped
+// breathing that BDF2 at ω h ≈ 1.1 damps at least ten times faster than the model), following its first swings in
+// small steps would only delay the same error, so the run starts at the full step, BDF2 from a free fall's history:
+// as many steps as frames, all BDF2, and the centre of mass falls exactly from the first step (the internal forces sum
+// to zero; a backward Euler start at the full step would leave it ¾h²g = 2 mm off). kBreathing's dampers take its
+// breathing out by themselves (ζ ≈ 0.07), so it starts at h/16 and doubles back.
+TEST(Vbd, ARunStartsAtFullStepsWhereTheyDampOutTheBreathingAnyway) {
+  constexpr double kDt = 1.0 / 60.0;
+  constexpr int kSteps = 60;
+  const std::string dampers = "\"damping\": 0.2";
+  std::string undamped = kBreathing;
+  undamped.replace(undamped.find(dampers), dampers.size(), "\"damping\": 0.0");
+  for (const bool damped : {true, false}) {
+    sim::World world = vbd_world(damped ? kBreathing : undamped, 64);
+    const sim::BreathingMode mode = sim::breathing_mode(world.model.bodies[0], world.state.x);
+    ASSERT_EQ(sim::damped_out_by_bdf2(mode, kDt), !damped) << "zeta " << mode.damping_ratio;
+    const sim::BodyDiagnostics start = sim::diagnose(world.model, world.state, 0);
+    for (int n = 0; n < kSteps; ++n) world.step(kDt);
+    const auto& stats = dynamic_cast<const sim::VertexBlockDescent&>(*world.workspace.integrator).statistics();
+    const double t = kSteps * kDt;
+    const Vec3 g(0, -9.81, 0);
+    const double com_error = (sim::diagnose(world.model, world.state, 0).com_m -
+                              (start.com_m + start.com_velocity_m_per_s * t + 0.5 * g * t * t))
+                                 .norm();
+    std::printf(
+        "%s: %lld steps (%lld BDF2) for %d frames, centre of mass %.2e m off the free fall (omega h = %.2f, "
+        "zeta %.3f)\n",
+        damped ? "damped" : "undamped", stats.steps, stats.bdf2_steps, kSteps, com_error, mode.omega * kDt,
+        mode.damping_ratio);
+    if (damped) {
+      EXPECT_GT(stats.steps, kSteps + 5);
+    } else {
+      EXPECT_EQ(stats.steps, kSteps);
+      EXPECT_EQ(stats.bdf2_steps, kSteps);
+      EXPECT_LT(com_error, 1e-9);
+    }
+  }
 }
 
 // After enough sweeps a step's end state x' satisfies BDF2's equation with the model's own force code (Dynamics,

@@ -38,4 +38,9 @@ double bdf2_damping_ratio(double omega_h) {
   return -std::log(larger) / omega_h;
 }
 
+bool damped_out_by_bdf2(const BreathingMode& mode, double h) {
+  return mode.omega > 0.0 && mode.damping_ratio < kLightlyDamped &&
+         bdf2_damping_ratio(mode.omega * h) >= kDampedTooFast * mode.damping_ratio;
+}
+
 }  // namespace sim
