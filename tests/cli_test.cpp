@@ -124,6 +124,7 @@ TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
             std::string::npos)
       << text;
   EXPECT_EQ(result.output.find("damp body"), std::string::npos) << "the bounce's dampers take its breathing out";
+  EXPECT_EQ(result.output.find("starts at its full step"), std::string::npos) << "so its start follows the first swing";
 }
 
 // scenes/breathing.json's dampers (c = 0.01) leave its breathing ringing for seconds (ζ = 0.0015 at 148 rad/s), which
@@ -136,6 +137,7 @@ TEST(Cli, InfoWarnsWhereVbdsStepsDampABreathingTheModelKeeps) {
   EXPECT_NE(result.output.find("vbd's steps of 0.0333 s damp body 0's breathing at a ratio of 0.15"), std::string::npos)
       << result.output;
   EXPECT_NE(result.output.find("take rk4 or rk45"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("so at these steps vbd starts at its full step"), std::string::npos) << result.output;
 }
 
 TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {

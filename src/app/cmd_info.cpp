@@ -158,7 +158,8 @@ void print_vbd_coarse_level(const sim::Model& model) {
 constexpr double kImpactSpan = 0.1;
 
 // A line per body whose lightly damped breathing mode vbd's steps of h damp at least sim::kDampedTooFast times faster
-// than the model does (BDF2's numerical damping, sim::damped_out_by_bdf2).
+// than the model does (BDF2's numerical damping, sim::damped_out_by_bdf2), and where that holds for every body, that
+// vbd's run starts at its full step (VertexBlockDescent::start_level).
 void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, double h) {
   for (std::size_t b = 0; b < breathing.size(); ++b) {
     const sim::BreathingMode& mode = breathing[b];
@@ -174,6 +175,11 @@ void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, doubl
       std::printf(" where the model keeps it undamped");
     }
     std::printf("; to follow it take rk4 or rk45\n");
+  }
+  const auto damped_out = [h](const sim::BreathingMode& mode) { return sim::damped_out_by_bdf2(mode, h); };
+  if (!breathing.empty() && std::all_of(breathing.begin(), breathing.end(), damped_out)) {
+    std::printf(
+        "  so at these steps vbd starts at its full step (small first steps would follow swings it then damps out)\n");
   }
 }
 
