@@ -8,6 +8,7 @@
 # Usage: JOLT_PREFIX=/path/to/installed/jolt bench/run_peers.sh [LEVELS]      (default "3 5"; after scripts/build)
 #        JOLT_ITERATIONS="1 5 20" bench/run_peers.sh 6   (fewer Jolt settings: its error depends on dt/iterations only)
 #        PROGRAMS="bullet" BULLET_ITERATIONS="1 4" bench/run_peers.sh 5   (only Bullet's runs, added to the table)
+#        SCENES=breathing bench/run_peers.sh 6   (one scene: the bounce's rk45 runs take hours at level 6)
 # Bullet (build/bench_peers_bullet: btSoftBody, its own links, kPR = nRT) runs over its dt and position iterations;
 # on the breathing its error is the distance from our model, not a convergence error (bench/peers/peers.gp also
 # plots its volume history).
@@ -42,7 +43,7 @@ for level in $levels; do
   kept=$( [ -f $table ] && tail -n +2 $table | awk -F, -v run=" $programs " \
     '{ p = ($3 ~ /^(xpbd|vbd|symplectic|verlet|rk4|rk45)$/) ? "softbody" : $3; if (index(run, " " p " ") == 0) print }' || true)
   { echo "$header"; [ -z "$kept" ] || echo "$kept"; } > $table
-  for scene in breathing bounce; do
+  for scene in ${SCENES:-breathing bounce}; do
     file=${scene_file[$scene]}
     dur=${seconds[$scene]}
     ref=$out/${scene}_ref.csv

@@ -22,14 +22,25 @@ titles = "'Jolt, 1 iteration' 'Jolt, 2 iterations' 'Jolt, 5 iterations' 'Jolt, 1
 # methods and rk45), Bullet in oranges
 colours = "#9ecae1 #6baed6 #4292c6 #2171b5 #08519c #08306b #e31a1c #000000 #74c476 #238b45 #fdae6b #f16913 #a63603 #bcbddc #9e9ac8 #6a51a3 #3f007d #00441b"
 rows(scene, family) = sprintf("< awk -F, '$1==\"%s\" && $4==\"%s\" && $9!=\"inf\"' %s", scene, family, data)
-set multiplot layout 1,2 margins 0.06,0.78,0.11,0.9 spacing 0.07 title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)", level)
-set title "breathing in flight, 1 s (no gravity, no floor, no dampers)"
-unset key
+# A level run on the breathing alone (SCENES=breathing bench/run_peers.sh 6) gets the breathing's panel only.
+bounce_rows = int(system(sprintf("awk -F, '$1==\"bounce\"' %s | wc -l", data)))
+if (bounce_rows > 0) {
+  set multiplot layout 1,2 margins 0.06,0.78,0.11,0.9 spacing 0.07 title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)", level)
+  unset key
+} else {
+  set title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)\nbreathing in flight, 1 s (no gravity, no floor, no dampers)", level)
+  set lmargin at screen 0.06
+  set rmargin at screen 0.6
+  set key at screen 0.995,0.88 right top
+}
+if (bounce_rows > 0) set title "breathing in flight, 1 s (no gravity, no floor, no dampers)"
 plot for [i in "1 2 3 4 5 6 7 8 9 10 14 15 16 17 18"] rows("breathing", word(families, i+0)) using 9:8 with linespoints lw 2 lc rgb word(colours, i+0) pt (i+0 < 7 ? 7 : (i+0 < 11 ? 5 : (i+0 < 14 ? 9 : 13))) ps 1 title word(titles, i+0)
-set title "bounce, first impact 0-1.2 s"
-set key at screen 0.995,0.88 right top
-plot for [i=1:words(families)] rows("bounce", word(families, i)) using 9:8 with linespoints lw 2 lc rgb word(colours, i) pt (i < 7 ? 7 : (i < 11 ? 5 : (i < 14 ? 9 : 13))) ps 1 title word(titles, i)
-unset multiplot
+if (bounce_rows > 0) {
+  set title "bounce, first impact 0-1.2 s"
+  set key at screen 0.995,0.88 right top
+  plot for [i=1:words(families)] rows("bounce", word(families, i)) using 9:8 with linespoints lw 2 lc rgb word(colours, i) pt (i < 7 ? 7 : (i < 11 ? 5 : (i < 14 ? 9 : 13))) ps 1 title word(titles, i)
+  unset multiplot
+}
 
 # The breathing's volume over time: the reference, Jolt and Bullet at their defaults and finer, xpbd and vbd.
 reset
