@@ -26,6 +26,7 @@ rows(scene, family) = sprintf("< awk -F, '$1==\"%s\" && $4==\"%s\" && $9!=\"inf\
 bounce_rows = int(system(sprintf("awk -F, '$1==\"bounce\"' %s | wc -l", data)))
 if (bounce_rows > 0) {
   set multiplot layout 1,2 margins 0.06,0.78,0.11,0.9 spacing 0.07 title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)", level)
+  set title "breathing in flight, 1 s (no gravity, no floor, no dampers)"
   unset key
 } else {
   set title sprintf("icosphere level %d: CPU cost against volume error (Jolt over dt 1/60 .. 1/1920 s)\nbreathing in flight, 1 s (no gravity, no floor, no dampers)", level)
@@ -33,7 +34,6 @@ if (bounce_rows > 0) {
   set rmargin at screen 0.6
   set key at screen 0.995,0.88 right top
 }
-if (bounce_rows > 0) set title "breathing in flight, 1 s (no gravity, no floor, no dampers)"
 plot for [i in "1 2 3 4 5 6 7 8 9 10 14 15 16 17 18"] rows("breathing", word(families, i+0)) using 9:8 with linespoints lw 2 lc rgb word(colours, i+0) pt (i+0 < 7 ? 7 : (i+0 < 11 ? 5 : (i+0 < 14 ? 9 : 13))) ps 1 title word(titles, i+0)
 if (bounce_rows > 0) {
   set title "bounce, first impact 0-1.2 s"

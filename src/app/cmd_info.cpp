@@ -159,11 +159,15 @@ constexpr double kImpactSpan = 0.1;
 
 // A line per body whose lightly damped breathing mode vbd's steps of h damp at least sim::kDampedTooFast times faster
 // than the model does (BDF2's numerical damping, sim::damped_out_by_bdf2), and where that holds for every body, that
-// vbd's run starts at its full step (VertexBlockDescent::start_level).
+// vbd's run starts at its full step (VertexBlockDescent::step).
 void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, double h) {
+  bool every_one = !breathing.empty();  // whether every body's breathing is damped out
   for (std::size_t b = 0; b < breathing.size(); ++b) {
     const sim::BreathingMode& mode = breathing[b];
-    if (!sim::damped_out_by_bdf2(mode, h)) continue;
+    if (!sim::damped_out_by_bdf2(mode, h)) {
+      every_one = false;
+      continue;
+    }
     const double numerical = sim::bdf2_damping_ratio(mode.omega * h);
     std::printf(
         "  vbd's steps of %.3g s damp body %zu's breathing at a ratio of %.2g (BDF2 at omega h = %.2g), the "
@@ -176,8 +180,7 @@ void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, doubl
     }
     std::printf("; to follow it take rk4 or rk45\n");
   }
-  const auto damped_out = [h](const sim::BreathingMode& mode) { return sim::damped_out_by_bdf2(mode, h); };
-  if (!breathing.empty() && std::all_of(breathing.begin(), breathing.end(), damped_out)) {
+  if (every_one) {
     std::printf(
         "  so at these steps vbd starts at its full step (small first steps would follow swings it then damps out)\n");
   }

@@ -31,7 +31,7 @@ constexpr double kImpactSpeed = 0.01;  // m/s
 constexpr int kDeepestLevel = 12;
 // A run starts at this level with backward Euler (whose first step leaves a free fall ½ h² g off for good; the gas's
 // first push is the fastest motion of a run that starts at the rest shape) and doubles from there, except where the
-// full steps would damp out every body's breathing anyway (start_level).
+// full steps would damp out every body's breathing anyway (step).
 constexpr int kStartLevel = 4;
 // The steps double only where BDF2's local error at twice the step, (2/9)(2h)³|x‴| ≈ (16/9) h |Δ²v|, is below this
 // fraction of the body's mean edge at every vertex (a motion that is still settling, e.g. a buckling start, gained
@@ -324,6 +324,29 @@ int previous_level(const State& state, double dt) {
   return 0;
 }
 
+// Whether BDF2's steps of dt damp out every body's breathing (sim::damped_out_by_bdf2) at state.
+bool damps_out_every_breathing(const Model& model, const State& state, double dt) {
+  for (const Body& body : model.bodies) {
+    if (!damped_out_by_bdf2(breathing_mode(body, Model::of(body, state.x)), dt)) return false;
+  }
+  return true;
+}
+
+// state's BDF2 history as a free fall's one step of dt back, x₋₁ = x₀ − dt v₀ + ½ dt² g, v₋₁ = v₀ − dt g [m, m/s]:
+// BDF2 from it is exact for a free fall from the first step.
+void set_free_fall_history(const Model& model, State& state, double dt) {
+  IntegratorCarry& carry = state.carry;
+  const std::size_t n = state.x.size();
+  const Vec3 g = model.gravity_m_per_s2;
+  carry.previous_x.resize(n);
+  carry.previous_v.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    carry.previous_x[i] = state.x[i] - dt * state.v[i] + (0.5 * dt * dt) * g;
+    carry.previous_v[i] = state.v[i] - dt * g;
+  }
+  carry.previous_dt_s = dt;
+}
+
 }  // namespace
 
 void VertexBlockDescent::set_up(const Model& model, PartRunner& runner) {
@@ -340,34 +363,19 @@ void VertexBlockDescent::set_up(const Model& model, PartRunner& runner) {
   }
 }
 
-int VertexBlockDescent::start_level(const Model& model, State& state, double dt) const {
-  for (const Body& body : model.bodies) {
-    if (!damped_out_by_bdf2(breathing_mode(body, Model::of(body, state.x)), dt)) return kStartLevel;
-  }
-  // Following the first swings in small steps would only delay the same error (the peers' breathing at icosphere:3:
-  // 50 steps for 30 frames and 1.04 % off in volume, at full steps 30 and 1.03 %; docs/notes/2026-12-06-vbd-start.md).
-  // So BDF2 at the full step from the history of a free fall, x₋₁ = x₀ − h v₀ + ½ h² g, v₋₁ = v₀ − h g [m, m/s]:
-  // exact for a free fall from the first step.
-  IntegratorCarry& carry = state.carry;
-  const std::size_t n = state.x.size();
-  const Vec3 g = model.gravity_m_per_s2;
-  carry.previous_x.resize(n);
-  carry.previous_v.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    carry.previous_x[i] = state.x[i] - dt * state.v[i] + (0.5 * dt * dt) * g;
-    carry.previous_v[i] = state.v[i] - dt * g;
-  }
-  carry.previous_dt_s = dt;
-  return 0;
-}
-
 void VertexBlockDescent::step(Dynamics& dynamics, State& state, double dt) {
   const Model& model = dynamics.model();
   runner_ = &dynamics.runner();
   set_up(model, *runner_);  // nothing where the workspace set it up
   coarse_matrix_age_ = 0;
   const softbody::ProfileScope profile(softbody::ProfilePhase::constraint_sweeps);
-  int level = state.carry.previous_dt_s == 0.0 ? start_level(model, state, dt) : previous_level(state, dt);
+  // A run's first step: where the full steps damp out every body's breathing anyway, following its first swings in
+  // small steps would only delay the same error (the peers' breathing at icosphere:3: 50 steps for 30 frames and
+  // 1.04 % off in volume, at full steps 30 and 1.03 %; docs/notes/2026-12-06-vbd-start.md), so the run starts at the
+  // full step from a free fall's history (previous_level then finds level 0); elsewhere at kStartLevel.
+  const bool first_step = state.carry.previous_dt_s == 0.0;
+  if (first_step && damps_out_every_breathing(model, state, dt)) set_free_fall_history(model, state, dt);
+  int level = state.carry.previous_dt_s == 0.0 ? kStartLevel : previous_level(state, dt);
   const long long whole = 1LL << kDeepestLevel;  // dt in ticks of dt / 2^kDeepestLevel
   const double tick = std::ldexp(dt, -kDeepestLevel);
   for (long long done = 0; done < whole;) {

@@ -76,9 +76,6 @@ class VertexBlockDescent final : public Integrator {
   const Statistics& statistics() const { return statistics_; }
 
  private:
-  // The level of a run's first step (kStartLevel, or 0 where the full steps damp out every body's breathing; then
-  // state's BDF2 history is set to a free fall's).
-  int start_level(const Model& model, State& state, double dt) const;
   // The bodies' layouts, at set_up or the first step (again for a model with other bodies).
   void prepare_once(const Model& model);
   // The keyframed smooth colliders at their pose at time t (the static ones stay as prepare_once made them).
