@@ -140,6 +140,26 @@ TEST(Cli, InfoWarnsWhereVbdsStepsDampABreathingTheModelKeeps) {
   EXPECT_NE(result.output.find("so at these steps vbd starts at its full step"), std::string::npos) << result.output;
 }
 
+// Without a floor, a collider or contact between bodies no contact travel limit bounds the automatic steps: the note
+// says so instead of naming a limit of "inf s".
+TEST(Cli, AutoSubstepsWithoutContactNameNoTravelLimit) {
+  const auto vbd = run_softbody("info scenes/breathing.json --set solver.integrator=vbd --set solver.substeps=auto");
+  ASSERT_EQ(vbd.exit_status, 0) << vbd.output;
+  EXPECT_NE(vbd.output.find("solver.substeps = auto: 1 step per frame (h = 0.03333 s; no contact in the scene "
+                            "limits it)"),
+            std::string::npos)
+      << vbd.output;
+  EXPECT_NE(vbd.output.find("this scene: vbd, dt = 0.03333 s (1 step per frame)"), std::string::npos) << vbd.output;
+  const auto xpbd = run_softbody("info scenes/breathing.json --set solver.integrator=xpbd --set solver.substeps=auto");
+  ASSERT_EQ(xpbd.exit_status, 0) << xpbd.output;
+  EXPECT_NE(xpbd.output.find("substeps per frame (h = 0.002564 s: within the carried form's limit; no contact in the "
+                             "scene limits it)"),
+            std::string::npos)
+      << xpbd.output;
+  EXPECT_EQ(vbd.output.find("inf s"), std::string::npos) << vbd.output;
+  EXPECT_EQ(xpbd.output.find("inf s"), std::string::npos) << xpbd.output;
+}
+
 TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {
   // Far beyond forward Euler's stable step for this stiffness: blows up within a few frames.
   const auto result = run_softbody(

@@ -260,8 +260,9 @@ int run_info(const InfoOptions& options) {
                        run.world.state.x.size());
     }
   }
-  std::printf("this scene: %s, dt = %.4g s (%d steps per frame)\n",
-              sim::to_string(run.world.model.solver.integrator).c_str(), run.clock.dt_s, run.clock.steps_per_frame);
+  std::printf("this scene: %s, dt = %.4g s (%d %s per frame)\n",
+              sim::to_string(run.world.model.solver.integrator).c_str(), run.clock.dt_s, run.clock.steps_per_frame,
+              run.clock.steps_per_frame == 1 ? "step" : "steps");
   return 0;
 }
 

@@ -2,6 +2,7 @@
 #include "app/prepared_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -32,15 +33,25 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
       sim::resolve_step(world.model, world.state, 1.0 / scene.fps, scene.source.string(), after_phase);
   if (step.substeps_chosen) {
     const bool vbd = world.model.solver.integrator == sim::IntegratorKind::Vbd;
+    const char* steps = vbd ? (step.substeps == 1 ? "step" : "steps") : (step.substeps == 1 ? "substep" : "substeps");
     char head[96], limit[32];
-    std::snprintf(head, sizeof head, "solver.substeps = auto: %d %s per frame (h = %.4g s", step.substeps,
-                  vbd ? "steps" : "substeps", step.dt_s);
+    std::snprintf(head, sizeof head, "solver.substeps = auto: %d %s per frame (h = %.4g s", step.substeps, steps,
+                  step.dt_s);
     std::snprintf(limit, sizeof limit, "%.4g s", step.travel_dt_s);
-    const std::string why =
-        vbd ? std::string("; the contact travel limit ") + limit +
-                  " applies where a contact acts after the step: a paper or friction floor, a keyframed collider, the"
-                  " impulse contact between bodies; vbd shrinks its steps itself around smooth impacts)"
-            : std::string(": within the carried form's limit and the contact travel limit ") + limit + ")";
+    // No contact that acts after the step (no floor, collider or contact between bodies): no travel limit to name.
+    const bool travel_limited = std::isfinite(step.travel_dt_s);
+    std::string why;
+    if (vbd) {
+      why = travel_limited ? std::string("; the contact travel limit ") + limit +
+                                 " applies where a contact acts after the step: a paper or friction floor, a keyframed"
+                                 " collider, the impulse contact between bodies; vbd shrinks its steps itself around"
+                                 " smooth impacts)"
+                           : std::string("; no contact in the scene limits it)");
+    } else {
+      why = travel_limited
+                ? std::string(": within the carried form's limit and the contact travel limit ") + limit + ")"
+                : std::string(": within the carried form's limit; no contact in the scene limits it)");
+    }
     notes.insert(notes.begin(), head + why);
   } else if (step.dt_chosen) {
     const sim::IntegratorKind integrator = world.model.solver.integrator;
