@@ -64,7 +64,7 @@ class SoftbodyObjectSettings(bpy.types.PropertyGroup):
 class SoftbodySceneSettings(bpy.types.PropertyGroup):
     integrator: EnumProperty(name="Integrator", items=[
         (name, name, "solver.integrator = " + name)
-        for name in ("euler", "symplectic", "verlet", "rk4", "rk45", "implicit", "xpbd", "vbd")],
+        for name in ("euler", "symplectic", "verlet", "rk4", "rk45", "xpbd", "vbd")],
         default="euler")
     dt_auto: BoolProperty(name="Automatic step", description="solver.dt = \"auto\": from the stable-step estimate",
                           default=False)

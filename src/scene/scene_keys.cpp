@@ -185,7 +185,8 @@ struct Table {
         key("integrator", {choice(integrator_names())}, "", "The time integrator.", "euler"),
         key("dt", {dt, choice({"auto"})}, "s",
             "Requested time step; the run takes the largest that divides 1/fps (rk45: its first trial step). "
-            "\"auto\": from the stable-step estimate.",
+            "\"auto\": from the stable-step estimate (xpbd and vbd: their automatic substeps, unless substeps is a "
+            "number).",
             1e-4),
         key_without_default(
             "substeps", {substeps, choice({"auto"})}, "",

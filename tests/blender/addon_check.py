@@ -90,6 +90,17 @@ def check_scene_keys(bake_dir):
     print("blender addon: the scene file carries the body's self_collision switch")
 
 
+def check_integrators(program):
+    # The panel offers exactly the integrators the program takes (it offered "implicit" after the program dropped it).
+    offered = [item.identifier for item in
+               bpy.context.scene.softbody_pressure.bl_rna.properties["integrator"].enum_items]
+    schema = json.loads(subprocess.run([program, "schema"], check=True, capture_output=True, text=True).stdout)
+    taken = schema["properties"]["solver"]["properties"]["integrator"]["enum"]
+    if offered != taken:
+        fail("the panel offers the integrators %s, the program takes %s" % (offered, taken))
+    print("blender addon: the panel offers the program's integrators: %s" % ", ".join(offered))
+
+
 def check_start_frame(ball, before):
     cache = [m for m in ball.modifiers if m.type == "MESH_CACHE"]
     if len(cache) != 1:
@@ -334,6 +345,7 @@ def main():
     bake_dir = os.path.join(scratch, "bake")
     ball = make_scene(bake_dir)
     check_panels(ball)
+    check_integrators(program)
     ball.softbody_pressure.damping_mode = "RATIO"
     bpy.context.view_layer.update()
     before = evaluated_world(ball)

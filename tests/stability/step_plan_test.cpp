@@ -38,6 +38,22 @@ TEST(StepPlan, XpbdSubstepsDivideTheFrameInterval) {
   EXPECT_EQ(world.model.solver.dt_s, plan.dt_s);
 }
 
+// scenes/bump.json, colliders.json, paddle.json and stairs.json take vbd with "dt": "auto"; a whole number of substeps
+// set beside it (`--set solver.substeps=8`) is the step, not replaced by the automatic choice as it was.
+TEST(StepPlan, GivenSubstepsWinOverDtAuto) {
+  for (const char* integrator : {"xpbd", "vbd"}) {
+    sim::World world =
+        world_from_text(ball(std::string(R"({ "integrator": ")") + integrator + R"(", "dt": "auto", "substeps": 8 })"));
+    const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
+    EXPECT_FALSE(plan.substeps_chosen) << integrator;
+    EXPECT_EQ(plan.substeps, 8) << integrator;
+    EXPECT_EQ(world.model.solver.dt_s, kFrame_s / 8) << integrator;
+  }
+  sim::World world = world_from_text(ball(R"({ "integrator": "vbd", "dt": "auto" })"));
+  const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
+  EXPECT_TRUE(plan.substeps_chosen) << "without substeps, dt auto still chooses them";
+}
+
 TEST(StepPlan, XpbdAutoSubstepsComeFromTheEstimate) {
   sim::World world = world_from_text(ball(R"({ "integrator": "xpbd", "substeps": "auto" })"));
   const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state);

@@ -12,7 +12,8 @@ StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const
   plan.dt_s = solver.dt_s;
   const bool substepped = integrator_info(solver.integrator).frame_substeps;
   plan.substeps = substepped ? solver.substeps : 0;
-  if (substepped && (solver.substeps_auto || solver.dt_auto)) {
+  // "dt": "auto" picks the substeps where they are not given; a whole number of them is the user's and stays.
+  if (substepped && (solver.substeps_auto || (solver.dt_auto && solver.substeps == 0))) {
     // vbd's substeps need only the contact's travel limit, not the bodies' modes.
     const StabilityEstimate estimate = estimate_stability(model, state, solver.integrator != IntegratorKind::Vbd);
     plan.substeps = auto_substeps(solver.integrator, model, estimate, frame_interval_s);
