@@ -81,6 +81,28 @@ INSTANTIATE_TEST_SUITE_P(
         CliCase{"scenes/bounce.json --set bodies.0=3", "bodies.0: expected an object"}),
     [](const auto& param) { return "case" + std::to_string(param.index); });
 
+// vbd's start (steps of dt/16 doubling back) and its impacts (steps of 0.52 ms here) take steps within the driver's:
+// the summary counts them beside the frame steps, the only figure it gave before.
+TEST(Cli, SimulateCountsVbdsOwnSteps) {
+  const auto bounce = run_softbody(
+      "simulate scenes/bounce_smooth.json --set solver.integrator=vbd --set duration=1.2 --csv "
+      "build/cli_test_vbd_steps.csv");
+  ASSERT_EQ(bounce.exit_status, 0) << bounce.output;
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(bounce.output, match,
+                                std::regex(R"(36 steps of 0.03333 s \(vbd; (\d+) of its own: shorter at its start and )"
+                                           R"(around impacts\))")))
+      << bounce.output;
+  // The impact alone takes more than a hundred 0.52 ms steps (about 0.1 s of it).
+  EXPECT_GT(std::stoi(match[1]), 136) << bounce.output;
+  // At full steps throughout (the breathing's start, docs/physics/integrators.md) only the frame steps are counted.
+  const auto breathing = run_softbody(
+      "simulate scenes/breathing.json --set solver.integrator=vbd --set solver.substeps=auto --set duration=0.5 --csv "
+      "build/cli_test_vbd_steps.csv");
+  ASSERT_EQ(breathing.exit_status, 0) << breathing.output;
+  EXPECT_NE(breathing.output.find("15 steps of 0.03333 s (vbd), "), std::string::npos) << breathing.output;
+}
+
 TEST(Cli, SimulateWritesTheContractColumns) {
   const auto result = run_softbody("simulate scenes/bounce.json --set duration=0.1 --csv build/cli_test_bounce.csv");
   ASSERT_EQ(result.exit_status, 0) << result.output;
