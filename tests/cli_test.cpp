@@ -103,6 +103,42 @@ TEST(Cli, SimulateCountsVbdsOwnSteps) {
   EXPECT_NE(breathing.output.find("15 steps of 0.03333 s (vbd), "), std::string::npos) << breathing.output;
 }
 
+// A solver key the scene's integrator does not read is said as a note (it was silently ignored): not an error, as a
+// scene may carry several integrators' keys for --set to switch between.
+TEST(Cli, SolverKeysTheIntegratorDoesNotReadAreNoted) {
+  const auto result = run_softbody(
+      "simulate scenes/bounce_smooth.json --set duration=0.1 --set solver.substeps=8 --set solver.iterations=3 "
+      "--set solver.impact_phase=1 --csv build/cli_test_unused_keys.csv");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("note: scenes/bounce_smooth.json: solver.substeps is not used by rk4 (only by xpbd and "
+                               "vbd)"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("solver.iterations is not used by rk4 (only by vbd)"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("solver.impact_phase is not used by rk4 (only by vbd)"), std::string::npos)
+      << result.output;
+  const auto vbd = run_softbody(
+      "simulate scenes/bounce_smooth.json --set duration=0.1 --set solver.integrator=vbd --set solver.substeps=2 "
+      "--set solver.iterations=3 --csv build/cli_test_unused_keys.csv");
+  ASSERT_EQ(vbd.exit_status, 0) << vbd.output;
+  EXPECT_EQ(vbd.output.find("is not used"), std::string::npos) << vbd.output;
+}
+
+// A body partly in the floor runs, with a note: the contact pushes it out (one under the floor is refused:
+// tests/hostile_scene_test.cpp).
+TEST(Cli, ABodyStartingPartlyInTheFloorIsNoted) {
+  const auto result = run_softbody(
+      "simulate scenes/bounce.json --set floor.height=2.5 --set duration=0.1 --csv build/cli_test_in_floor.csv");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("note: scenes/bounce.json: bodies.0 starts 0.5 m into the floor (its lowest vertex at "
+                               "y = 2 m, the floor at 2.5 m): the contact pushes it out in the first steps"),
+            std::string::npos)
+      << result.output;
+  const auto above = run_softbody("simulate scenes/bounce.json --set duration=0.1 --csv build/cli_test_in_floor.csv");
+  EXPECT_EQ(above.output.find("into the floor"), std::string::npos) << above.output;
+}
+
 TEST(Cli, SimulateWritesTheContractColumns) {
   const auto result = run_softbody("simulate scenes/bounce.json --set duration=0.1 --csv build/cli_test_bounce.csv");
   ASSERT_EQ(result.exit_status, 0) << result.output;

@@ -76,6 +76,11 @@ INSTANTIATE_TEST_SUITE_P(
                      "bodies.0.mass: expected a number > 0, got string \"1e400\""},
         HostileScene{"scenes/bounce.json --set bodies.0.scale=1e-7",
                      "bodies.0.scale: expected a finite number in [1e-6, 1e6]"},
+        // The ball (radius 1 m, its centre at y = 3 m) under a floor raised to 5 m: it collapsed within 8 steps.
+        HostileScene{"scenes/bounce.json --set floor.height=5",
+                     "scenes/bounce.json: bodies.0.position: the body starts under the floor: its centre at y = 3 m, "
+                     "its top at 4 m, the floor at 5 m (floor.height): expected a position whose body is above the "
+                     "floor"},
         // A key given twice: in a file, and in a --set value.
         HostileScene{HOSTILE "duplicate_key.json",
                      HOSTILE "duplicate_key.json: bodies.0.mass: expected each key once in an object, got it twice: "

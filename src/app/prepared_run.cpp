@@ -21,6 +21,7 @@ PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
 
 PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
   std::vector<std::string> notes;
+  for (const std::string& note : scene.notes) notes.push_back(scene.source.string() + ": " + note);
   std::vector<int> bodies_per_scene_body;
   // SIGINT / SIGTERM during setup (a long mesh repair, remesh, ...) end it when that phase ends.
   const softbody::AfterPhase after_phase = frames::throw_if_stop_requested_after;

@@ -123,6 +123,9 @@ struct Scene {
   Camera camera;
   Light light;
   Output output;
+  // What the file asks that the run will not use (e.g. a solver key its integrator does not read), said as notes
+  // before the run: not errors, so that a scene can carry the keys of several integrators.
+  std::vector<std::string> notes;
 };
 
 }  // namespace scene

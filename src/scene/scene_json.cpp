@@ -216,7 +216,27 @@ class ObjectReader {
   const ObjectKeys& keys_;
 };
 
-sim::Solver read_solver(const ObjectReader& top) {
+// The solver keys `r` gives that its integrator does not read, as notes (not errors: a scene may carry the keys of
+// several integrators, switched with --set), e.g. "solver.substeps is not used by rk4 (only by xpbd and vbd)".
+void note_unused_solver_keys(const ObjectReader& r, const sim::Solver& solver, std::vector<std::string>& notes) {
+  const sim::IntegratorInfo& info = sim::integrator_info(solver.integrator);
+  const bool vbd = solver.integrator == sim::IntegratorKind::Vbd;
+  const struct {
+    const char* key;
+    bool used;
+    const char* by;
+  } keys[] = {{"substeps", info.frame_substeps, "xpbd and vbd"},
+              {"iterations", vbd, "vbd"},
+              {"impact_phase", vbd, "vbd"},
+              {"coarse_space", vbd, "vbd"},
+              {"tolerance", solver.integrator == sim::IntegratorKind::Rk45, "rk45"}};
+  for (const auto& key : keys) {
+    if (key.used || !r.has(key.key)) continue;
+    notes.push_back(r.child(key.key) + " is not used by " + std::string(info.name) + " (only by " + key.by + ")");
+  }
+}
+
+sim::Solver read_solver(const ObjectReader& top, std::vector<std::string>& notes) {
   sim::Solver solver;
   if (!top.has("solver")) return solver;
   const ObjectReader r = top.object("solver");
@@ -270,6 +290,7 @@ sim::Solver read_solver(const ObjectReader& top) {
   solver.tolerance = r.number("tolerance");
   solver.threads = r.integer("threads");
   r.reject_unknown();
+  note_unused_solver_keys(r, solver, notes);
   return solver;
 }
 
@@ -826,7 +847,7 @@ Scene scene_from_json(const json& document, const fs::path& file) {
   }
   s.duration_s = top.number("duration");
   s.fps = top.integer("fps");
-  s.solver = read_solver(top);
+  s.solver = read_solver(top, s.notes);
   s.gravity_m_per_s2 = top.vec3("gravity");
   s.floor = read_floor(top);
   s.colliders = read_colliders(top, s.floor, s.collider_meshes);

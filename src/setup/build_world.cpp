@@ -100,6 +100,38 @@ std::vector<softbody::Vec3> place_mesh(const mesh::TriMesh& mesh, const scene::B
   return x;
 }
 
+// A body placed below the floor: an error where its centre (the mean of its vertices) is under the floor, so that
+// more than about half of it would start inside; a note where only a part of it is in the floor, which the contact
+// pushes out in the first steps (a mistake that the run would otherwise show as a collapse or a jump).
+void check_above_floor(const std::vector<softbody::Vec3>& x, const std::optional<sim::Floor>& floor,
+                       const std::string& key_path, std::vector<std::string>& notes) {
+  if (!floor) return;
+  double lowest = x.front().y(), highest = lowest, centre = 0.0;
+  for (const softbody::Vec3& p : x) {
+    lowest = std::min(lowest, p.y());
+    highest = std::max(highest, p.y());
+    centre += p.y();
+  }
+  centre /= static_cast<double>(x.size());
+  const double floor_y = floor->height_m;
+  char text[400];
+  if (centre < floor_y) {
+    std::snprintf(text, sizeof text,
+                  "%s.position: the body starts under the floor: its centre at y = %.4g m, its top at %.4g m, the "
+                  "floor at %.4g m (floor.height): expected a position whose body is above the floor",
+                  key_path.c_str(), centre, highest, floor_y);
+    throw softbody::InputError(text);
+  }
+  // Deeper than a millionth of its height: not the round-off of a body set on the floor.
+  if (floor_y - lowest > 1e-6 * (highest - lowest)) {
+    std::snprintf(text, sizeof text,
+                  "%s starts %.4g m into the floor (its lowest vertex at y = %.4g m, the floor at %.4g m): the "
+                  "contact pushes it out in the first steps",
+                  key_path.c_str(), floor_y - lowest, lowest, floor_y);
+    notes.push_back(text);
+  }
+}
+
 sim::World build_world(const scene::Scene& scene, std::vector<std::string>& notes,
                        std::vector<int>* bodies_per_scene_body, const softbody::AfterPhase& after_phase,
                        int threads_when_auto) {
@@ -144,6 +176,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       const mesh::TriMesh& simulated = proxied ? proxy : part.mesh;
       const std::vector<softbody::Vec3> x0 = place_mesh(simulated, spec);
       check_placed(x0, key_path);
+      check_above_floor(x0, scene.floor, key_path, notes);
       sim::Body body = sim::build_body(x0, simulated.triangles, spec.mass_kg * part.mass_share);
       sim::Params raw{spec.stiffness_N_per_m, spec.damping_N_s_per_m, spec.pressure_J * part.pressure_share};
       raw.bending_N_per_m = spec.bending_N_per_m;
