@@ -13,6 +13,7 @@
 #include "setup/bind_skin.hpp"
 #include "setup/collider_meshes.hpp"
 #include "setup/derived_quantities.hpp"
+#include "setup/overlapping_bodies.hpp"
 #include "setup/scene_totals.hpp"
 #include "setup/simulation_proxy.hpp"
 #include "sim/forces/bending.hpp"
@@ -148,6 +149,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   load_collider_meshes(scene, model.colliders, notes, totals);
   sim::State state = sim::initial_state(model);
   double heaviest_vertex_kg = 0.0;
+  std::vector<std::string> body_names;  // per model body, its scene key
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& spec = scene.bodies[b];
     const std::string key_path = scene.source.string() + ": bodies." + std::to_string(b);
@@ -198,8 +200,13 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
       sim::add_body(model, state, std::move(body), x0, spec.velocity_m_per_s);
     }
     if (bodies_per_scene_body) bodies_per_scene_body->push_back(static_cast<int>(parts.size()));
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      body_names.push_back(parts.size() == 1 ? key : key + " (part " + std::to_string(p + 1) + ")");
   }
   check_contact_quantities(scene, heaviest_vertex_kg);
+  std::vector<std::string> overlaps;
+  note_overlapping_bodies(model, state, body_names, overlaps);
+  for (const std::string& note : overlaps) notes.push_back(scene.source.string() + ": " + note);
   return sim::World(std::move(model), std::move(state));
 }
 

@@ -1,0 +1,26 @@
+// Bodies that start inside one another. The contact between bodies is made for surfaces that meet: the impulse
+// contact pushes a vertex found inside out at most collisions.push_speed, the smooth one with its stiff spring, so a
+// deep overlap at the start takes seconds to undo or starts with a jolt. Said as a note before the run.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/model/model.hpp"
+#include "sim/model/state.hpp"
+
+namespace setup {
+
+// For each pair of bodies whose bounding boxes overlap, a sample of each one's vertices inside the other's box (at
+// most kOverlapSamples, evenly strided) tested by the generalised winding number against the other's faces (inside:
+// above ½); where any is inside, a note "A and B start inside each other (about P % of the first's vertices inside
+// the second, Q % of the second's inside the first) ...", with `names[b]` the scene key of model body b.
+void note_overlapping_bodies(const sim::Model& model, const sim::State& state, std::span<const std::string> names,
+                             std::vector<std::string>& notes);
+
+// Vertices tested per pair, fewer for large second bodies: the winding number costs one pass over its faces.
+inline constexpr int kOverlapSamples = 256;
+inline constexpr double kOverlapFaceVisits = 4e6;  // at most this many vertex-face evaluations per pair
+
+}  // namespace setup
