@@ -13,9 +13,9 @@
 #include "setup/bind_skin.hpp"
 #include "setup/collider_meshes.hpp"
 #include "setup/derived_quantities.hpp"
-#include "setup/overlapping_bodies.hpp"
 #include "setup/scene_totals.hpp"
 #include "setup/simulation_proxy.hpp"
+#include "setup/start_overlaps.hpp"
 #include "sim/forces/bending.hpp"
 #include "sim/model/intent.hpp"
 
@@ -206,6 +206,7 @@ sim::World build_world(const scene::Scene& scene, std::vector<std::string>& note
   check_contact_quantities(scene, heaviest_vertex_kg);
   std::vector<std::string> overlaps;
   note_overlapping_bodies(model, state, body_names, overlaps);
+  note_bodies_in_colliders(model, state, body_names, overlaps);
   for (const std::string& note : overlaps) notes.push_back(scene.source.string() + ": " + note);
   return sim::World(std::move(model), std::move(state));
 }

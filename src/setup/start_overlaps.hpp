@@ -1,6 +1,7 @@
-// Bodies that start inside one another. The contact between bodies is made for surfaces that meet: the impulse
-// contact pushes a vertex found inside out at most collisions.push_speed, the smooth one with its stiff spring, so a
-// deep overlap at the start takes seconds to undo or starts with a jolt. Said as a note before the run.
+// Bodies that start inside one another or inside a collider. The contacts are made for surfaces that meet: the impulse
+// contact between bodies pushes a vertex found inside out at most collisions.push_speed, the smooth one with its stiff
+// spring, and a collider moves each vertex inside to its nearest surface, so a deep overlap at the start takes seconds
+// to undo, starts with a jolt, or holds a body inside a collider. Said as notes before the run.
 #pragma once
 
 #include <span>
@@ -18,6 +19,11 @@ namespace setup {
 // the second, Q % of the second's inside the first) ...", with `names[b]` the scene key of model body b.
 void note_overlapping_bodies(const sim::Model& model, const sim::State& state, std::span<const std::string> names,
                              std::vector<std::string>& notes);
+
+// For each body and collider (at its pose at t = 0), where any of the body's vertices is inside the collider, a note
+// "NAME starts inside colliders.C (about P % of its vertices) ...".
+void note_bodies_in_colliders(const sim::Model& model, const sim::State& state, std::span<const std::string> names,
+                              std::vector<std::string>& notes);
 
 // Vertices tested per pair, fewer for large second bodies: the winding number costs one pass over its faces.
 inline constexpr int kOverlapSamples = 256;

@@ -1,10 +1,12 @@
-// Bodies that start inside one another: a sampled winding-number test per pair of overlapping boxes.
-#include "setup/overlapping_bodies.hpp"
+// Bodies that start inside one another (a sampled winding-number test per pair of overlapping boxes) or inside a
+// collider.
+#include "setup/start_overlaps.hpp"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "sim/contact/body_collision.hpp"
+#include "sim/contact/collider_shape.hpp"
 
 namespace setup {
 
@@ -39,8 +41,8 @@ double share_inside(const sim::Body& a, const sim::Body& b, const Box& b_box, co
   }
   if (in_box.empty()) return 0.0;
   const auto faces = static_cast<double>(b.topology.faces.size());
-  const auto most = static_cast<std::size_t>(std::clamp(kOverlapFaceVisits / std::max(faces, 1.0), 16.0,
-                                                        static_cast<double>(kOverlapSamples)));
+  const auto most = static_cast<std::size_t>(
+      std::clamp(kOverlapFaceVisits / std::max(faces, 1.0), 16.0, static_cast<double>(kOverlapSamples)));
   const std::size_t samples = std::min(in_box.size(), most);
   std::size_t inside = 0;
   for (std::size_t k = 0; k < samples; ++k) {
@@ -72,6 +74,25 @@ void note_overlapping_bodies(const sim::Model& model, const sim::State& state, s
                     "most collisions.push_speed (impulse) or with its stiff spring (smooth), so the overlap takes long "
                     "to undo or starts with a jolt; place the bodies apart",
                     names[a].c_str(), names[b].c_str(), 100.0 * a_in_b, 100.0 * b_in_a);
+      notes.push_back(text);
+    }
+  }
+}
+
+void note_bodies_in_colliders(const sim::Model& model, const sim::State& state, std::span<const std::string> names,
+                              std::vector<std::string>& notes) {
+  for (std::size_t c = 0; c < model.colliders.size(); ++c) {
+    const sim::ColliderGeometry geometry = sim::collider_at(model.colliders[c], 0.0);
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+      const auto x = sim::Model::of(model.bodies[b], state.x);
+      std::size_t inside = 0;
+      for (const softbody::Vec3& p : x) inside += sim::is_inside(geometry, p) ? 1 : 0;
+      if (inside == 0) continue;
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "%s starts inside colliders.%zu (%zu of its %zu vertices): a collider moves each vertex inside to "
+                    "its nearest surface, which can hold the body inside it or throw it; place the body outside",
+                    names[b].c_str(), c, inside, x.size());
       notes.push_back(text);
     }
   }
