@@ -125,6 +125,16 @@ void expect_noted_only_when_changed(const std::string& changed, const std::strin
   EXPECT_EQ(without.output.find(mark), std::string::npos) << without.output;
 }
 
+// scenes/colliders.json (a friction floor: a projection after the step) at one vbd step per frame diverged after
+// 1.1 s, its ball crushed, with nothing said beforehand; the steps are kept, and a note says what the contact needs.
+TEST(Cli, SubstepsLongerThanTheContactTravelLimitAreNoted) {
+  expect_noted_only_when_changed(
+      "scenes/colliders.json --set solver.substeps=1 --set duration=0.04", "scenes/colliders.json --set duration=0.04",
+      "note: solver.substeps = 1: steps of 0.03333 s, longer than the contact travel limit 0.0005006 s (a tenth of the "
+      "shortest edge per step) that a contact after the step needs",
+      "longer than the contact travel limit");
+}
+
 // A solver key the scene's integrator does not read is said as a note (it was silently ignored): not an error, as a
 // scene may carry several integrators' keys for --set to switch between.
 TEST(Cli, SolverKeysTheIntegratorDoesNotReadAreNoted) {

@@ -53,8 +53,8 @@ TEST(StartOverlaps, ABallInsideAnotherIsAllInsideIt) {
 }
 
 // 40 balls at nearly one place: 780 overlapping pairs. The pairs named one by one stop at kOverlapNotes and the test
-// at its budget (here 2e6 vertex-face evaluations, about 300 pairs' worth at icosphere:1), each said in one more note, so that such a
-// scene does not spend minutes (or lines) on it.
+// at its budget (here 2e6 vertex-face evaluations, about 300 pairs' worth at icosphere:1), each said in one more note,
+// so that such a scene does not spend minutes (or lines) on it.
 TEST(StartOverlaps, ASceneOfManyOverlapsIsBounded) {
   std::vector<double> centres;
   for (int b = 0; b < 40; ++b) centres.push_back(0.01 * b);

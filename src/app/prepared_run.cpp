@@ -55,6 +55,15 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
                 : std::string(": within the carried form's limit; no contact in the scene limits it)");
     }
     notes.insert(notes.begin(), head + why);
+  } else if (step.travel_substeps > 0) {
+    char note[480];
+    std::snprintf(note, sizeof note,
+                  "solver.substeps = %d: steps of %.4g s, longer than the contact travel limit %.4g s (a tenth of the "
+                  "shortest edge per step) that a contact after the step needs (a paper or friction floor, a "
+                  "keyframed collider, the impulse contact between bodies): vertices can pass through or be "
+                  "crushed; it takes %d, as \"auto\" would",
+                  step.substeps, step.dt_s, step.travel_dt_s, step.travel_substeps);
+    notes.insert(notes.begin(), note);
   } else if (step.dt_chosen) {
     const sim::IntegratorKind integrator = world.model.solver.integrator;
     char note[200];

@@ -1,5 +1,6 @@
 // sim::resolve_step: xpbd's substeps and "dt": "auto" resolved on the model's copy of the solver settings.
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,31 @@ TEST(StepPlan, GivenSubstepsWinOverDtAuto) {
   sim::World world = world_from_text(ball(R"({ "integrator": "vbd", "dt": "auto" })"));
   const sim::StepPlan plan = sim::resolve_step(world.model, world.state, kFrame_s, "s.json");
   EXPECT_TRUE(plan.substeps_chosen) << "without substeps, dt auto still chooses them";
+}
+
+// Substeps given as a number are kept, but where a contact after the step (here the ball's paper floor) needs more for
+// its travel limit, the plan says how many ("auto"'s choice for vbd); a smooth floor, inside vbd's energy, needs none.
+TEST(StepPlan, GivenSubstepsBelowTheTravelLimitAreFlagged) {
+  const auto plan_of = [](const std::string& solver, const std::string& floor) {
+    const std::string plain = R"("floor": { "height": 0 })";
+    std::string text = ball(solver);
+    text.replace(text.find(plain), plain.size(), R"("floor": { "height": 0, "contact": ")" + floor + R"(" })");
+    sim::World world = world_from_text(text);
+    const sim::StabilityEstimate estimate = sim::estimate_stability(world.model, world.state, false);
+    const int needed = sim::travel_substeps(world.model.solver.integrator, world.model, estimate, kFrame_s);
+    return std::pair{sim::resolve_step(world.model, world.state, kFrame_s, "s.json"), needed};
+  };
+  const auto [one, needed] = plan_of(R"({ "integrator": "vbd", "substeps": 1 })", "paper");
+  EXPECT_GT(needed, 1);
+  EXPECT_EQ(one.substeps, 1) << "kept";
+  EXPECT_EQ(one.travel_substeps, needed);
+  EXPECT_GT(one.travel_dt_s, 0.0);
+  const auto [enough, unused] =
+      plan_of(R"({ "integrator": "vbd", "substeps": )" + std::to_string(needed) + " }", "paper");
+  EXPECT_EQ(enough.travel_substeps, 0);
+  const auto [smooth, none] = plan_of(R"({ "integrator": "vbd", "substeps": 1 })", "smooth");
+  EXPECT_EQ(smooth.travel_substeps, 0);
+  EXPECT_EQ(none, 1);
 }
 
 TEST(StepPlan, XpbdAutoSubstepsComeFromTheEstimate) {

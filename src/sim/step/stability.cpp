@@ -459,20 +459,31 @@ double xpbd_carried_dt(double omega_max) {
   return kXpbdCarriedPhaseLimit / omega_max;
 }
 
-int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
-                  double frame_interval_s) {
-  // The projections after the step: vbd's steps keep their travel limit where one acts (its smooth contacts are
-  // inside its energy, and its steps shrink around their impacts).
+bool contact_after_step(const Model& model) {
   bool projected = model.floor && model.floor->contact != FloorContact::Smooth;
   for (const Collider& collider : model.colliders) {  // a keyframed collider's projection: the same travel limit
     projected = projected || (collider.motion.moving() && collider.contact != FloorContact::Smooth);
   }
   // The impulse contact between bodies and a body's impulse self-contact: a fold's halves or two bodies must not pass
   // each other within one step.
-  projected =
-      projected || (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Impulse);
+  return projected || (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Impulse);
+}
+
+int travel_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                    double frame_interval_s) {
+  // vbd's smooth contacts are inside its energy and its steps shrink around their impacts: only a projection after
+  // the step holds it to the travel limit.
+  if (integrator == IntegratorKind::Vbd && !contact_after_step(model)) return 1;
+  const double h = std::min(frame_interval_s, estimate.travel_dt_s);
+  return static_cast<int>(
+      std::clamp(std::ceil(frame_interval_s / h * (1.0 - 1e-9)), 1.0, double{kXpbdMostAutoSubsteps}));
+}
+
+int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                  double frame_interval_s) {
   double h = std::min(frame_interval_s, estimate.travel_dt_s);
-  if (integrator == IntegratorKind::Vbd && !projected) h = std::min(frame_interval_s, kVbdLongestAutoStep);
+  if (integrator == IntegratorKind::Vbd && !contact_after_step(model))
+    h = std::min(frame_interval_s, kVbdLongestAutoStep);
   const bool xpbd = integrator == IntegratorKind::Xpbd;
   for (std::size_t b = 0; xpbd && b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
     h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));

@@ -153,6 +153,13 @@ double xpbd_bias_dt(double omega_max, int vertices);
 constexpr double kVbdLongestAutoStep = 1.0 / 30.0;  // s: measured on scenes/bounce_smooth.json (docs/notes)
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s);
+// Whether a contact acts after the step as a projection (a paper or friction floor, a keyframed collider's projection,
+// the impulse contact between bodies or of a body with itself): then every integrator's step keeps the travel limit.
+bool contact_after_step(const Model& model);
+// The fewest substeps per frame interval that keep (2), the contact travel limit, where it binds `integrator` (vbd:
+// only with a contact after the step; 1 where nothing binds).
+int travel_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                    double frame_interval_s);
 
 // What a floor costs (kContactMargin; with the paper's response also kSymplecticProjectionFactor and
 // kPaperEuler*; the smooth contact adds its spring and dashpot to every body's fastest mode, a bound: the

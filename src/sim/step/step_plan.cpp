@@ -21,6 +21,15 @@ StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const
     plan.travel_dt_s = estimate.travel_dt_s;
     if (after_phase) after_phase("estimating the stable substep");
   }
+  if (substepped && !plan.substeps_chosen && plan.substeps > 0 && contact_after_step(model)) {
+    // Substeps given as a number: said where they are longer than the contact travel limit (the run keeps them).
+    const StabilityEstimate estimate = estimate_stability(model, state, false);
+    const int needed = travel_substeps(solver.integrator, model, estimate, frame_interval_s);
+    if (plan.substeps < needed) {
+      plan.travel_substeps = needed;
+      plan.travel_dt_s = estimate.travel_dt_s;
+    }
+  }
   if (plan.substeps > 0) {
     solver.substeps = plan.substeps;
     plan.dt_s = frame_interval_s / plan.substeps;

@@ -17,8 +17,11 @@ struct StepPlan {
   int substeps = 0;
   bool substeps_chosen = false;  // xpbd: the substeps were chosen from the stability estimate ("auto")
   bool dt_chosen = false;        // another integrator: dt_s was chosen from the stability estimate ("dt": "auto")
-  double travel_dt_s = 0.0;      // substeps_chosen: the estimate's contact travel limit [s]
-  double stable_dt_s = 0.0;      // dt_chosen: the estimate's stable dt of the integrator [s]
+  double travel_dt_s = 0.0;      // substeps_chosen, or given below travel_substeps: the contact travel limit [s]
+  // Substeps given as a number, fewer than the contact travel limit needs (sim::travel_substeps), which this is; 0
+  // where they keep it or were not given.
+  int travel_substeps = 0;
+  double stable_dt_s = 0.0;  // dt_chosen: the estimate's stable dt of the integrator [s]
   // The dt is the scene's request, which the frame clock may round down to divide the frame interval.
   bool dt_requested() const { return substeps == 0 && !dt_chosen; }
 };
