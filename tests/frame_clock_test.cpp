@@ -29,7 +29,15 @@ TEST(FrameClock, StepLongerThanFrameBecomesOneStepPerFrame) {
   EXPECT_FALSE(clock.dt_note.empty());
 }
 
-TEST(FrameClock, PartialLastFrameIsRoundedUp) { EXPECT_EQ(frames::plan_frames(1.01, 10, 0.01).frame_count, 11); }
+// The run goes on to the next frame, and says so: at 1 fps a duration of 0.1 s ran a whole second without a word.
+TEST(FrameClock, PartialLastFrameIsRoundedUpAndReported) {
+  const frames::FrameClock clock = frames::plan_frames(1.01, 10, 0.01);
+  EXPECT_EQ(clock.frame_count, 11);
+  EXPECT_EQ(clock.duration_note,
+            "duration = 1.01 s is not a whole number of frames at 10 fps; the run ends at the next frame, t = 1.1 s");
+  EXPECT_TRUE(frames::plan_frames(2.0, 25, 1e-3).duration_note.empty()) << "50 whole frames";
+  EXPECT_TRUE(frames::plan_frames(0.1, 30, 1e-3).duration_note.empty()) << "3 frames up to round-off";
+}
 
 // xpbd: dt = (1/fps) / substeps plans exactly `substeps` steps per frame, with no rounding note.
 TEST(FrameClock, SubstepDtGivesThatManyStepsPerFrame) {

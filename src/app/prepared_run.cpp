@@ -74,6 +74,7 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
   const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, step.dt_s, scene.source.string());
   const bool adaptive = world.adaptive();  // rk45 chooses its own steps
   if (!clock.dt_note.empty() && !adaptive && step.dt_requested()) notes.push_back(clock.dt_note);
+  if (!clock.duration_note.empty()) notes.push_back(clock.duration_note);
   for (const std::string& note : notes) std::cerr << "note: " << note << "\n";
   return PreparedRun{std::move(scene), clock, std::move(world)};
 }

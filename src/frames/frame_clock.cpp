@@ -40,6 +40,15 @@ FrameClock plan_frames(double duration_s, int fps, double requested_dt_s, const 
     throw softbody::InputError(prefix + text);
   }
   clock.frame_count = static_cast<int>(frames);
+  const double end_s = clock.frame_count * clock.frame_interval_s;
+  if (end_s - duration_s > kRelativeSlack * end_s) {
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "duration = %.6g s is not a whole number of frames at %d fps; the run ends at the next frame, t = "
+                  "%.6g s",
+                  duration_s, fps, end_s);
+    clock.duration_note = note;
+  }
   return clock;
 }
 

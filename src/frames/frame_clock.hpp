@@ -11,6 +11,8 @@ struct FrameClock {
   int frame_count = 0;  // frames after frame 0 (the initial state): ceil(duration · fps)
   double frame_interval_s = 0.0;
   std::string dt_note;  // non-empty when the requested dt was rounded down, saying so
+  // Non-empty when the duration is not a whole number of frame intervals, saying that the run ends at the next frame.
+  std::string duration_note;
 };
 
 // Runs beyond these are refused before they start (InputError naming the key and the limit): a frame
