@@ -83,6 +83,13 @@ INSTANTIATE_TEST_SUITE_P(
         CliCase{"scenes/bounce.json --set bodies.0=3", "bodies.0: expected an object"}),
     [](const auto& param) { return "case" + std::to_string(param.index); });
 
+// Runs `simulate ARGUMENTS`, expects it to diverge (exit 3) and returns its output.
+std::string diverged_output(const std::string& arguments) {
+  const auto result = run_softbody("simulate " + arguments);
+  EXPECT_EQ(result.exit_status, 3) << result.output;
+  return result.output;
+}
+
 // Runs `simulate ARGUMENTS --csv ...`, expects it to succeed with an output that `pattern` matches; returns the
 // pattern's groups (empty where it did not match).
 std::vector<std::string> simulate_and_match(const std::string& arguments, const std::string& pattern) {
@@ -133,6 +140,12 @@ TEST(Cli, SubstepsLongerThanTheContactTravelLimitAreNoted) {
       "note: solver.substeps = 1: steps of 0.03333 s, longer than the contact travel limit 0.0005006 s (a tenth of the "
       "shortest edge per step) that a contact after the step needs",
       "longer than the contact travel limit");
+  // Run on, it diverges, and the message names the limit instead of only "estimated stable: any dt for vbd".
+  EXPECT_NE(diverged_output("scenes/colliders.json --set solver.substeps=1 --set duration=2 --csv "
+                            "build/cli_test_noted.csv")
+                .find("estimated stable: any dt for vbd; its given substeps are longer than the contact travel limit "
+                      "dt <= 0.000501 s that a contact after the step needs"),
+            std::string::npos);
 }
 
 // A solver key the scene's integrator does not read is said as a note (it was silently ignored): not an error, as a
@@ -275,11 +288,9 @@ TEST(Cli, AutoSubstepsWithoutContactNameNoTravelLimit) {
 
 TEST(Cli, DivergedRunExitsThreeAndKeepsFramesBefore) {
   // Far beyond forward Euler's stable step for this stiffness: blows up within a few frames.
-  const auto result = run_softbody(
-      "simulate scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --csv "
-      "build/cli_test_diverged.csv");
-  EXPECT_EQ(result.exit_status, 3) << result.output;
-  EXPECT_NE(result.output.find("diverged"), std::string::npos) << result.output;
+  const std::string output = diverged_output(
+      "scenes/bounce.json --set bodies.0.stiffness=1e6 --set solver.dt=1e-3 --csv build/cli_test_diverged.csv");
+  EXPECT_NE(output.find("diverged"), std::string::npos) << output;
   std::ifstream csv(std::string(SOFTBODY_SOURCE_DIR) + "/build/cli_test_diverged.csv");
   ASSERT_TRUE(csv.good());
   std::string line, last;

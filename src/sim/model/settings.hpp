@@ -161,6 +161,9 @@ struct Solver {
   // sim::auto_substeps states. Not the guard's retry substeps (State::retry_substeps).
   int substeps = 0;
   bool substeps_auto = false;
+  // Set by sim::resolve_step where substeps given as a number are longer than the contact travel limit that a contact
+  // after the step needs (sim::travel_substeps): that limit [s], for the divergence message; 0 otherwise.
+  double travel_dt_exceeded_s = 0.0;
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
   double impact_phase = kVbdImpactPhase;  // vbd: its steps around an impact on a smooth contact keep ω h ≤ this
   int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none

@@ -29,6 +29,14 @@ std::string describe(const DivergenceReport& report) {
   if (report.finding.vertex >= 0) message << ", vertex " << report.finding.vertex;
   message << " " << report.finding.what << "; estimated stable: " << stable_dt_words(report.stable_dt_s) << " for "
           << to_string(report.integrator);
+  if (report.travel_dt_exceeded_s > 0.0) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "; its given substeps are longer than the contact travel limit dt <= %.3g s that a contact after "
+                  "the step needs (solver.substeps \"auto\" keeps it)",
+                  report.travel_dt_exceeded_s);
+    message << text;
+  }
   if (integrator_info(report.integrator).explicit_springs) {
     message << "; vbd takes every force implicitly, at any dt";
   }

@@ -18,6 +18,8 @@ struct DivergenceReport {
   // The stable-dt estimate at the model's initial state (sim/step/stability.hpp) for `integrator` (0: no stable dt;
   // infinite: any dt).
   double stable_dt_s = 0.0;
+  // The contact travel limit that the run's given substeps exceed (Solver::travel_dt_exceeded_s) [s]; 0: none.
+  double travel_dt_exceeded_s = 0.0;
 };
 
 // "diverged at t = 0.0954 s (step 478, dt = 0.0002 s, euler): body 0, vertex 637 runaway speed: ...;

@@ -166,7 +166,8 @@ StabilityEstimate estimate_at_start(const Model& model) {
                                  double dt) {
   const StabilityEstimate estimate = estimate_at_start(model);
   const IntegratorKind integrator = model.solver.integrator;
-  throw DivergedError(DivergenceReport{found, time_s, step, dt, integrator, estimate.stable_dt(integrator)});
+  throw DivergedError(DivergenceReport{found, time_s, step, dt, integrator, estimate.stable_dt(integrator),
+                                       model.solver.travel_dt_exceeded_s});
 }
 
 // Keeps the state before a step that may be rejected, with what the step needs from it already evaluated.

@@ -28,6 +28,7 @@ StepPlan resolve_step(Model& model, State& state, double frame_interval_s, const
     if (plan.substeps < needed) {
       plan.travel_substeps = needed;
       plan.travel_dt_s = estimate.travel_dt_s;
+      solver.travel_dt_exceeded_s = estimate.travel_dt_s;
     }
   }
   if (plan.substeps > 0) {
