@@ -469,27 +469,37 @@ bool contact_after_step(const Model& model) {
   return projected || (searches_body_contact(model.bodies) && model.body_contact.contact == BodyContactModel::Impulse);
 }
 
-int travel_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
-                    double frame_interval_s) {
-  // vbd's smooth contacts are inside its energy and its steps shrink around their impacts: only a projection after
-  // the step holds it to the travel limit.
-  if (integrator == IntegratorKind::Vbd && !contact_after_step(model)) return 1;
-  const double h = std::min(frame_interval_s, estimate.travel_dt_s);
+namespace {
+
+// The fewest substeps per frame interval whose step is at most h, within 1..kXpbdMostAutoSubsteps.
+int substeps_of_at_most(double frame_interval_s, double h) {
   return static_cast<int>(
       std::clamp(std::ceil(frame_interval_s / h * (1.0 - 1e-9)), 1.0, double{kXpbdMostAutoSubsteps}));
 }
 
+// vbd's smooth contacts are inside its energy and its steps shrink around their impacts: only a projection after the
+// step holds it to the travel limit.
+bool travel_binds(IntegratorKind integrator, const Model& model) {
+  return integrator != IntegratorKind::Vbd || contact_after_step(model);
+}
+
+}  // namespace
+
+int travel_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
+                    double frame_interval_s) {
+  if (!travel_binds(integrator, model)) return 1;
+  return substeps_of_at_most(frame_interval_s, std::min(frame_interval_s, estimate.travel_dt_s));
+}
+
 int auto_substeps(IntegratorKind integrator, const Model& model, const StabilityEstimate& estimate,
                   double frame_interval_s) {
-  double h = std::min(frame_interval_s, estimate.travel_dt_s);
-  if (integrator == IntegratorKind::Vbd && !contact_after_step(model))
-    h = std::min(frame_interval_s, kVbdLongestAutoStep);
+  double h = travel_binds(integrator, model) ? std::min(frame_interval_s, estimate.travel_dt_s)
+                                             : std::min(frame_interval_s, kVbdLongestAutoStep);
   const bool xpbd = integrator == IntegratorKind::Xpbd;
   for (std::size_t b = 0; xpbd && b < estimate.bodies.size() && b < model.bodies.size(); ++b) {
     h = std::min(h, xpbd_carried_dt(estimate.bodies[b].omega_max()));
   }
-  const double substeps = std::ceil(frame_interval_s / h * (1.0 - 1e-9));
-  return static_cast<int>(std::clamp(substeps, 1.0, double{kXpbdMostAutoSubsteps}));
+  return substeps_of_at_most(frame_interval_s, h);
 }
 
 }  // namespace sim
