@@ -120,6 +120,18 @@ TEST(Cli, SimulateCountsVbdsOwnSteps) {
   EXPECT_NE(breathing.output.find("15 steps of 0.03333 s (vbd), "), std::string::npos) << breathing.output;
 }
 
+// With "iterations": "converge" the summary gives the sweeps per step the run took: on the bounce's smooth flight and
+// impact of icosphere:3 fewer than the default 4 (2.59 on this machine), never fewer than 2.
+TEST(Cli, SimulateCountsVbdsSweepsUntilConverged) {
+  const auto sweeps = simulate_and_match(
+      "scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=converge --set duration=1.2",
+      R"(36 steps of 0.03333 s \(vbd; \d+ of its own: shorter at its start and around impacts; ([0-9.]+) sweeps per )"
+      R"(step \(converge\)\))");
+  ASSERT_EQ(sweeps.size(), 1u);
+  EXPECT_GE(std::stod(sweeps[0]), 2.0);
+  EXPECT_LT(std::stod(sweeps[0]), 4.0);
+}
+
 // Runs `simulate` with `changed` and with `shipped` (the same scene as it ships): the first run's output holds `note`,
 // the second's holds no `mark` (the note's wording).
 void expect_noted_only_when_changed(const std::string& changed, const std::string& shipped, const std::string& note,
@@ -241,13 +253,25 @@ TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   ASSERT_NE(line, std::string::npos) << result.output;
   const std::string text = result.output.substr(line + 1, result.output.find('\n', line + 1) - line - 1);
   EXPECT_NE(text.find("no limit"), std::string::npos) << text;
-  EXPECT_NE(text.find("1 steps"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 step "), std::string::npos) << text;
   EXPECT_NE(text.find("about 0.0119 s in flight"), std::string::npos) << text;
   EXPECT_NE(text.find("impacts take steps of 0.52 ms while they last, about 0.0764 s per 0.1 s of impact"),
             std::string::npos)
       << text;
   EXPECT_EQ(result.output.find("damp body"), std::string::npos) << "the bounce's dampers take its breathing out";
   EXPECT_EQ(result.output.find("starts at its full step"), std::string::npos) << "so its start follows the first swing";
+}
+
+// With "iterations": "converge" the sweeps per step range from 2 to 32, and so does the price: 30 x 2 x 642 x 155 ns =
+// 0.00597 s to 30 x 32 x 642 x 155 ns = 0.0955 s in flight.
+TEST(Cli, InfoPricesVbdsSweepsUntilConvergedAsARange) {
+  const auto result =
+      run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=converge");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("about 0.00597 to 0.0955 s in flight (30 steps/s x 2 to 32 sweeps (converge) x 642 "
+                               "vertices x 155 ns)"),
+            std::string::npos)
+      << result.output;
 }
 
 // scenes/breathing.json's dampers (c = 0.01) leave its breathing ringing for seconds (ζ = 0.0015 at 148 rad/s), which

@@ -193,23 +193,41 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
                std::size_t vertices, const std::vector<sim::BreathingMode>& breathing) {
   const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);
   const double dt = frame_interval_s / steps;  // its step in flight [s]
-  const int sweeps = model.solver.iterations;
+  // Its sweeps per step: solver.iterations, or with "converge" a range (each step sweeps until it barely moves).
+  const bool until_converged = model.solver.iterations_converge;
+  const int least = until_converged ? sim::VertexBlockDescent::kLeastConvergeSweeps : model.solver.iterations;
+  const int most = until_converged ? sim::VertexBlockDescent::kMostConvergeSweeps : model.solver.iterations;
   // CPU s of `steps_per_s` steps per simulated second, each `sweeps` sweeps over the vertices.
-  const auto cost_of = [&](double steps_per_s) {
+  const auto cost_of = [&](double steps_per_s, int sweeps) {
     return steps_per_s * sweeps * static_cast<double>(vertices) * kVbdSweepNsPerVertex * 1e-9;
   };
-  char per_frame[32], limit[32] = "no limit";
-  std::snprintf(per_frame, sizeof per_frame, "%d steps", steps);
+  // "0.05 s" for a count, "0.05 to 0.8 s" for converge's range.
+  const auto costs_of = [&](double steps_per_s) {
+    char text[48];
+    if (least == most) {
+      std::snprintf(text, sizeof text, "%.3g s", cost_of(steps_per_s, least));
+    } else {
+      std::snprintf(text, sizeof text, "%.3g to %.3g s", cost_of(steps_per_s, least), cost_of(steps_per_s, most));
+    }
+    return std::string(text);
+  };
+  char per_frame[32], limit[32] = "no limit", sweeps[48];
+  std::snprintf(per_frame, sizeof per_frame, "%d step%s", steps, steps == 1 ? "" : "s");
+  if (least == most) {
+    std::snprintf(sweeps, sizeof sweeps, "%d sweeps", least);
+  } else {
+    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (converge)", least, most);
+  }
   // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
   if (model.floor && model.floor->contact != sim::FloorContact::Smooth) {
     std::snprintf(limit, sizeof limit, "%.4g", estimate.travel_dt_s);
   }
-  std::printf("  %-10s  %-12s %-12.4g %-22s about %.3g s in flight (%.0f steps/s x %d sweeps x %zu vertices x %.0f ns)",
-              "vbd", limit, dt, per_frame, cost_of(1.0 / dt), 1.0 / dt, sweeps, vertices, kVbdSweepNsPerVertex);
+  std::printf("  %-10s  %-12s %-12.4g %-22s about %s in flight (%.0f steps/s x %s x %zu vertices x %.0f ns)", "vbd",
+              limit, dt, per_frame, costs_of(1.0 / dt).c_str(), 1.0 / dt, sweeps, vertices, kVbdSweepNsPerVertex);
   if (const double omega = stiffest_smooth_contact(model); omega > 0.0) {
     const double impact_h = std::ldexp(dt, -sim::vbd_impact_level(dt, omega, model.solver.impact_phase));
-    std::printf("; impacts take steps of %.2g ms while they last, about %.3g s per %.1f s of impact", 1e3 * impact_h,
-                kImpactSpan * cost_of(1.0 / impact_h), kImpactSpan);
+    std::printf("; impacts take steps of %.2g ms while they last, about %s per %.1f s of impact", 1e3 * impact_h,
+                costs_of(kImpactSpan / impact_h).c_str(), kImpactSpan);
   }
   std::printf("\n");
   print_vbd_coarse_level(model);

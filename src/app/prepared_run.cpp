@@ -81,11 +81,10 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
 
 namespace {
 
-// The steps vbd took within the driver's (sim/integrators/vertex_block_descent.hpp: its start and the impacts take
-// shorter ones); 0 for the other integrators.
-long long vbd_own_steps(const PreparedRun& run) {
+// vbd's statistics (sim/integrators/vertex_block_descent.hpp); nullptr for the other integrators.
+const sim::VertexBlockDescent::Statistics* vbd_statistics(const PreparedRun& run) {
   const auto* vbd = dynamic_cast<const sim::VertexBlockDescent*>(run.world.workspace.integrator.get());
-  return vbd ? vbd->statistics().steps : 0;
+  return vbd ? &vbd->statistics() : nullptr;
 }
 
 }  // namespace
@@ -93,15 +92,22 @@ long long vbd_own_steps(const PreparedRun& run) {
 void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written,
                        std::FILE* out) {
   const sim::Solver& solver = run.world.model.solver;
-  char steps[160];
+  char steps[256];
   if (solver.integrator == sim::IntegratorKind::Rk45) {
     std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,
                   stats.rejected_steps, solver.tolerance);
-  } else if (const long long own = vbd_own_steps(run); own > stats.steps) {
-    std::snprintf(steps, sizeof steps,
-                  "%lld steps of %.4g s (vbd; %lld of its own: shorter at its start and around "
-                  "impacts)",
-                  stats.steps, run.clock.dt_s, own);
+  } else if (const auto* vbd = vbd_statistics(run); vbd && (vbd->steps > stats.steps || solver.iterations_converge)) {
+    // Its own steps (shorter at its start and around impacts) and, with "iterations": "converge", its sweeps per step.
+    char own[96] = "", sweeps[64] = "";
+    if (vbd->steps > stats.steps) {
+      std::snprintf(own, sizeof own, "; %lld of its own: shorter at its start and around impacts", vbd->steps);
+    }
+    if (solver.iterations_converge && vbd->steps > 0) {
+      const double per_step = static_cast<double>(vbd->sweeps) /
+                              (static_cast<double>(vbd->steps) * static_cast<double>(run.world.model.bodies.size()));
+      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (converge)", per_step);
+    }
+    std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (vbd%s%s)", stats.steps, run.clock.dt_s, own, sweeps);
   } else {
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (%s)", stats.steps, run.clock.dt_s,
                   sim::to_string(solver.integrator).c_str());

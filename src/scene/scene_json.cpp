@@ -274,7 +274,15 @@ sim::Solver read_solver(const ObjectReader& top, std::vector<std::string>& notes
   } else {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
-  solver.iterations = r.integer("iterations");
+  // vbd's sweeps per step: a whole number >= 1 or "converge" (sim::VertexBlockDescent::kConvergeSweeps).
+  if (r.has("iterations") && r.at("iterations").is_string()) {
+    if (r.at("iterations").get<std::string>() != "converge") {
+      r.fail(r.child("iterations"), "expected a whole number >= 1 or \"converge\"", &r.at("iterations"));
+    }
+    solver.iterations_converge = true;
+  } else {
+    solver.iterations = r.integer("iterations");
+  }
   solver.impact_phase = r.number("impact_phase");
   // vbd's coarse level: cells per body, or "auto" (the default; sim::auto_coarse_cells).
   if (!r.has("coarse_space") || r.at("coarse_space").is_string()) {

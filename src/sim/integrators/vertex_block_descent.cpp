@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/profile.hpp"
 #include "sim/contact/collider_shape.hpp"
@@ -188,9 +189,40 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
   }
 }
 
+bool VertexBlockDescent::sweep_was_still(std::span<const Body> bodies, const std::vector<Vec3>& all_x) const {
+  for (const Body& body : bodies) {
+    const double allowed = kConvergedMove * body.rest.mean_edge_m;  // [m]
+    const auto x = Model::of(body, all_x), before = Model::of(body, sweep_start_);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if ((x[i] - before[i]).squaredNorm() > allowed * allowed) return false;
+    }
+  }
+  return true;
+}
+
+void VertexBlockDescent::sweep_body_to_the_end(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x) {
+  if (sweeps_ != kConvergeSweeps) {
+    sweep_body(model, b, h_hat, x, 0, sweeps_);
+    statistics_.sweeps += sweeps_;
+    return;
+  }
+  const Body& body = model.bodies[b];
+  const std::span<const Body> just_this(&body, 1);
+  sweep_start_.resize(x.size());
+  for (int sweep = 0; sweep < kMostConvergeSweeps; ++sweep) {
+    const auto now = Model::of(body, std::as_const(x));
+    std::copy(now.begin(), now.end(), Model::of(body, sweep_start_).begin());
+    sweep_body(model, b, h_hat, x, sweep, 1);
+    ++statistics_.sweeps;
+    if (sweep + 1 >= kLeastConvergeSweeps && sweep_was_still(just_this, x)) return;
+  }
+}
+
 void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x) {
   joint_affine_ = coarse_ && model.bodies.size() > 1 && model.bodies.size() <= kMostJointBodies;
-  for (int sweep = 0; sweep < sweeps_; ++sweep) {
+  const bool until_still = sweeps_ == kConvergeSweeps;
+  for (int sweep = 0; sweep < (until_still ? kMostConvergeSweeps : sweeps_); ++sweep) {
+    if (until_still) sweep_start_ = x;
     if (sweep == 0) {
       contacts_.lag(model, x, base_, h_hat, start_x_);
     } else if (kLagEverySweep) {
@@ -204,6 +236,8 @@ void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std:
     // The sweeps visit the vertices one by one: the colouring does not separate the vertices of a contact, so a loop
     // that moves a colour's vertices at once must take those in contacts one by one (vertex_contacts.hpp).
     for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, x, sweep, 1);
+    statistics_.sweeps += static_cast<long long>(model.bodies.size());
+    if (until_still && sweep + 1 >= kLeastConvergeSweeps && sweep_was_still(model.bodies, x)) return;
   }
 }
 
@@ -407,7 +441,7 @@ void VertexBlockDescent::take_step(const Model& model, State& state, double h) {
   if (contacts_.active()) {
     sweep_in_contact(model, h_hat, state.x);
   } else {
-    for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body(model, b, h_hat, state.x, 0, sweeps_);
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) sweep_body_to_the_end(model, b, h_hat, state.x);
   }
   chunked_for(runner_, n, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) state.v[i] = (state.x[i] - base_[i]) / h_hat;  // v' = (x' − x̃)/ĥ

@@ -32,7 +32,8 @@ int vbd_impact_level(double dt, double omega, double impact_phase);
 //   E(x) = Σ_i m_i |x_i − y_i|² / (2ĥ²) + Σ_e ½ k (|d_e| − L0)² − nRT ln V + D(x) + floor terms        [J]
 // with the dampers' and the smooth floor's dissipation D taken with their directions and weights lagged at the
 // current iterate (so that the fixed point is the scheme's, exactly; Li et al. 2020 lag friction the same way).
-// Gauss–Seidel over the vertices (solver.iterations sweeps, colour by colour; sim/integrators/vertex_blocks.hpp):
+// Gauss–Seidel over the vertices (solver.iterations sweeps, or with "converge" until a sweep barely moves a vertex;
+// colour by colour, sim/integrators/vertex_blocks.hpp):
 // vertex i moves by one Newton step on E as a function of x_i alone, H_i Δ = −∇_i E, with the 3×3 block
 //   H_i = m/ĥ² I + Σ_e [k (n̂n̂ᵀ + max(0, 1 − L0/l)(I − n̂n̂ᵀ)) + (c/ĥ) n̂n̂ᵀ] + nRT g_i g_iᵀ / V² + floor terms,
 // g_i = ∂V/∂x_i = Σ_{f ∋ i} (x_b − x_i) × (x_c − x_i) / 6. V is affine in x_i, so the gas term is its exact local
@@ -63,12 +64,19 @@ class VertexBlockDescent final : public Integrator {
     long long bdf2_steps = 0;          // the others were backward Euler
     long long colours_at_once = 0;     // colours whose vertices moved at once (move_colour_at_once)
     long long colours_one_by_one = 0;  // of those, colours its safeguard refused: then visited a vertex at a time
+    long long sweeps = 0;              // sweeps over one body each (a step of two bodies and 4 sweeps counts 8)
   };
 
   // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
   // (sim/integrators/coarse_space.hpp), 0 for none, kAutoAggregates for auto_coarse_cells by each body's size.
   static constexpr int kAutoAggregates = -1;
   // `impact_phase`: around an impact on a smooth contact the steps shrink to ω h ≤ it (solver.impact_phase).
+  // `sweeps`: per step (solver.iterations), or kConvergeSweeps: each step sweeps until a sweep moves no vertex by more
+  // than kConvergedMove of its body's mean edge, at least kLeastConvergeSweeps and at most kMostConvergeSweeps times.
+  static constexpr int kConvergeSweeps = 0;
+  static constexpr double kConvergedMove = 3e-4;
+  static constexpr int kLeastConvergeSweeps = 2;
+  static constexpr int kMostConvergeSweeps = 32;
   explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0, double impact_phase = kVbdImpactPhase)
       : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates), impact_phase_(impact_phase) {}
   void set_up(const Model& model, PartRunner& runner) override;
@@ -101,8 +109,15 @@ class VertexBlockDescent final : public Integrator {
   // Sweeps first_sweep .. first_sweep + count − 1 of a step over body b's vertices (all solver.iterations of them,
   // from x = y, without contacts between bodies).
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count);
-  // solver.iterations sweeps over every body in turn, the smooth body contacts lagged before each.
+  // The sweeps of a step over body b alone (without contacts between bodies): solver.iterations of them, or with
+  // kConvergeSweeps until one moves no vertex by more than the tolerance.
+  void sweep_body_to_the_end(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
+  // solver.iterations sweeps (or with kConvergeSweeps, until one moves no vertex of any body by more than the
+  // tolerance) over every body in turn, the smooth body contacts lagged before each.
   void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
+  // Whether the sweep that started at sweep_start_ (every vertex) moved no vertex of `bodies` by more than
+  // kConvergedMove of its body's mean edge.
+  bool sweep_was_still(std::span<const Body> bodies, const std::vector<Vec3>& x) const;
   // One sweep over body s's vertices, colour by colour: each colour at once on the threads (move_colour_at_once)
   // unless body contacts couple its vertices or the safeguard refuses, then one vertex at a time.
   void sweep_colours(const BodySolve& s, const ThreadShares& shares, const LaneGroups& groups, std::span<Vec3> x,
@@ -137,6 +152,7 @@ class VertexBlockDescent final : public Integrator {
   ColourScratch colour_scratch_;         // scratch of the colours moved at once
   PartRunner* runner_ = nullptr;         // the workspace's threads, set by step()
   std::vector<double> volume_sums_;      // scratch: the volume's partial sums
+  std::vector<Vec3> sweep_start_;        // scratch: x before a sweep, where the sweeps stop by themselves
   Statistics statistics_;
 };
 
