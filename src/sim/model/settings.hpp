@@ -165,8 +165,8 @@ struct Solver {
   // after the step needs (sim::travel_substeps): that limit [s], for the divergence message; 0 otherwise.
   double travel_dt_exceeded_s = 0.0;
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
-  bool iterations_converge =
-      false;  // "iterations": "converge": vbd sweeps each step until a sweep barely moves a vertex
+  // "iterations": "converge": vbd sweeps each step until a sweep barely moves a vertex (iterations is then unused).
+  bool iterations_converge = false;
   double impact_phase = kVbdImpactPhase;  // vbd: its steps around an impact on a smooth contact keep ω h ≤ this
   int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
   bool coarse_space_auto = true;  // "coarse_space": "auto" (the default): each body's cells by its size
