@@ -7,13 +7,15 @@
 # (solver.impact_phase 0.5) and a quarter as long (0.125). Each line: user CPU s of one thread,
 # vbd's own steps and its sweeps per step (from the run's summary), the worst volume error and the worst centre-of-mass
 # distance (bench/csv_errors.py).
-cd "$(dirname "$0")/.."
-B=build/softbody
-out=${OUT:-out/vbd_converge}
+# The bounce's references are bench/vbd_bounce_common.sh's (make_reference, in its $out: out/vbd_bounce or $OUT),
+# shared with bench/run_vbd_bounce.sh.
+source "$(dirname "$0")/vbd_bounce_common.sh"
+bounce=$out
+out=${CONVERGE_OUT:-out/vbd_converge}
 shapes=${SHAPES_OUT:-out/vbd_flight_shapes}
-bounce=${BOUNCE_OUT:-out/vbd_bounce}
-mkdir -p "$out" "$shapes" "$bounce"
-# run NAME REFERENCE SCENE args...: one vbd run, timed, and its errors.
+mkdir -p "$out" "$shapes"
+# run NAME REFERENCE SCENE args...: one vbd run, timed, and its errors (in place of vbd_bounce_common.sh's run, which
+# takes the bounce only).
 run() {
   local name=$1 ref=$2 scene=$3; shift 3
   local log=$out/$name.log
@@ -33,9 +35,8 @@ shape() { # name extra-args...
 }
 each_flight_shape shape
 for level in 3 4 5; do
-  ref=$bounce/ref${level}_1.2.csv
-  [ -f "$ref" ] || $B simulate scenes/bounce_smooth.json --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 \
-    --set solver.integrator=rk45 --set solver.tolerance=1e-8 --set solver.threads=1 --csv "$ref" > /dev/null 2>&1
+  out=$bounce make_reference $level 1.2  # a longer one made by run_vbd_bounce.sh serves as well
+  ref=$bounce/ref$level.csv
   for phase in 0.5 0.125; do
     for sweeps in 4 '"converge"'; do
       run "bounce${level}_${sweeps//\"/}_$phase" "$ref" scenes/bounce_smooth.json \
