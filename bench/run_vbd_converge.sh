@@ -1,7 +1,8 @@
 #!/bin/bash
-# Usage: bench/run_vbd_converge.sh (after scripts/build; about 5 min on 2 cores, 2 of them the level-5 reference
+# Usage: bench/run_vbd_converge.sh (after scripts/build; about 8 min on 2 cores, 2 of them the level-5 reference
 # where out/vbd_bounce has none). vbd's default 4 sweeps per step against "iterations": "converge" (each step sweeps until
-# a sweep moves no vertex by more than 3e-4 of its body's mean edge, 2 to 32 sweeps): the five bodies in flight of
+# a sweep moves no vertex by more than 3e-4 of its body's mean edge, 2 to 32 sweeps) and "auto" (those sweeps with the
+# move scaled by the step, and its steps halved where the volume's local error needs it): the five bodies in flight of
 # bench/flight_shapes_common.sh (1 s, against rk45 at 1e-8) and the smooth-floor bounce (scenes/bounce_smooth.json,
 # 0-1.2 s, the fall, the first impact and the rebound) at icosphere:3, :4 and :5, with the default impact steps
 # (solver.impact_phase 0.5) and a quarter as long (0.125). Each line: user CPU s of one thread,
@@ -21,14 +22,14 @@ run() {
   local log=$out/$name.log
   local t=$( { /usr/bin/time -f "%U" $B simulate "$scene" --set solver.threads=1 --set solver.integrator=\"vbd\" \
     "$@" --csv "$out/$name.csv" > "$log"; } 2>&1 | tail -1)
-  local steps=$(grep -oE "\(vbd[^,]*" "$log" | head -1)
+  local steps=$(sed -nE 's/.* steps of [0-9.e-]+ s (\(vbd.*\)), [0-9]+ vertices.*/\1/p' "$log" | head -1)
   echo "$name: cpu_s=$t $steps $(python3 bench/csv_errors.py "$ref" "$out/$name.csv" | cut -d: -f2)"
 }
 source bench/flight_shapes_common.sh
 shape() { # name extra-args...
   local name=$1; shift
   flight_reference "$name" "$@"
-  for sweeps in 4 '"converge"'; do
+  for sweeps in 4 '"converge"' '"auto"'; do
     run "${name}_${sweeps//\"/}" "$shapes/${name}_ref.csv" $S --set duration=1 --set solver.dt=\"auto\" \
       --set solver.substeps=1 --set solver.iterations=$sweeps "$@"
   done
@@ -38,7 +39,7 @@ for level in 3 4 5; do
   out=$bounce make_reference $level 1.2  # a longer one made by run_vbd_bounce.sh serves as well
   ref=$bounce/ref$level.csv
   for phase in 0.5 0.125; do
-    for sweeps in 4 '"converge"'; do
+    for sweeps in 4 '"converge"' '"auto"'; do
       run "bounce${level}_${sweeps//\"/}_$phase" "$ref" scenes/bounce_smooth.json \
         --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 --set solver.substeps=\"auto\" \
         --set solver.iterations=$sweeps --set solver.impact_phase=$phase

@@ -121,15 +121,33 @@ TEST(Cli, SimulateCountsVbdsOwnSteps) {
 }
 
 // With "iterations": "converge" the summary gives the sweeps per step the run took: on the bounce's smooth flight and
-// impact of icosphere:3 fewer than the default 4 (2.59 on this machine), never fewer than 2.
+// impact of icosphere:3 fewer than the default 4 (2.59 on this machine), never fewer than 2. With "auto" it also says
+// that vbd's own steps follow the volume's error.
 TEST(Cli, SimulateCountsVbdsSweepsUntilConverged) {
-  const auto sweeps = simulate_and_match(
-      "scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=converge --set duration=1.2",
-      R"(36 steps of 0.03333 s \(vbd; \d+ of its own: shorter at its start and around impacts; ([0-9.]+) sweeps per )"
-      R"(step \(converge\)\))");
-  ASSERT_EQ(sweeps.size(), 1u);
-  EXPECT_GE(std::stod(sweeps[0]), 2.0);
-  EXPECT_LT(std::stod(sweeps[0]), 4.0);
+  struct Case {
+    const char* iterations;
+    const char* summary;  // the run's summary line, its sweeps per step captured
+    double fewer_than;    // sweeps per step
+  };
+  const Case cases[] = {
+      {"converge",
+       R"(36 steps of 0.03333 s \(vbd; \d+ of its own: shorter at its start and around impacts; ([0-9.]+) sweeps per )"
+       R"(step \(converge\)\))",
+       4.0},
+      {"auto",
+       R"(36 steps of 0.03333 s \(vbd; \d+ of its own: shorter at its start, around impacts and where the volume's )"
+       R"(error needed it; ([0-9.]+) sweeps per step \(auto\)\))",
+       32.5}};  // at most 32 per step
+  for (const Case& c : cases) {
+    const auto sweeps = simulate_and_match(
+        std::string(
+            "scenes/bounce_smooth.json --set solver.integrator=vbd --set duration=1.2 --set solver.iterations=") +
+            c.iterations,
+        c.summary);
+    ASSERT_EQ(sweeps.size(), 1u) << c.iterations;
+    EXPECT_GE(std::stod(sweeps[0]), 2.0) << c.iterations;
+    EXPECT_LT(std::stod(sweeps[0]), c.fewer_than) << c.iterations;
+  }
 }
 
 // Runs `simulate` with `changed` and with `shipped` (the same scene as it ships): the first run's output holds `note`,
@@ -260,6 +278,18 @@ TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
       << text;
   EXPECT_EQ(result.output.find("damp body"), std::string::npos) << "the bounce's dampers take its breathing out";
   EXPECT_EQ(result.output.find("starts at its full step"), std::string::npos) << "so its start follows the first swing";
+}
+
+// With "iterations": "auto" the same range, and the line after says that its steps shorten where the volume needs it.
+TEST(Cli, InfoSaysVbdsAutoHoldsItsOwnError) {
+  const auto result =
+      run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=auto");
+  ASSERT_EQ(result.exit_status, 0) << result.output;
+  EXPECT_NE(result.output.find("(30 steps/s x 2 to 32 sweeps (auto) x 642 vertices x 155 ns)"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("vbd holds its own error (\"iterations\": \"auto\"): its steps shorten further"),
+            std::string::npos)
+      << result.output;
 }
 
 // With "iterations": "converge" the sweeps per step range from 2 to 32, and so does the price: 30 x 2 x 642 x 155 ns =

@@ -90,7 +90,7 @@ TEST(Determinism, LargeBodyStateDoesNotDependOnThreadCount) {
 // vbd moves each colour's vertices at once on the threads and sums its coarse corrections in chunks fixed by the
 // body's size (sim/step/chunked_sum.hpp): a ball of 2562 vertices landing on the smooth floor (line searches, the
 // floor's terms in the affine system), with and without the coarse level, gives the same bits on one and two threads.
-sim::World landing_ball(int threads, int coarse_cells, bool until_converged = false) {
+sim::World landing_ball(int threads, int coarse_cells, bool until_converged = false, bool automatic = false) {
   scene::Scene s = scene::load_scene(std::string(SOFTBODY_SOURCE_DIR) + "/scenes/bounce_smooth.json");
   s.bodies.at(0).mesh = "icosphere:4";
   s.bodies.at(0).position_m = softbody::Vec3(0.0, 1.02, 0.0);
@@ -100,6 +100,7 @@ sim::World landing_ball(int threads, int coarse_cells, bool until_converged = fa
   s.solver.coarse_space_auto = false;
   s.solver.threads = threads;
   s.solver.iterations_converge = until_converged;
+  s.solver.iterations_auto = automatic;
   std::vector<std::string> notes;
   return setup::build_world(s, notes);
 }
@@ -115,12 +116,15 @@ TEST(Determinism, VbdStateDoesNotDependOnThreadCount) {
   }
 }
 
-// With "iterations": "converge" each step's sweeps stop where one barely moves a vertex: a test on the state, which is
-// the same bits on any thread count, so the sweeps and the state are too.
+// With "iterations": "converge" each step's sweeps stop where one barely moves a vertex, and with "auto" its steps also
+// halve by the volume's local error: tests on the state, which is the same bits on any thread count, so the sweeps,
+// the steps and the state are too.
 TEST(Determinism, VbdSweepsUntilConvergedDoNotDependOnThreadCount) {
-  sim::World one = landing_ball(1, 0, true), two = landing_ball(2, 0, true);
-  testing_support::run_steps(one, 4, 1.0 / 30.0);
-  testing_support::run_steps(two, 4, 1.0 / 30.0);
-  EXPECT_LT(sim::diagnose(one.model, one.state, 0).min_y_m, 0.0);  // it reached the floor
-  EXPECT_EQ(state_hash(one.state), state_hash(two.state));
+  for (const bool automatic : {false, true}) {
+    sim::World one = landing_ball(1, 0, !automatic, automatic), two = landing_ball(2, 0, !automatic, automatic);
+    testing_support::run_steps(one, 4, 1.0 / 30.0);
+    testing_support::run_steps(two, 4, 1.0 / 30.0);
+    EXPECT_LT(sim::diagnose(one.model, one.state, 0).min_y_m, 0.0);  // it reached the floor
+    EXPECT_EQ(state_hash(one.state), state_hash(two.state)) << (automatic ? "auto" : "converge");
+  }
 }

@@ -172,4 +172,30 @@ TEST(Volume, AreaSumsAreSixTimesTheVolumeGradient) {
   EXPECT_LT(worst, 1e-14 * largest) << "largest |dV/dx| " << largest;
 }
 
+// dV/dt = Σ ∂V/∂x_i · v_i: against the volume gradient's sum, and against a central difference of V along v
+// (V is cubic in the positions, so the difference's error is (ε²/6) V‴ alone).
+TEST(Volume, RateIsTheGradientAlongTheVelocities) {
+  const mesh::TriMesh sphere = mesh::icosphere(3);
+  const std::vector<Vec3> x = deformed_sphere(sphere, 11);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> speed(-2.0, 2.0);
+  std::vector<Vec3> v;
+  for (std::size_t i = 0; i < x.size(); ++i) v.push_back(Vec3(speed(random), speed(random), speed(random)));
+  std::vector<Vec3> gradient;
+  sim::volume_gradient(sphere.triangles, x, gradient);
+  double along = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) along += gradient[i].dot(v[i]);
+  constexpr double kEps = 1e-5;  // [s]
+  std::vector<Vec3> ahead = x, behind = x;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    ahead[i] += kEps * v[i];
+    behind[i] -= kEps * v[i];
+  }
+  const double central =
+      (sim::enclosed_volume(sphere.triangles, ahead) - sim::enclosed_volume(sphere.triangles, behind)) / (2.0 * kEps);
+  const double rate = sim::volume_rate(sphere.triangles, x, v);
+  EXPECT_NEAR(rate, along, 1e-12 * std::abs(along));
+  EXPECT_NEAR(rate, central, 1e-7 * std::abs(central));
+}
+
 }  // namespace

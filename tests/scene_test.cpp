@@ -110,8 +110,9 @@ INSTANTIATE_TEST_SUITE_P(
                  "s.json: solver.substeps: expected an integer in 1..1000000, got number 0"},
         BadInput{R"({ "solver": { "substeps": "many" }, "bodies": [ { } ] })",
                  "s.json: solver.substeps: expected a whole number >= 1 or \"auto\", got string \"many\""},
-        BadInput{R"({ "solver": { "iterations": "many" }, "bodies": [ { } ] })",
-                 "s.json: solver.iterations: expected a whole number >= 1 or \"converge\", got string \"many\""},
+        BadInput{
+            R"({ "solver": { "iterations": "many" }, "bodies": [ { } ] })",
+            "s.json: solver.iterations: expected a whole number >= 1, \"converge\" or \"auto\", got string \"many\""},
         BadInput{R"({ "solver": { "iterations": 0 }, "bodies": [ { } ] })",
                  "s.json: solver.iterations: expected an integer in 1..10000, got number 0"},
         BadInput{R"({ "solver": { "coarse_space": "many" }, "bodies": [ { } ] })",
@@ -128,13 +129,17 @@ TEST(Scene, InvalidJsonNamesTheFile) {
 
 namespace {
 
-// vbd's sweeps: a number, or "converge" (the sweeps stop by themselves); the default 4.
-TEST(Scene, IterationsTakeANumberOrConverge) {
+// vbd's sweeps: a number, "converge" (the sweeps stop by themselves) or "auto" (vbd holds its error); the default 4.
+TEST(Scene, IterationsTakeANumberConvergeOrAuto) {
   EXPECT_EQ(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations, 4);
   EXPECT_FALSE(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations_converge);
   EXPECT_EQ(scene_from_text(R"({ "solver": { "iterations": 7 }, "bodies": [ { } ] })").solver.iterations, 7);
   EXPECT_TRUE(
       scene_from_text(R"({ "solver": { "iterations": "converge" }, "bodies": [ { } ] })").solver.iterations_converge);
+  const scene::Scene automatic = scene_from_text(R"({ "solver": { "iterations": "auto" }, "bodies": [ { } ] })");
+  EXPECT_TRUE(automatic.solver.iterations_auto);
+  EXPECT_FALSE(automatic.solver.iterations_converge);
+  EXPECT_FALSE(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations_auto);
 }
 
 // The smooth contact's keys are read and checked.

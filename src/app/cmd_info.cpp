@@ -193,8 +193,9 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
                std::size_t vertices, const std::vector<sim::BreathingMode>& breathing) {
   const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);
   const double dt = frame_interval_s / steps;  // its step in flight [s]
-  // Its sweeps per step: solver.iterations, or with "converge" a range (each step sweeps until it barely moves).
-  const bool until_converged = model.solver.iterations_converge;
+  // Its sweeps per step: solver.iterations, or with "converge" or "auto" a range (each step sweeps until it barely
+  // moves).
+  const bool until_converged = model.solver.iterations_converge || model.solver.iterations_auto;
   const int least = until_converged ? sim::VertexBlockDescent::kLeastConvergeSweeps : model.solver.iterations;
   const int most = until_converged ? sim::VertexBlockDescent::kMostConvergeSweeps : model.solver.iterations;
   // CPU s of `steps_per_s` steps per simulated second, each `sweeps` sweeps over the vertices.
@@ -216,7 +217,8 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   if (least == most) {
     std::snprintf(sweeps, sizeof sweeps, "%d sweeps", least);
   } else {
-    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (converge)", least, most);
+    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (%s)", least, most,
+                  model.solver.iterations_auto ? "auto" : "converge");
   }
   // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
   if (model.floor && model.floor->contact != sim::FloorContact::Smooth) {
@@ -230,6 +232,12 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
                 costs_of(kImpactSpan / impact_h).c_str(), kImpactSpan);
   }
   std::printf("\n");
+  if (model.solver.iterations_auto) {
+    std::printf(
+        "  vbd holds its own error (\"iterations\": \"auto\"): its steps shorten further wherever BDF2's local "
+        "error in the gas's volume would exceed %.3g %% of V per second, so these are its least costs\n",
+        100.0 * sim::VertexBlockDescent::kVolumeErrorRate);
+  }
   print_vbd_coarse_level(model);
   print_vbd_breathing(breathing, dt);
 }

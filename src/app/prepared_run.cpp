@@ -96,16 +96,21 @@ void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, co
   if (solver.integrator == sim::IntegratorKind::Rk45) {
     std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,
                   stats.rejected_steps, solver.tolerance);
-  } else if (const auto* vbd = vbd_statistics(run); vbd && (vbd->steps > stats.steps || solver.iterations_converge)) {
-    // Its own steps (shorter at its start and around impacts) and, with "iterations": "converge", its sweeps per step.
-    char own[96] = "", sweeps[64] = "";
+  } else if (const auto* vbd = vbd_statistics(run);
+             vbd && (vbd->steps > stats.steps || solver.iterations_converge || solver.iterations_auto)) {
+    // Its own steps (shorter at its start and around impacts, with "iterations": "auto" also where the volume's error
+    // needed it) and, with "iterations": "converge" or "auto", its sweeps per step.
+    char own[128] = "", sweeps[64] = "";
     if (vbd->steps > stats.steps) {
-      std::snprintf(own, sizeof own, "; %lld of its own: shorter at its start and around impacts", vbd->steps);
+      std::snprintf(
+          own, sizeof own, "; %lld of its own: shorter at its start%s", vbd->steps,
+          solver.iterations_auto ? ", around impacts and where the volume's error needed it" : " and around impacts");
     }
-    if (solver.iterations_converge && vbd->steps > 0) {
+    if ((solver.iterations_converge || solver.iterations_auto) && vbd->steps > 0) {
       const double per_step = static_cast<double>(vbd->sweeps) /
                               (static_cast<double>(vbd->steps) * static_cast<double>(run.world.model.bodies.size()));
-      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (converge)", per_step);
+      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (%s)", per_step,
+                    solver.iterations_auto ? "auto" : "converge");
     }
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (vbd%s%s)", stats.steps, run.clock.dt_s, own, sweeps);
   } else {

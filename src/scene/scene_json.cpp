@@ -274,12 +274,15 @@ sim::Solver read_solver(const ObjectReader& top, std::vector<std::string>& notes
   } else {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
-  // vbd's sweeps per step: a whole number >= 1 or "converge" (sim::VertexBlockDescent::kConvergeSweeps).
+  // vbd's sweeps per step: a whole number >= 1, "converge" (sim::VertexBlockDescent::kConvergeSweeps) or "auto"
+  // (sim::VertexBlockDescent::kAutoSweeps).
   if (r.has("iterations") && r.at("iterations").is_string()) {
-    if (r.at("iterations").get<std::string>() != "converge") {
-      r.fail(r.child("iterations"), "expected a whole number >= 1 or \"converge\"", &r.at("iterations"));
+    const std::string choice = r.at("iterations").get<std::string>();
+    if (choice != "converge" && choice != "auto") {
+      r.fail(r.child("iterations"), "expected a whole number >= 1, \"converge\" or \"auto\"", &r.at("iterations"));
     }
-    solver.iterations_converge = true;
+    solver.iterations_converge = choice == "converge";
+    solver.iterations_auto = choice == "auto";
   } else {
     solver.iterations = r.integer("iterations");
   }

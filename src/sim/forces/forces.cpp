@@ -93,6 +93,16 @@ double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x)
   return six_volume_of(faces, x, x[0], 0, faces.size()) / 6.0;
 }
 
+double volume_rate(std::span<const Triangle> faces, std::span<const Vec3> x, std::span<const Vec3> v) {
+  const Vec3 origin = x[0];
+  double six_rate = 0.0;
+  for (const Triangle& f : faces) {
+    const Vec3 a = x[f[0]] - origin, b = x[f[1]] - origin, c = x[f[2]] - origin;
+    six_rate += v[f[0]].dot(b.cross(c)) + v[f[1]].dot(c.cross(a)) + v[f[2]].dot(a.cross(b));
+  }
+  return six_rate / 6.0;
+}
+
 void volume_gradient(std::span<const Triangle> faces, std::span<const Vec3> x, std::vector<Vec3>& gradient) {
   gradient.assign(x.size(), Vec3::Zero());
   for (const Triangle& f : faces) {

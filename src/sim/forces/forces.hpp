@@ -40,6 +40,10 @@ double six_volume_of(std::span<const Triangle> faces, std::span<const Vec3> x, c
 // relative to the first vertex, which leaves V unchanged on a closed mesh but keeps round-off small.
 double enclosed_volume(std::span<const Triangle> faces, std::span<const Vec3> x);
 
+// dV/dt = Σ_i ∂V/∂x_i · v_i = Σ_f [v_a·(x_b × x_c) + v_b·(x_c × x_a) + v_c·(x_a × x_b)] / 6 [m³/s], positions
+// relative to the first vertex as enclosed_volume's.
+double volume_rate(std::span<const Triangle> faces, std::span<const Vec3> x, std::span<const Vec3> v);
+
 // ∂V/∂x_i = Σ_{f ∋ i} A_f n̂_f / 3 for every vertex [m²] (sized here): the reference form that intent and the
 // stability estimate use. The gas's face pass below computes the same gradient fused with the volume, as
 // area sums g_i = 6 ∂V/∂x_i (equal to round-off; tests/forces_test.cpp).

@@ -191,7 +191,8 @@ void VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double h_
 
 bool VertexBlockDescent::sweep_was_still(std::span<const Body> bodies, const std::vector<Vec3>& all_x) const {
   for (const Body& body : bodies) {
-    const double allowed = kConvergedMove * body.rest.mean_edge_m;  // [m]
+    const double step_scale = holds_its_error() ? std::min(1.0, step_s_ / kConvergedMoveStep) : 1.0;
+    const double allowed = kConvergedMove * step_scale * body.rest.mean_edge_m;  // [m]
     const auto x = Model::of(body, all_x), before = Model::of(body, sweep_start_);
     for (std::size_t i = 0; i < x.size(); ++i) {
       if ((x[i] - before[i]).squaredNorm() > allowed * allowed) return false;
@@ -201,7 +202,7 @@ bool VertexBlockDescent::sweep_was_still(std::span<const Body> bodies, const std
 }
 
 void VertexBlockDescent::sweep_body_to_the_end(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x) {
-  if (sweeps_ != kConvergeSweeps) {
+  if (!sweeps_until_still()) {
     sweep_body(model, b, h_hat, x, 0, sweeps_);
     statistics_.sweeps += sweeps_;
     return;
@@ -220,7 +221,7 @@ void VertexBlockDescent::sweep_body_to_the_end(const Model& model, std::size_t b
 
 void VertexBlockDescent::sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x) {
   joint_affine_ = coarse_ && model.bodies.size() > 1 && model.bodies.size() <= kMostJointBodies;
-  const bool until_still = sweeps_ == kConvergeSweeps;
+  const bool until_still = sweeps_until_still();
   for (int sweep = 0; sweep < (until_still ? kMostConvergeSweeps : sweeps_); ++sweep) {
     if (until_still) sweep_start_ = x;
     if (sweep == 0) {
@@ -326,6 +327,23 @@ bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State
   return true;
 }
 
+double VertexBlockDescent::volume_error_ratio(const Model& model, const State& state) const {
+  const IntegratorCarry& carry = state.carry;
+  double worst = 0.0;
+  for (const Body& body : model.bodies) {
+    if (body.params.pressure_J == 0.0) continue;
+    const std::span<const Triangle> faces = body.topology.faces;
+    const double rate = volume_rate(faces, Model::of(body, state.x), Model::of(body, state.v));  // V'_n [m³/s]
+    const double rate1 = volume_rate(faces, Model::of(body, carry.previous_x), Model::of(body, carry.previous_v));
+    const double rate2 = volume_rate(faces, Model::of(body, carry.older_x), Model::of(body, carry.older_v));
+    // BDF2's local error per step (2/9) h³ V‴ ≈ (2/9) h |V'_n − 2 V'_{n−1} + V'_{n−2}|, per unit time [m³/s]
+    const double error_rate = 2.0 / 9.0 * std::abs(rate - 2.0 * rate1 + rate2);
+    const double volume = enclosed_volume(faces, Model::of(body, state.x));
+    worst = std::max(worst, error_rate / (kVolumeErrorRate * volume));
+  }
+  return worst;
+}
+
 int vbd_impact_level(double dt, double omega, double impact_phase) {
   const double pieces = dt * omega / impact_phase;
   return std::min(static_cast<int>(std::ceil(std::log2(std::max(pieces, 1.0)))), kDeepestLevel);
@@ -337,11 +355,18 @@ int VertexBlockDescent::next_level(const Model& model, const State& state, doubl
   if (const double omega = impact_omega(model, state, h); omega > 0.0) {
     return std::max(vbd_impact_level(dt, omega, impact_phase_), level);
   }
+  const bool two_steps_of_h = same_step(carry.previous_dt_s, h) && same_step(carry.older_dt_s, h) &&
+                              has_history(carry.older_x, carry.older_v, carry.older_dt_s, state.x.size());
+  // Holding its own error: halve where the volume's local error is above its tolerance, and double only where twice
+  // the step's error (4× at second order) would be within half of it.
+  double volume_error = 0.0;
+  if (holds_its_error() && two_steps_of_h) {
+    volume_error = volume_error_ratio(model, state);
+    if (volume_error > 1.0) return std::min(level + 1, kDeepestLevel);
+  }
   // Double where the two steps before were both h (a BDF2 step of 2h from two steps back) and 2h ends on its grid.
   const long long double_ticks = 2LL << (kDeepestLevel - level);
-  const bool can_double = level > 0 && done % double_ticks == 0 && same_step(carry.previous_dt_s, h) &&
-                          same_step(carry.older_dt_s, h) &&
-                          has_history(carry.older_x, carry.older_v, carry.older_dt_s, state.x.size());
+  const bool can_double = level > 0 && done % double_ticks == 0 && two_steps_of_h && 4.0 * volume_error <= 0.5;
   if (can_double && smooth_enough_to_double(model, state, h) && impact_omega(model, state, 2.0 * h) == 0.0) {
     return level - 1;
   }
@@ -436,6 +461,7 @@ void VertexBlockDescent::take_step(const Model& model, State& state, double h) {
     ratio = 1.0;
     from_older = true;
   }
+  step_s_ = h;
   const double h_hat = set_targets(model, state, h, ratio, from_older ? carry.older_x : carry.previous_x,
                                    from_older ? carry.older_v : carry.previous_v);
   if (contacts_.active()) {

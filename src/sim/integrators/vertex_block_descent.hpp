@@ -32,7 +32,8 @@ int vbd_impact_level(double dt, double omega, double impact_phase);
 //   E(x) = Σ_i m_i |x_i − y_i|² / (2ĥ²) + Σ_e ½ k (|d_e| − L0)² − nRT ln V + D(x) + floor terms        [J]
 // with the dampers' and the smooth floor's dissipation D taken with their directions and weights lagged at the
 // current iterate (so that the fixed point is the scheme's, exactly; Li et al. 2020 lag friction the same way).
-// Gauss–Seidel over the vertices (solver.iterations sweeps, or with "converge" until a sweep barely moves a vertex;
+// Gauss–Seidel over the vertices (solver.iterations sweeps, or with "converge" or "auto" until a sweep barely moves a
+// vertex;
 // colour by colour, sim/integrators/vertex_blocks.hpp):
 // vertex i moves by one Newton step on E as a function of x_i alone, H_i Δ = −∇_i E, with the 3×3 block
 //   H_i = m/ĥ² I + Σ_e [k (n̂n̂ᵀ + max(0, 1 − L0/l)(I − n̂n̂ᵀ)) + (c/ĥ) n̂n̂ᵀ] + nRT g_i g_iᵀ / V² + floor terms,
@@ -77,6 +78,14 @@ class VertexBlockDescent final : public Integrator {
   static constexpr double kConvergedMove = 3e-4;
   static constexpr int kLeastConvergeSweeps = 2;
   static constexpr int kMostConvergeSweeps = 32;
+  // Or kAutoSweeps (solver.iterations "auto"): vbd holds its error to the tolerance integrators.md documents (the
+  // volume within 1 %) by itself. Its sweeps go on as kConvergeSweeps's, until a sweep moves no vertex by more than
+  // kConvergedMove × min(1, h / kConvergedMoveStep) of the mean edge (a step's error shrinks with h, and so must
+  // what its sweeps leave), and its steps halve where the gas's volume's local error per unit time exceeds
+  // kVolumeErrorRate × V (volume_error_ratio), as well as around impacts.
+  static constexpr int kAutoSweeps = -1;
+  static constexpr double kConvergedMoveStep = 1.0 / 30.0;  // [s]
+  static constexpr double kVolumeErrorRate = 5e-3;          // [1/s]
   explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0, double impact_phase = kVbdImpactPhase)
       : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates), impact_phase_(impact_phase) {}
   void set_up(const Model& model, PartRunner& runner) override;
@@ -89,11 +98,15 @@ class VertexBlockDescent final : public Integrator {
   // The keyframed smooth colliders at their pose at time t (the static ones stay as prepare_once made them).
   void pose_smooth_colliders(const Model& model, double time_s);
   // The level of the next step (its size is dt / 2^level) after `done` ticks of dt / 2^kDeepestLevel: deeper for
-  // an impact on a smooth contact, one up where the two steps before allow it (then BDF2 takes its history from two
-  // steps back, so every BDF2 step has a step ratio of at most 1).
+  // an impact on a smooth contact or, holding its own error, where the volume's is too large; one up where the two
+  // steps before allow it (then BDF2 takes its history from two steps back, so every BDF2 step has a step ratio of at
+  // most 1).
   int next_level(const Model& model, const State& state, double dt, int level, long long done) const;
   // Whether the last three states (steps of h) are smooth enough for a step of 2h (see kGrowthTolerance).
   bool smooth_enough_to_double(const Model& model, const State& state, double h) const;
+  // The largest over the bodies with gas of BDF2's local error in V per unit time, estimated from the last three
+  // states (steps of h), as a fraction of kVolumeErrorRate × V.
+  double volume_error_ratio(const Model& model, const State& state) const;
   // The ω [1/s] of the stiffest smooth contact (floor, collider or body) that a step of h from state meets as an impact
   // (see kImpactSpeed); 0 for none.
   double impact_omega(const Model& model, const State& state, double h) const;
@@ -116,7 +129,7 @@ class VertexBlockDescent final : public Integrator {
   // tolerance) over every body in turn, the smooth body contacts lagged before each.
   void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
   // Whether the sweep that started at sweep_start_ (every vertex) moved no vertex of `bodies` by more than
-  // kConvergedMove of its body's mean edge.
+  // kConvergedMove of its body's mean edge (with kAutoSweeps, scaled by the step).
   bool sweep_was_still(std::span<const Body> bodies, const std::vector<Vec3>& x) const;
   // One sweep over body s's vertices, colour by colour: each colour at once on the threads (move_colour_at_once)
   // unless body contacts couple its vertices or the safeguard refuses, then one vertex at a time.
@@ -125,8 +138,13 @@ class VertexBlockDescent final : public Integrator {
   // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
   void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
+  // Whether the sweeps go on until still (kConvergeSweeps, kAutoSweeps), and whether vbd holds its own error.
+  bool sweeps_until_still() const { return sweeps_ == kConvergeSweeps || sweeps_ == kAutoSweeps; }
+  bool holds_its_error() const { return sweeps_ == kAutoSweeps; }
+
   int sweeps_ = 1;
-  bool coarse_ = true;  // the affine coarse correction before each sweep
+  double step_s_ = 0.0;  // the h of the step being taken [s]
+  bool coarse_ = true;   // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;
   int aggregates_ = 0;                      // the coarse level's cells per body (0: none; kAutoAggregates)
   double impact_phase_ = kVbdImpactPhase;   // the impacts' steps keep ω h ≤ this

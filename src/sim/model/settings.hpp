@@ -167,6 +167,9 @@ struct Solver {
   int iterations = 4;  // vbd: Gauss–Seidel sweeps over the vertices per step (sim/integrators/vertex_block_descent.hpp)
   // "iterations": "converge": vbd sweeps each step until a sweep barely moves a vertex (iterations is then unused).
   bool iterations_converge = false;
+  // "iterations": "auto": vbd holds its error to a tolerance itself, its sweeps converged to its step and its steps
+  // shortened where the gas's volume needs it (sim::VertexBlockDescent::kAutoSweeps; iterations is then unused).
+  bool iterations_auto = false;
   double impact_phase = kVbdImpactPhase;  // vbd: its steps around an impact on a smooth contact keep ω h ≤ this
   int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
   bool coarse_space_auto = true;  // "coarse_space": "auto" (the default): each body's cells by its size
