@@ -10,10 +10,33 @@
 #include "scene/scene_json.hpp"
 #include "setup/build_world.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
+#include "sim/step/breathing_mode.hpp"
 #include "sim/step/stability.hpp"
 #include "sim/step/step_plan.hpp"
 
 namespace app {
+
+namespace {
+
+// With vbd's "iterations": "auto", a note per body whose lightly damped breathing vbd's steps of h damp out
+// (sim::damped_out_by_bdf2): "auto" holds the volume's local error, but not a swing its steps take out from the start.
+void add_vbd_auto_breathing_notes(const sim::World& world, double h, std::vector<std::string>& notes) {
+  const sim::Model& model = world.model;
+  if (model.solver.integrator != sim::IntegratorKind::Vbd || !model.solver.iterations_auto) return;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const sim::BreathingMode mode = sim::breathing_mode(model.bodies[b], model.of(model.bodies[b], world.state.x));
+    if (!sim::damped_out_by_bdf2(mode, h)) continue;
+    char note[320];
+    std::snprintf(note, sizeof note,
+                  "solver.iterations = auto: vbd's steps of %.4g s damp body %zu's breathing out (omega h = %.2g, the "
+                  "model's damping ratio %.2g), so \"auto\" holds the volume's error but not that swing; to follow "
+                  "it take rk4 or rk45 (softbody info)",
+                  h, b, mode.omega * h, mode.damping_ratio);
+    notes.emplace_back(note);
+  }
+}
+
+}  // namespace
 
 PreparedRun prepare_run(const SceneOptions& options, int threads_when_auto) {
   return prepare_run(scene::load_scene(options.scene_file, options.overrides), threads_when_auto);
@@ -71,6 +94,7 @@ PreparedRun prepare_run(scene::Scene scene, int threads_when_auto) {
                   step.dt_s, sim::kAutoDtSafety, sim::to_string(integrator).c_str(), step.stable_dt_s);
     notes.insert(notes.begin(), note);
   }
+  add_vbd_auto_breathing_notes(world, step.dt_s, notes);
   const frames::FrameClock clock = frames::plan_frames(scene.duration_s, scene.fps, step.dt_s, scene.source.string());
   const bool adaptive = world.adaptive();  // rk45 chooses its own steps
   if (!clock.dt_note.empty() && !adaptive && step.dt_requested()) notes.push_back(clock.dt_note);

@@ -202,7 +202,8 @@ struct Table {
             "step converges slowly (a body far from its shape, a fine mesh through an impact), fewer in a smooth "
             "flight. \"auto\": vbd holds the gas's volume within 1 % by itself: it sweeps as \"converge\" does with "
             "the move scaled by h / (1/30 s), and halves its steps where the volume's local error exceeds 0.5 % of V "
-            "per second (docs/physics/integrators.md).",
+            "per second; not a lightly damped breathing that its steps damp out, where a note says so "
+            "(docs/physics/integrators.md).",
             4),
         key("impact_phase", {number(above(0.0), at_most(4.0))}, "",
             "vbd: around an impact on a smooth contact (floor, collider or between bodies) its steps shrink to "
