@@ -4,8 +4,8 @@
 # a sweep moves no vertex by more than 3e-4 of its body's mean edge, 2 to 32 sweeps) and "auto" (those sweeps with the
 # move scaled by the step, and its steps halved where the volume's local error needs it): the five bodies in flight of
 # bench/flight_shapes_common.sh (1 s, against rk45 at 1e-8) and the smooth-floor bounce (scenes/bounce_smooth.json,
-# 0-1.2 s, the fall, the first impact and the rebound) at icosphere:3, :4 and :5, with the default impact steps
-# (solver.impact_phase 0.5) and a quarter as long (0.125). Each line: user CPU s of one thread,
+# 0-1.2 s, the fall, the first impact and the rebound) at icosphere:3, :4 and :5, with each control's own impact steps
+# (solver.impact_phase unset: 0.5, and 0.25 for "auto"), "auto" at 0.5, and all at 0.125. Each line: user CPU s of one thread,
 # vbd's own steps and its sweeps per step (from the run's summary), the worst volume error and the worst centre-of-mass
 # distance (bench/csv_errors.py).
 # The bounce's references are bench/vbd_bounce_common.sh's (make_reference, in its $out: out/vbd_bounce or $OUT),
@@ -38,11 +38,18 @@ each_flight_shape shape
 for level in 3 4 5; do
   out=$bounce make_reference $level 1.2  # a longer one made by run_vbd_bounce.sh serves as well
   ref=$bounce/ref$level.csv
-  for phase in 0.5 0.125; do
-    for sweeps in 4 '"converge"' '"auto"'; do
-      run "bounce${level}_${sweeps//\"/}_$phase" "$ref" scenes/bounce_smooth.json \
-        --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 --set solver.substeps=\"auto\" \
-        --set solver.iterations=$sweeps --set solver.impact_phase=$phase
-    done
+  bounce_run() { # name extra-args...
+    local name=$1; shift
+    run "$name" "$ref" scenes/bounce_smooth.json --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 \
+      --set solver.substeps=\"auto\" "$@"
+  }
+  # Each sweep control at its own impact steps (the default phase 0.5; "auto"'s 0.25), "auto" at 0.5 too, then all
+  # at 0.125.
+  for sweeps in 4 '"converge"' '"auto"'; do
+    bounce_run "bounce${level}_${sweeps//\"/}_default" --set solver.iterations=$sweeps
+  done
+  bounce_run "bounce${level}_auto_0.5" --set solver.iterations=\"auto\" --set solver.impact_phase=0.5
+  for sweeps in 4 '"converge"' '"auto"'; do
+    bounce_run "bounce${level}_${sweeps//\"/}_0.125" --set solver.iterations=$sweeps --set solver.impact_phase=0.125
   done
 done

@@ -299,16 +299,30 @@ TEST(Cli, SimulateSaysWhereVbdsAutoDampsABreathingOut) {
   EXPECT_EQ(bounce.output.find("breathing out"), std::string::npos) << bounce.output;
 }
 
-// With "iterations": "auto" the same range, and the line after says that its steps shorten where the volume needs it.
+// With "iterations": "auto" the same range, and the line after says that its steps shorten where the volume needs it
+// and, where solver.impact_phase is not given, which impact steps it takes.
 TEST(Cli, InfoSaysVbdsAutoHoldsItsOwnError) {
   const auto result =
       run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=auto");
   ASSERT_EQ(result.exit_status, 0) << result.output;
   EXPECT_NE(result.output.find("(30 steps/s x 2 to 32 sweeps (auto) x 642 vertices x 155 ns)"), std::string::npos)
       << result.output;
-  EXPECT_NE(result.output.find("vbd holds its own error (\"iterations\": \"auto\"): its steps shorten further"),
+  EXPECT_NE(result.output.find("vbd holds its own error (\"iterations\": \"auto\"): its impacts' steps keep omega h <= "
+                               "0.25 (solver.impact_phase is not given: 0.5 without \"auto\"), and its steps shorten "
+                               "further"),
             std::string::npos)
       << result.output;
+  // Its impacts' steps: ω h ≤ 0.25 at ω = 1/(2 ms), 1/30 s / 128 = 0.26 ms.
+  EXPECT_NE(result.output.find("impacts take steps of 0.26 ms while they last"), std::string::npos) << result.output;
+  // A phase given is the user's, and the line does not claim one.
+  const auto given = run_softbody(
+      "info scenes/bounce_smooth.json --set solver.integrator=vbd --set solver.iterations=auto --set "
+      "solver.impact_phase=0.5");
+  ASSERT_EQ(given.exit_status, 0) << given.output;
+  EXPECT_NE(given.output.find("impacts take steps of 0.52 ms while they last"), std::string::npos) << given.output;
+  EXPECT_NE(given.output.find("vbd holds its own error (\"iterations\": \"auto\"): its steps shorten further"),
+            std::string::npos)
+      << given.output;
 }
 
 // With "iterations": "converge" the sweeps per step range from 2 to 32, and so does the price: 30 x 2 x 642 x 155 ns =

@@ -99,8 +99,8 @@ sim::World landing_ball(int threads, int coarse_cells, bool until_converged = fa
   s.solver.coarse_space = coarse_cells;
   s.solver.coarse_space_auto = false;
   s.solver.threads = threads;
-  s.solver.iterations_converge = until_converged;
-  s.solver.iterations_auto = automatic;
+  if (until_converged) s.solver.sweep_control = sim::SweepControl::Converge;
+  if (automatic) s.solver.sweep_control = sim::SweepControl::Auto;
   std::vector<std::string> notes;
   return setup::build_world(s, notes);
 }

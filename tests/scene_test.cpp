@@ -131,15 +131,30 @@ namespace {
 
 // vbd's sweeps: a number, "converge" (the sweeps stop by themselves) or "auto" (vbd holds its error); the default 4.
 TEST(Scene, IterationsTakeANumberConvergeOrAuto) {
-  EXPECT_EQ(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations, 4);
-  EXPECT_FALSE(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations_converge);
-  EXPECT_EQ(scene_from_text(R"({ "solver": { "iterations": 7 }, "bodies": [ { } ] })").solver.iterations, 7);
-  EXPECT_TRUE(
-      scene_from_text(R"({ "solver": { "iterations": "converge" }, "bodies": [ { } ] })").solver.iterations_converge);
-  const scene::Scene automatic = scene_from_text(R"({ "solver": { "iterations": "auto" }, "bodies": [ { } ] })");
-  EXPECT_TRUE(automatic.solver.iterations_auto);
-  EXPECT_FALSE(automatic.solver.iterations_converge);
-  EXPECT_FALSE(scene_from_text(R"({ "bodies": [ { } ] })").solver.iterations_auto);
+  const scene::Scene plain = scene_from_text(R"({ "bodies": [ { } ] })");
+  EXPECT_EQ(plain.solver.iterations, 4);
+  EXPECT_EQ(plain.solver.sweep_control, sim::SweepControl::Count);
+  const scene::Scene seven = scene_from_text(R"({ "solver": { "iterations": 7 }, "bodies": [ { } ] })");
+  EXPECT_EQ(seven.solver.iterations, 7);
+  EXPECT_EQ(seven.solver.sweep_control, sim::SweepControl::Count);
+  EXPECT_EQ(scene_from_text(R"({ "solver": { "iterations": "converge" }, "bodies": [ { } ] })").solver.sweep_control,
+            sim::SweepControl::Converge);
+  EXPECT_EQ(scene_from_text(R"({ "solver": { "iterations": "auto" }, "bodies": [ { } ] })").solver.sweep_control,
+            sim::SweepControl::Auto);
+}
+
+// vbd's impact steps: solver.impact_phase where given, else 0.5, and 0.25 with "iterations": "auto" (whose tolerance
+// the default 0.5 misses through an impact at icosphere:4).
+TEST(Scene, ImpactPhaseDefaultsByTheSweepControl) {
+  const auto phase_of = [](const char* solver) {
+    return sim::vbd_impact_phase(
+        scene_from_text(std::string(R"({ "solver": )") + solver + R"(, "bodies": [ { } ] })").solver);
+  };
+  EXPECT_EQ(phase_of("{}"), sim::kVbdImpactPhase);
+  EXPECT_EQ(phase_of(R"({ "iterations": "converge" })"), sim::kVbdImpactPhase);
+  EXPECT_EQ(phase_of(R"({ "iterations": "auto" })"), sim::kVbdAutoImpactPhase);
+  EXPECT_EQ(phase_of(R"({ "iterations": "auto", "impact_phase": 0.5 })"), 0.5);
+  EXPECT_EQ(phase_of(R"({ "impact_phase": 0.125 })"), 0.125);
 }
 
 // The smooth contact's keys are read and checked.

@@ -195,7 +195,8 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   const double dt = frame_interval_s / steps;  // its step in flight [s]
   // Its sweeps per step: solver.iterations, or with "converge" or "auto" a range (each step sweeps until it barely
   // moves).
-  const bool until_converged = model.solver.iterations_converge || model.solver.iterations_auto;
+  const bool until_converged = model.solver.sweep_control != sim::SweepControl::Count;
+  const bool automatic = model.solver.sweep_control == sim::SweepControl::Auto;
   const int least = until_converged ? sim::VertexBlockDescent::kLeastConvergeSweeps : model.solver.iterations;
   const int most = until_converged ? sim::VertexBlockDescent::kMostConvergeSweeps : model.solver.iterations;
   // CPU s of `steps_per_s` steps per simulated second, each `sweeps` sweeps over the vertices.
@@ -217,8 +218,7 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   if (least == most) {
     std::snprintf(sweeps, sizeof sweeps, "%d sweeps", least);
   } else {
-    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (%s)", least, most,
-                  model.solver.iterations_auto ? "auto" : "converge");
+    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (%s)", least, most, automatic ? "auto" : "converge");
   }
   // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
   if (model.floor && model.floor->contact != sim::FloorContact::Smooth) {
@@ -227,16 +227,25 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   std::printf("  %-10s  %-12s %-12.4g %-22s about %s in flight (%.0f steps/s x %s x %zu vertices x %.0f ns)", "vbd",
               limit, dt, per_frame, costs_of(1.0 / dt).c_str(), 1.0 / dt, sweeps, vertices, kVbdSweepNsPerVertex);
   if (const double omega = stiffest_smooth_contact(model); omega > 0.0) {
-    const double impact_h = std::ldexp(dt, -sim::vbd_impact_level(dt, omega, model.solver.impact_phase));
+    const double impact_h = std::ldexp(dt, -sim::vbd_impact_level(dt, omega, sim::vbd_impact_phase(model.solver)));
     std::printf("; impacts take steps of %.2g ms while they last, about %s per %.1f s of impact", 1e3 * impact_h,
                 costs_of(kImpactSpan / impact_h).c_str(), kImpactSpan);
   }
   std::printf("\n");
-  if (model.solver.iterations_auto) {
+  if (automatic) {
+    // Its impacts' steps: solver.impact_phase where given, else "auto"'s own (sim::kVbdAutoImpactPhase).
+    char impacts[160] = "";
+    if (!model.solver.impact_phase) {
+      std::snprintf(
+          impacts, sizeof impacts,
+          "its impacts' steps keep omega h <= %.3g (solver.impact_phase is not given: %.3g without \"auto\"), "
+          "and ",
+          sim::kVbdAutoImpactPhase, sim::kVbdImpactPhase);
+    }
     std::printf(
-        "  vbd holds its own error (\"iterations\": \"auto\"): its steps shorten further wherever BDF2's local "
+        "  vbd holds its own error (\"iterations\": \"auto\"): %sits steps shorten further wherever BDF2's local "
         "error in the gas's volume would exceed %.3g %% of V per second, so these are its least costs\n",
-        100.0 * sim::VertexBlockDescent::kVolumeErrorRate);
+        impacts, 100.0 * sim::VertexBlockDescent::kVolumeErrorRate);
   }
   print_vbd_coarse_level(model);
   print_vbd_breathing(breathing, dt);

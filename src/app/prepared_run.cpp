@@ -22,7 +22,8 @@ namespace {
 // (sim::damped_out_by_bdf2): "auto" holds the volume's local error, but not a swing its steps take out from the start.
 void add_vbd_auto_breathing_notes(const sim::World& world, double h, std::vector<std::string>& notes) {
   const sim::Model& model = world.model;
-  if (model.solver.integrator != sim::IntegratorKind::Vbd || !model.solver.iterations_auto) return;
+  if (model.solver.integrator != sim::IntegratorKind::Vbd || model.solver.sweep_control != sim::SweepControl::Auto)
+    return;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const sim::BreathingMode mode = sim::breathing_mode(model.bodies[b], model.of(model.bodies[b], world.state.x));
     if (!sim::damped_out_by_bdf2(mode, h)) continue;
@@ -116,25 +117,24 @@ const sim::VertexBlockDescent::Statistics* vbd_statistics(const PreparedRun& run
 void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, const std::string& what_was_written,
                        std::FILE* out) {
   const sim::Solver& solver = run.world.model.solver;
+  const bool automatic = solver.sweep_control == sim::SweepControl::Auto;
+  const bool until_still = solver.sweep_control != sim::SweepControl::Count;
   char steps[256];
   if (solver.integrator == sim::IntegratorKind::Rk45) {
     std::snprintf(steps, sizeof steps, "%lld accepted + %lld rejected steps (rk45, tolerance %.3g)", stats.steps,
                   stats.rejected_steps, solver.tolerance);
-  } else if (const auto* vbd = vbd_statistics(run);
-             vbd && (vbd->steps > stats.steps || solver.iterations_converge || solver.iterations_auto)) {
+  } else if (const auto* vbd = vbd_statistics(run); vbd && (vbd->steps > stats.steps || until_still)) {
     // Its own steps (shorter at its start and around impacts, with "iterations": "auto" also where the volume's error
     // needed it) and, with "iterations": "converge" or "auto", its sweeps per step.
     char own[128] = "", sweeps[64] = "";
     if (vbd->steps > stats.steps) {
-      std::snprintf(
-          own, sizeof own, "; %lld of its own: shorter at its start%s", vbd->steps,
-          solver.iterations_auto ? ", around impacts and where the volume's error needed it" : " and around impacts");
+      std::snprintf(own, sizeof own, "; %lld of its own: shorter at its start%s", vbd->steps,
+                    automatic ? ", around impacts and where the volume's error needed it" : " and around impacts");
     }
-    if ((solver.iterations_converge || solver.iterations_auto) && vbd->steps > 0) {
+    if (until_still && vbd->steps > 0) {
       const double per_step = static_cast<double>(vbd->sweeps) /
                               (static_cast<double>(vbd->steps) * static_cast<double>(run.world.model.bodies.size()));
-      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (%s)", per_step,
-                    solver.iterations_auto ? "auto" : "converge");
+      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (%s)", per_step, automatic ? "auto" : "converge");
     }
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (vbd%s%s)", stats.steps, run.clock.dt_s, own, sweeps);
   } else {

@@ -281,12 +281,11 @@ sim::Solver read_solver(const ObjectReader& top, std::vector<std::string>& notes
     if (choice != "converge" && choice != "auto") {
       r.fail(r.child("iterations"), "expected a whole number >= 1, \"converge\" or \"auto\"", &r.at("iterations"));
     }
-    solver.iterations_converge = choice == "converge";
-    solver.iterations_auto = choice == "auto";
+    solver.sweep_control = choice == "auto" ? sim::SweepControl::Auto : sim::SweepControl::Converge;
   } else {
     solver.iterations = r.integer("iterations");
   }
-  solver.impact_phase = r.number("impact_phase");
+  if (r.has("impact_phase")) solver.impact_phase = r.number("impact_phase", sim::kVbdImpactPhase);
   // vbd's coarse level: cells per body, or "auto" (the default; sim::auto_coarse_cells).
   if (!r.has("coarse_space") || r.at("coarse_space").is_string()) {
     if (r.has("coarse_space") && r.at("coarse_space").get<std::string>() != "auto") {

@@ -332,7 +332,7 @@ TEST(VbdContact, TwoBallsStackAtOneSixtiethOfASecondWithoutSinkingIn) {
 TEST(VbdContact, TwoBallsStackWithSweepsUntilConverged) {
   sim::Solver vbd;
   vbd.integrator = sim::IntegratorKind::Vbd;
-  vbd.iterations_converge = true;
+  vbd.sweep_control = sim::SweepControl::Converge;
   expect_stack_as_converged(vbd, 1.15, 0.005);
 }
 

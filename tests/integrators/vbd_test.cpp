@@ -28,8 +28,8 @@ sim::World vbd_world(const std::string& json_text, int sweeps, int coarse_cells 
   sim::Solver solver;
   solver.integrator = sim::IntegratorKind::Vbd;
   solver.iterations = sweeps;
-  solver.iterations_converge = sweeps == sim::VertexBlockDescent::kConvergeSweeps;
-  solver.iterations_auto = sweeps == sim::VertexBlockDescent::kAutoSweeps;
+  if (sweeps == sim::VertexBlockDescent::kConvergeSweeps) solver.sweep_control = sim::SweepControl::Converge;
+  if (sweeps == sim::VertexBlockDescent::kAutoSweeps) solver.sweep_control = sim::SweepControl::Auto;
   solver.coarse_space = coarse_cells;
   solver.coarse_space_auto = false;
   return integrator_tests::make_world(json_text, solver);

@@ -21,11 +21,11 @@ std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
     case IntegratorKind::Vbd:
       return std::make_unique<VertexBlockDescent>(
-          solver.iterations_auto       ? VertexBlockDescent::kAutoSweeps
-          : solver.iterations_converge ? VertexBlockDescent::kConvergeSweeps
-                                       : solver.iterations,
+          solver.sweep_control == SweepControl::Auto       ? VertexBlockDescent::kAutoSweeps
+          : solver.sweep_control == SweepControl::Converge ? VertexBlockDescent::kConvergeSweeps
+                                                           : solver.iterations,
           true, solver.coarse_space_auto ? VertexBlockDescent::kAutoAggregates : solver.coarse_space,
-          solver.impact_phase);
+          vbd_impact_phase(solver));
   }
   return nullptr;
 }

@@ -1,4 +1,4 @@
-// Names of the solver's settings, from the one list of integrators.
+// Names of the solver's settings, from the one list of integrators, and the defaults that depend on other settings.
 #include "sim/model/settings.hpp"
 
 namespace sim {
@@ -19,6 +19,11 @@ std::string to_string(FloorContact contact) {
     case FloorContact::Smooth: return "smooth";
   }
   return "?";
+}
+
+double vbd_impact_phase(const Solver& solver) {
+  if (solver.impact_phase) return *solver.impact_phase;
+  return solver.sweep_control == SweepControl::Auto ? kVbdAutoImpactPhase : kVbdImpactPhase;
 }
 
 std::string to_string(BodyContactModel contact) { return contact == BodyContactModel::Smooth ? "smooth" : "impulse"; }
