@@ -201,9 +201,9 @@ struct Table {
             "no vertex by more than 3e-4 of its body's mean edge (at least 2 sweeps, at most 32): more where the "
             "step converges slowly (a body far from its shape, a fine mesh through an impact), fewer in a smooth "
             "flight. \"auto\": vbd holds the gas's volume within 1 % by itself: it sweeps as \"converge\" does with "
-            "the move scaled by h / (1/30 s), and halves its steps where the volume's local error exceeds 0.5 % of V "
-            "per second; not a lightly damped breathing that its steps damp out, where a note says so "
-            "(docs/physics/integrators.md).",
+            "the move scaled by h / (1/30 s), halves its steps where the volume's local error exceeds 0.5 % of V "
+            "per second, and takes impact_phase 0.25 unless it is given; not a lightly damped breathing that its "
+            "steps damp out, where a note says so (docs/physics/integrators.md).",
             4),
         key_without_default(
             "impact_phase", {number(above(0.0), at_most(4.0))}, "",
