@@ -180,7 +180,7 @@ struct Solver {
   SweepControl sweep_control = SweepControl::Count;  // "iterations": a number, "converge" or "auto"
   // vbd: its steps around an impact on a smooth contact keep ω h ≤ this; unset: kVbdImpactPhase, or with
   // "iterations": "auto" kVbdAutoImpactPhase (vbd_impact_phase)
-  std::optional<double> impact_phase;
+  std::optional<double> impact_phase = std::nullopt;
   int coarse_space = 0;           // vbd: cells per body of its coarse level (sim/integrators/coarse_space.hpp); 0: none
   bool coarse_space_auto = true;  // "coarse_space": "auto" (the default): each body's cells by its size
                                   // (sim::auto_coarse_cells); false: coarse_space for every body
