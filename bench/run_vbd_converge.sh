@@ -5,8 +5,8 @@
 # move scaled by the step, and its steps halved where the volume's local error needs it): the five bodies in flight of
 # bench/flight_shapes_common.sh (1 s, against rk45 at 1e-8) and the smooth-floor bounce (scenes/bounce_smooth.json,
 # 0-1.2 s, the fall, the first impact and the rebound) at icosphere:3, :4 and :5, with each control's own impact steps
-# (solver.impact_phase unset: 0.5, and 0.25 for "auto"), "auto" at 0.5, and all at 0.125. Each line: user CPU s of one thread,
-# vbd's own steps and its sweeps per step (from the run's summary), the worst volume error and the worst centre-of-mass
+# (solver.impact_phase unset: 0.5, and 0.25 for "auto"), "auto" at 0.5, and all at 0.125. Each line: user CPU s of one
+# thread, vbd's own steps and its sweeps per step (from the run's summary), the worst volume error and the worst centre-of-mass
 # distance (bench/csv_errors.py).
 # The bounce's references are bench/vbd_bounce_common.sh's (make_reference, in its $out: out/vbd_bounce or $OUT),
 # shared with bench/run_vbd_bounce.sh.
@@ -35,14 +35,15 @@ shape() { # name extra-args...
   done
 }
 each_flight_shape shape
+# bounce_run NAME args...: the bounce at icosphere:$level against $ref.
+bounce_run() {
+  local name=$1; shift
+  run "$name" "$ref" scenes/bounce_smooth.json --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 \
+    --set solver.substeps=\"auto\" "$@"
+}
 for level in 3 4 5; do
   out=$bounce make_reference $level 1.2  # a longer one made by run_vbd_bounce.sh serves as well
   ref=$bounce/ref$level.csv
-  bounce_run() { # name extra-args...
-    local name=$1; shift
-    run "$name" "$ref" scenes/bounce_smooth.json --set bodies.0.mesh=\"icosphere:$level\" --set duration=1.2 \
-      --set solver.substeps=\"auto\" "$@"
-  }
   # Each sweep control at its own impact steps (the default phase 0.5; "auto"'s 0.25), "auto" at 0.5 too, then all
   # at 0.125.
   for sweeps in 4 '"converge"' '"auto"'; do

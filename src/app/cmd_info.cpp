@@ -218,7 +218,8 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   if (least == most) {
     std::snprintf(sweeps, sizeof sweeps, "%d sweeps", least);
   } else {
-    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (%s)", least, most, automatic ? "auto" : "converge");
+    std::snprintf(sweeps, sizeof sweeps, "%d to %d sweeps (%s)", least, most,
+                  sim::to_string(model.solver.sweep_control).c_str());
   }
   // A floor whose contact is a projection after the step needs its travel limit; the smooth one is in the energy.
   if (model.floor && model.floor->contact != sim::FloorContact::Smooth) {
@@ -233,14 +234,14 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
   }
   std::printf("\n");
   if (automatic) {
-    // Its impacts' steps: solver.impact_phase where given, else "auto"'s own (sim::kVbdAutoImpactPhase).
+    // Its impacts' steps, where solver.impact_phase does not set them: "auto"'s own (sim::vbd_impact_phase).
     char impacts[160] = "";
     if (!model.solver.impact_phase) {
       std::snprintf(
           impacts, sizeof impacts,
           "its impacts' steps keep omega h <= %.3g (solver.impact_phase is not given: %.3g without \"auto\"), "
           "and ",
-          sim::kVbdAutoImpactPhase, sim::kVbdImpactPhase);
+          sim::vbd_impact_phase(model.solver), sim::kVbdImpactPhase);
     }
     std::printf(
         "  vbd holds its own error (\"iterations\": \"auto\"): %sits steps shorten further wherever BDF2's local "

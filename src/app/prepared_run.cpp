@@ -134,7 +134,8 @@ void print_run_summary(const PreparedRun& run, const frames::RunStats& stats, co
     if (until_still && vbd->steps > 0) {
       const double per_step = static_cast<double>(vbd->sweeps) /
                               (static_cast<double>(vbd->steps) * static_cast<double>(run.world.model.bodies.size()));
-      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (%s)", per_step, automatic ? "auto" : "converge");
+      std::snprintf(sweeps, sizeof sweeps, "; %.3g sweeps per step (%s)", per_step,
+                    sim::to_string(solver.sweep_control).c_str());
     }
     std::snprintf(steps, sizeof steps, "%lld steps of %.4g s (vbd%s%s)", stats.steps, run.clock.dt_s, own, sweeps);
   } else {

@@ -21,6 +21,15 @@ std::string to_string(FloorContact contact) {
   return "?";
 }
 
+std::string to_string(SweepControl control) {
+  switch (control) {
+    case SweepControl::Count: return "count";
+    case SweepControl::Converge: return "converge";
+    case SweepControl::Auto: return "auto";
+  }
+  return "?";
+}
+
 double vbd_impact_phase(const Solver& solver) {
   if (solver.impact_phase) return *solver.impact_phase;
   return solver.sweep_control == SweepControl::Auto ? kVbdAutoImpactPhase : kVbdImpactPhase;

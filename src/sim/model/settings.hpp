@@ -162,6 +162,8 @@ enum class SweepControl {
   Auto,      // "auto": vbd holds its error to a tolerance itself, its sweeps converged to its step and its steps
              // shortened where the gas's volume needs it (sim::VertexBlockDescent::kAutoSweeps)
 };
+// "count", "converge" or "auto": the last two as solver.iterations spells them.
+std::string to_string(SweepControl control);
 
 struct Solver {
   IntegratorKind integrator = IntegratorKind::Euler;
