@@ -274,8 +274,7 @@ sim::Solver read_solver(const ObjectReader& top, std::vector<std::string>& notes
   } else {
     solver.substeps = r.integer("substeps", solver.substeps);
   }
-  // vbd's sweeps per step: a whole number >= 1, "converge" (sim::VertexBlockDescent::kConvergeSweeps) or "auto"
-  // (sim::VertexBlockDescent::kAutoSweeps).
+  // vbd's sweeps per step: a whole number >= 1, "converge" or "auto" (sim::SweepControl).
   if (r.has("iterations") && r.at("iterations").is_string()) {
     const std::string choice = r.at("iterations").get<std::string>();
     if (choice != "converge" && choice != "auto") {

@@ -23,14 +23,21 @@ namespace {
 using integrator_tests::kDust;
 using softbody::Vec3;
 
-// The world of `json_text` integrated by vbd with `sweeps` sweeps per step (kConvergeSweeps: "iterations": "converge";
-// kAutoSweeps: "auto"; and `coarse_cells` cells of its coarse level).
-sim::World vbd_world(const std::string& json_text, int sweeps, int coarse_cells = 0) {
+// A setting of "iterations": a number of sweeps per step, "converge" or "auto".
+struct Sweeps {
+  Sweeps(int per_step) : count(per_step) {}            // NOLINT(google-explicit-constructor): a count
+  Sweeps(sim::SweepControl until) : control(until) {}  // NOLINT(google-explicit-constructor)
+  std::string name() const { return control == sim::SweepControl::Count ? std::to_string(count) : to_string(control); }
+  sim::SweepControl control = sim::SweepControl::Count;
+  int count = 4;  // per step, with SweepControl::Count
+};
+
+// The world of `json_text` integrated by vbd with `sweeps` (and `coarse_cells` cells of its coarse level).
+sim::World vbd_world(const std::string& json_text, Sweeps sweeps, int coarse_cells = 0) {
   sim::Solver solver;
   solver.integrator = sim::IntegratorKind::Vbd;
-  solver.iterations = sweeps;
-  if (sweeps == sim::VertexBlockDescent::kConvergeSweeps) solver.sweep_control = sim::SweepControl::Converge;
-  if (sweeps == sim::VertexBlockDescent::kAutoSweeps) solver.sweep_control = sim::SweepControl::Auto;
+  solver.iterations = sweeps.count;
+  solver.sweep_control = sweeps.control;
   solver.coarse_space = coarse_cells;
   solver.coarse_space_auto = false;
   return integrator_tests::make_world(json_text, solver);
@@ -219,7 +226,7 @@ TEST(Vbd, SweepsUntilConvergedGoOnWhereTheStepIsFarFromItsSolution) {
   constexpr double kSpan = 0.2, kDt = 1.0 / 30.0;
   sim::World converged = vbd_world(kSwellingCube, 500);
   sim::World four = vbd_world(kSwellingCube, 4);
-  sim::World until_converged = vbd_world(kSwellingCube, sim::VertexBlockDescent::kConvergeSweeps);
+  sim::World until_converged = vbd_world(kSwellingCube, sim::SweepControl::Converge);
   for (sim::World* world : {&converged, &four, &until_converged}) integrator_tests::run_for(*world, kSpan, kDt);
   const double error_four = integrator_tests::rms_position_difference(four.state, converged.state);
   const double error_converge = integrator_tests::rms_position_difference(until_converged.state, converged.state);
@@ -236,7 +243,7 @@ TEST(Vbd, SweepsUntilConvergedGoOnWhereTheStepIsFarFromItsSolution) {
 }
 
 TEST(Vbd, SweepsUntilConvergedTakeFewerInASmoothFlight) {
-  sim::World world = vbd_world(kBreathing, sim::VertexBlockDescent::kConvergeSweeps);
+  sim::World world = vbd_world(kBreathing, sim::SweepControl::Converge);
   integrator_tests::run_for(world, 0.5, 1.0 / 60.0);
   const auto& stats = vbd_of(world).statistics();
   EXPECT_GE(stats.sweeps, sim::VertexBlockDescent::kLeastConvergeSweeps * stats.steps);
@@ -257,7 +264,7 @@ TEST(Vbd, AutoHoldsTheVolumeWithinItsToleranceWhereTheDefaultsDoNot) {
   constexpr int kFrames = 30, kReferenceSteps = 16;
   sim::World reference = integrator_tests::make_world(kSoftBall, sim::IntegratorKind::Rk4);
   sim::World defaults = vbd_world(kSoftBall, 4);
-  sim::World automatic = vbd_world(kSoftBall, sim::VertexBlockDescent::kAutoSweeps);
+  sim::World automatic = vbd_world(kSoftBall, sim::SweepControl::Auto);
   double worst_defaults = 0.0, worst_auto = 0.0;
   for (int frame = 0; frame < kFrames; ++frame) {
     for (int n = 0; n < kReferenceSteps; ++n) reference.step(kFrame / kReferenceSteps);
@@ -282,7 +289,7 @@ TEST(Vbd, AutoHoldsTheVolumeWithinItsToleranceWhereTheDefaultsDoNot) {
 
 // The total energy of an unforced body (no gravity, no floor) never grows: BDF2 damps, and every accepted vertex move
 // lowers the step's energy, whatever h, the stiffness or the sweeps. `scale`: the start's size against the rest shape.
-double worst_energy_growth(double stiffness, double scale, int steps_per_second, int sweeps, double duration_s,
+double worst_energy_growth(double stiffness, double scale, int steps_per_second, Sweeps sweeps, double duration_s,
                            int coarse_cells = 0) {
   const std::string scene = R"({ "gravity": [0, 0, 0], "bodies": [ { "mesh": "icosphere:2", "mass": 1.0,
       "damping": 0.1, "pressure": 50.0, "stiffness": )" +
@@ -306,10 +313,10 @@ double worst_energy_growth(double stiffness, double scale, int steps_per_second,
 TEST(Vbd, CompressedStartsStayStableAtEveryStepAndSweepCount) {
   for (const double scale : {0.9, 0.98}) {
     for (const int rate : {60, 240, 960}) {
-      for (const int sweeps :
-           {1, 4, 16, sim::VertexBlockDescent::kConvergeSweeps, sim::VertexBlockDescent::kAutoSweeps}) {
+      for (const Sweeps sweeps :
+           {Sweeps(1), Sweeps(4), Sweeps(16), Sweeps(sim::SweepControl::Converge), Sweeps(sim::SweepControl::Auto)}) {
         const double growth = worst_energy_growth(1000.0, scale, rate, sweeps, 0.5);
-        EXPECT_LT(growth, 1e-9) << "scale " << scale << ", " << rate << " steps/s, " << sweeps << " sweeps";
+        EXPECT_LT(growth, 1e-9) << "scale " << scale << ", " << rate << " steps/s, sweeps " << sweeps.name();
       }
     }
   }

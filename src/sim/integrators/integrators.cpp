@@ -21,10 +21,8 @@ std::unique_ptr<Integrator> make_integrator(const Solver& solver) {
     case IntegratorKind::Xpbd: return std::make_unique<Xpbd>();
     case IntegratorKind::Vbd:
       return std::make_unique<VertexBlockDescent>(
-          solver.sweep_control == SweepControl::Auto       ? VertexBlockDescent::kAutoSweeps
-          : solver.sweep_control == SweepControl::Converge ? VertexBlockDescent::kConvergeSweeps
-                                                           : solver.iterations,
-          true, solver.coarse_space_auto ? VertexBlockDescent::kAutoAggregates : solver.coarse_space,
+          solver.sweep_control, solver.iterations, true,
+          solver.coarse_space_auto ? VertexBlockDescent::kAutoAggregates : solver.coarse_space,
           vbd_impact_phase(solver));
   }
   return nullptr;

@@ -72,22 +72,29 @@ class VertexBlockDescent final : public Integrator {
   // (sim/integrators/coarse_space.hpp), 0 for none, kAutoAggregates for auto_coarse_cells by each body's size.
   static constexpr int kAutoAggregates = -1;
   // `impact_phase`: around an impact on a smooth contact the steps shrink to ω h ≤ it (solver.impact_phase).
-  // `sweeps`: per step (solver.iterations), or kConvergeSweeps: each step sweeps until a sweep moves no vertex by more
-  // than kConvergedMove of its body's mean edge, at least kLeastConvergeSweeps and at most kMostConvergeSweeps times.
-  static constexpr int kConvergeSweeps = 0;
+  // `control` (solver.iterations): SweepControl::Count takes `sweeps` sweeps per step. With Converge each step sweeps
+  // until a sweep moves no vertex by more than kConvergedMove of its body's mean edge, at least kLeastConvergeSweeps
+  // and at most kMostConvergeSweeps times.
   static constexpr double kConvergedMove = 3e-4;
   static constexpr int kLeastConvergeSweeps = 2;
   static constexpr int kMostConvergeSweeps = 32;
-  // Or kAutoSweeps (solver.iterations "auto"): vbd holds its error to the tolerance integrators.md documents (the
-  // volume within 1 %) by itself. Its sweeps go on as kConvergeSweeps's, until a sweep moves no vertex by more than
-  // kConvergedMove × min(1, h / kConvergedMoveStep) of the mean edge (a step's error shrinks with h, and so must
-  // what its sweeps leave), and its steps halve where the gas's volume's local error per unit time exceeds
-  // kVolumeErrorRate × V (volume_error_ratio), as well as around impacts.
-  static constexpr int kAutoSweeps = -1;
+  // With Auto vbd holds its error to the tolerance integrators.md documents (the volume within 1 %) by itself. Its
+  // sweeps go on as Converge's, until a sweep moves no vertex by more than kConvergedMove × min(1, h /
+  // kConvergedMoveStep) of the mean edge (a step's error shrinks with h, and so must what its sweeps leave), and its
+  // steps halve where the gas's volume's local error per unit time exceeds kVolumeErrorRate × V
+  // (volume_error_ratio), as well as around impacts.
   static constexpr double kConvergedMoveStep = 1.0 / 30.0;  // [s]
   static constexpr double kVolumeErrorRate = 5e-3;          // [1/s]
-  explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0, double impact_phase = kVbdImpactPhase)
-      : sweeps_(sweeps), coarse_(coarse), aggregates_(aggregates), impact_phase_(impact_phase) {}
+  VertexBlockDescent(SweepControl control, int sweeps, bool coarse = true, int aggregates = 0,
+                     double impact_phase = kVbdImpactPhase)
+      : sweep_control_(control),
+        sweeps_(sweeps),
+        coarse_(coarse),
+        aggregates_(aggregates),
+        impact_phase_(impact_phase) {}
+  // `sweeps` sweeps per step (SweepControl::Count).
+  explicit VertexBlockDescent(int sweeps, bool coarse = true, int aggregates = 0)
+      : VertexBlockDescent(SweepControl::Count, sweeps, coarse, aggregates) {}
   void set_up(const Model& model, PartRunner& runner) override;
   void step(Dynamics& dynamics, State& state, double dt) override;
   const Statistics& statistics() const { return statistics_; }
@@ -123,13 +130,13 @@ class VertexBlockDescent final : public Integrator {
   // from x = y, without contacts between bodies).
   void sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count);
   // The sweeps of a step over body b alone (without contacts between bodies): solver.iterations of them, or with
-  // kConvergeSweeps until one moves no vertex by more than the tolerance.
+  // SweepControl::Converge or Auto until one moves no vertex by more than the tolerance.
   void sweep_body_to_the_end(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
-  // solver.iterations sweeps (or with kConvergeSweeps, until one moves no vertex of any body by more than the
+  // solver.iterations sweeps (or with Converge or Auto, until one moves no vertex of any body by more than the
   // tolerance) over every body in turn, the smooth body contacts lagged before each.
   void sweep_in_contact(const Model& model, double h_hat, std::vector<Vec3>& x);
   // Whether the sweep that started at sweep_start_ (every vertex) moved no vertex of `bodies` by more than
-  // kConvergedMove of its body's mean edge (with kAutoSweeps, scaled by the step).
+  // kConvergedMove of its body's mean edge (with SweepControl::Auto, scaled by the step).
   bool sweep_was_still(std::span<const Body> bodies, const std::vector<Vec3>& x) const;
   // One sweep over body s's vertices, colour by colour: each colour at once on the threads (move_colour_at_once)
   // unless body contacts couple its vertices or the safeguard refuses, then one vertex at a time.
@@ -138,11 +145,12 @@ class VertexBlockDescent final : public Integrator {
   // One vertex's Newton step with its line search; `volume`: the body's V, kept exact.
   void visit_vertex(const BodySolve& s, int i, std::span<Vec3> x, double& volume);
 
-  // Whether the sweeps go on until still (kConvergeSweeps, kAutoSweeps), and whether vbd holds its own error.
-  bool sweeps_until_still() const { return sweeps_ == kConvergeSweeps || sweeps_ == kAutoSweeps; }
-  bool holds_its_error() const { return sweeps_ == kAutoSweeps; }
+  // Whether the sweeps go on until still (Converge, Auto), and whether vbd holds its own error (Auto).
+  bool sweeps_until_still() const { return sweep_control_ != SweepControl::Count; }
+  bool holds_its_error() const { return sweep_control_ == SweepControl::Auto; }
 
-  int sweeps_ = 1;
+  SweepControl sweep_control_ = SweepControl::Count;
+  int sweeps_ = 1;       // per step, with SweepControl::Count
   double step_s_ = 0.0;  // the h of the step being taken [s]
   bool coarse_ = true;   // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;

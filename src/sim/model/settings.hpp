@@ -160,7 +160,7 @@ enum class SweepControl {
   Count,     // a whole number: solver.iterations sweeps per step
   Converge,  // "converge": until a sweep barely moves a vertex
   Auto,      // "auto": vbd holds its error to a tolerance itself, its sweeps converged to its step and its steps
-             // shortened where the gas's volume needs it (sim::VertexBlockDescent::kAutoSweeps)
+             // shortened where the gas's volume needs it (sim/integrators/vertex_block_descent.hpp)
 };
 // "count", "converge" or "auto": the last two as solver.iterations spells them.
 std::string to_string(SweepControl control);
