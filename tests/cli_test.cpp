@@ -263,7 +263,8 @@ TEST(Cli, InfoExpectsACostPerSimulatedSecondForEachIntegrator) {
 
 // vbd's line: on the smooth floor one step per 1/30 s frame in flight, priced as steps x sweeps x vertices x 155 ns
 // (30 x 4 x 642 x 155 ns = 0.0119 s), and the impacts' steps, the frame halved until ω h ≤ solver.impact_phase
-// (0.5 / (1/2 ms) = 1 ms: 1/30 s / 64 = 0.52 ms), priced per 0.1 s of impact (192 x 4 x 642 x 155 ns = 0.0764 s).
+// (0.5 / (1/2 ms) = 1 ms: 1/30 s / 64 = 0.52 ms), priced per 0.1 s of impact (192 x 4 x 642 x 155 ns = 0.0764 s)
+// and per impact of the ball's gas.
 TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   const auto result = run_softbody("info scenes/bounce_smooth.json --set solver.integrator=vbd");
   ASSERT_EQ(result.exit_status, 0) << result.output;
@@ -274,6 +275,11 @@ TEST(Cli, InfoPricesVbdInFlightAndNamesItsImpactSteps) {
   EXPECT_NE(text.find("1 step "), std::string::npos) << text;
   EXPECT_NE(text.find("about 0.0119 s in flight"), std::string::npos) << text;
   EXPECT_NE(text.find("impacts take steps of 0.52 ms while they last, about 0.0764 s per 0.1 s of impact"),
+            std::string::npos)
+      << text;
+  // The ball's impact, estimated from its gas (sim::gas_impact_duration: 0.181 s), at those steps: 347 x 4 x 642 x
+  // 155 ns = 0.138 s.
+  EXPECT_NE(text.find("body 0's impacts last about 0.18 s (its gas: pi sqrt(m / (2 pi R P))), about 0.138 s each"),
             std::string::npos)
       << text;
   EXPECT_EQ(result.output.find("damp body"), std::string::npos) << "the bounce's dampers take its breathing out";

@@ -6,6 +6,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -17,6 +18,7 @@
 #include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/step/breathing_mode.hpp"
+#include "sim/step/impact_duration.hpp"
 #include "sim/step/stability.hpp"
 
 namespace app {
@@ -186,9 +188,21 @@ void print_vbd_breathing(const std::vector<sim::BreathingMode>& breathing, doubl
   }
 }
 
+// The body with gas whose impact lasts longest (sim::gas_impact_duration) and that duration [s]; 0 where no body has
+// gas (the springs alone then decide).
+std::pair<std::size_t, double> longest_gas_impact(const sim::Model& model) {
+  std::pair<std::size_t, double> longest{0, 0.0};
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const double duration = sim::gas_impact_duration(model.bodies[b]);
+    if (duration > longest.second) longest = {b, duration};
+  }
+  return longest;
+}
+
 // vbd's line: the steps per frame `substeps: auto` picks and what they cost in flight; around impacts on a smooth
 // contact vbd takes smaller steps of its own, priced per kImpactSpan of impact (how long the impacts last depends on
-// the motion). Then its coarse level, and the breathing modes its steps would damp out.
+// the motion) and, for a body with gas, per impact of its estimated duration. Then its coarse level, and the breathing
+// modes its steps would damp out.
 void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, double frame_interval_s,
                std::size_t vertices, const std::vector<sim::BreathingMode>& breathing) {
   const int steps = sim::auto_substeps(sim::IntegratorKind::Vbd, model, estimate, frame_interval_s);
@@ -231,6 +245,10 @@ void print_vbd(const sim::Model& model, const sim::StabilityEstimate& estimate, 
     const double impact_h = std::ldexp(dt, -sim::vbd_impact_level(dt, omega, sim::vbd_impact_phase(model.solver)));
     std::printf("; impacts take steps of %.2g ms while they last, about %s per %.1f s of impact", 1e3 * impact_h,
                 costs_of(kImpactSpan / impact_h).c_str(), kImpactSpan);
+    if (const auto [body, duration] = longest_gas_impact(model); duration > 0.0) {
+      std::printf("; body %zu's impacts last about %.2g s (its gas: pi sqrt(m / (2 pi R P))), about %s each", body,
+                  duration, costs_of(duration / impact_h).c_str());
+    }
   }
   std::printf("\n");
   if (automatic) {
