@@ -423,10 +423,15 @@ TEST(Vbd, AutosImpactStepsFollowAFastThrow) {
     worst_own = std::max(worst_own, off(own));
     worst_half = std::max(worst_half, off(half));
   }
-  std::printf("the fast throw, 1.2 s: centre of mass off by %.3g cm at auto's impact steps, %.3g cm at phase 0.5\n",
-              100.0 * worst_own, 100.0 * worst_half);
+  const auto& stats = vbd_of(own).statistics();
+  std::printf(
+      "the fast throw, 1.2 s: centre of mass off by %.3g cm at auto's impact steps, %.3g cm at phase 0.5; %lld sweeps, "
+      "%lld after a correction\n",
+      100.0 * worst_own, 100.0 * worst_half, stats.sweeps, stats.corrections);
   EXPECT_LT(worst_own, 0.002);
   EXPECT_GT(worst_half, 0.02);
+  // The impact's steps take the affine correction before their first sweeps only (kImpactCorrectedSweeps).
+  EXPECT_LT(stats.corrections, stats.sweeps);
 }
 
 // A ball thrown at the smooth floor at 5 m/s: no vertex goes much deeper than rk45 at a tight tolerance takes it

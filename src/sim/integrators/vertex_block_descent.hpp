@@ -48,7 +48,8 @@ int vbd_impact_level(double dt, double omega, double impact_phase);
 // vertices, cannot: where `aggregates` is set (solver.coarse_space), one Newton step on smooth fields over that many
 // cells and the body's linear motions (coarse_space.hpp; before every other sweep, its matrix assembled and factored
 // every few steps and reused between), else one restricted to the body's affine motions (affine_correction.hpp). Both
-// search E along their step.
+// search E along their step. At an impact's steps, where the sweeps go on until still, only the first few sweeps take
+// them (kImpactCorrectedSweeps).
 // The smooth floor, the smooth colliders and the smooth contact between bodies (self-contact included) enter E with
 // their dashpot weights and friction normal forces lagged (vertex_energy.hpp, sim/contact/smooth_collider.hpp,
 // vertex_contacts.hpp); with the smooth body
@@ -66,6 +67,7 @@ class VertexBlockDescent final : public Integrator {
     long long colours_at_once = 0;     // colours whose vertices moved at once (move_colour_at_once)
     long long colours_one_by_one = 0;  // of those, colours its safeguard refused: then visited a vertex at a time
     long long sweeps = 0;              // sweeps over one body each (a step of two bodies and 4 sweeps counts 8)
+    long long corrections = 0;         // of those, the sweeps a body's own coarse or affine correction came before
   };
 
   // `coarse`: the affine correction before each sweep; `aggregates`: the cells per body of the coarse level
@@ -108,7 +110,11 @@ class VertexBlockDescent final : public Integrator {
   // an impact on a smooth contact or, holding its own error, where the volume's is too large; one up where the two
   // steps before allow it (then BDF2 takes its history from two steps back, so every BDF2 step has a step ratio of at
   // most 1).
-  int next_level(const Model& model, const State& state, double dt, int level, long long done) const;
+  struct StepLevel {
+    int level = 0;
+    bool impact = false;  // set by an impact on a smooth contact
+  };
+  StepLevel next_level(const Model& model, const State& state, double dt, int level, long long done) const;
   // Whether the last three states (steps of h) are smooth enough for a step of 2h (see kGrowthTolerance).
   bool smooth_enough_to_double(const Model& model, const State& state, double h) const;
   // The largest over the bodies with gas of BDF2's local error in V per unit time, estimated from the last three
@@ -150,9 +156,10 @@ class VertexBlockDescent final : public Integrator {
   bool holds_its_error() const { return sweep_control_ == SweepControl::Auto; }
 
   SweepControl sweep_control_ = SweepControl::Count;
-  int sweeps_ = 1;       // per step, with SweepControl::Count
-  double step_s_ = 0.0;  // the h of the step being taken [s]
-  bool coarse_ = true;   // the affine coarse correction before each sweep
+  int sweeps_ = 1;            // per step, with SweepControl::Count
+  double step_s_ = 0.0;       // the h of the step being taken [s]
+  bool impact_step_ = false;  // whether its level was set by an impact (next_level)
+  bool coarse_ = true;        // the affine coarse correction before each sweep
   AffineScratch coarse_scratch_;
   int aggregates_ = 0;                      // the coarse level's cells per body (0: none; kAutoAggregates)
   double impact_phase_ = kVbdImpactPhase;   // the impacts' steps keep ω h ≤ this
