@@ -54,8 +54,8 @@ constexpr int kCoarseEverySweeps = 2;
 // Where the sweeps go on until still ("converge", "auto"), an impact's steps take those corrections (the coarse level's
 // or the affine one) before their first this-many sweeps only: the later sweeps settle the contact patch, which a
 // correction on the body's smooth fields does not move. On the bounce with "auto" the sweeps per step stayed the same
-// (5.51 at icosphere:4, 8.29 -> 8.33 at :5) for 0.79x the CPU time, the centre of mass 0.71 -> 0.69 cm and 0.39 -> 0.47
-// cm off through the first impact (after the first sweep only: 0.66 cm and 0.81 cm;
+// (5.51 at icosphere:4, 8.29 -> 8.33 at :5) for 0.88x the CPU time at both, the centre of mass 0.71 -> 0.69 cm and
+// 0.39 -> 0.48 cm off through the first impact (after the first sweep only: 0.66 cm and 0.81 cm;
 // docs/notes/2026-12-07-vbd-vertex-order.md).
 constexpr int kImpactCorrectedSweeps = 3;
 
