@@ -133,10 +133,10 @@ class VertexBlockDescent final : public Integrator {
   // What body b's local solves read (without the contacts between bodies).
   BodySolve body_solve(const Model& model, std::size_t b, double h_hat) const;
   // Sweeps first_sweep .. first_sweep + count − 1 of a step over body b's vertices (all solver.iterations of them,
-  // from x = y, without contacts between bodies). `volume`: the body's V at x where the caller knows it exactly (the
-  // sweep before ended there). Returns V after the last sweep (0 without gas) [m³].
+  // from x = y, without contacts between bodies). `carried_volume`: the body's V at x where the caller knows it
+  // exactly (the sweep before ended there). Returns V after the last sweep (0 without gas) [m³].
   double sweep_body(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x, int first_sweep, int count,
-                    std::optional<double> volume = std::nullopt);
+                    std::optional<double> carried_volume = std::nullopt);
   // The sweeps of a step over body b alone (without contacts between bodies): solver.iterations of them, or with
   // SweepControl::Converge or Auto until one moves no vertex by more than the tolerance.
   void sweep_body_to_the_end(const Model& model, std::size_t b, double h_hat, std::vector<Vec3>& x);
