@@ -213,7 +213,7 @@ void add_constraint_terms(const Body& body, const BodySolve& s, std::span<const 
 }  // namespace
 
 AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
-                           bool assemble) {
+                           bool assemble, std::optional<double> known_volume) {
   const Vec3 centre = centre_of_mass(s, x, scratch);
   MotionScratch& search = scratch.search;
   search.size_contact_lags(s, x.size());
@@ -237,7 +237,8 @@ AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const
   // V(x + A (x − c) + t) = det(I + A) V(x), so Bᵀ∇V = V vec(I): V on A's diagonal, 0 on t.
   double volume = 0.0;
   if (s.gas) {
-    volume = enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.volume_sums);
+    volume =
+        known_volume ? *known_volume : enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.volume_sums);
     static constexpr int kDiagonal[3] = {0, 4, 8};  // A_aa in q
     for (const int a : kDiagonal) {
       G(a) -= s.gas->pressure(volume) * volume;
@@ -258,8 +259,9 @@ void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centr
   search.linear_part = (Eigen::Matrix3d() << q(0), q(1), q(2), q(3), q(4), q(5), q(6), q(7), q(8)).finished();
 }
 
-bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble) {
-  const AffineSystem system = affine_system(body, s, x, scratch, assemble);
+bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble,
+                       std::optional<double> volume) {
+  const AffineSystem system = affine_system(body, s, x, scratch, assemble, volume);
   if (assemble) scratch.factor.compute(system.matrix);
   const Vector12 q = scratch.factor.solve(-system.gradient);
   const double slope = system.gradient.dot(q);

@@ -351,14 +351,17 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
 
 // ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces) projected as −Pᵀ ∇E into
 // scratch.projection_sums, one partial sum per chunk on s.runner's threads, and the floor's and colliders' lags at x
-// for the line search (MotionScratch). Returns V(x) (0 without gas).
+// for the line search (MotionScratch). Returns V(x) (0 without gas): `known_volume` where given, else a pass.
 double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
-                        CoarseScratch& scratch) {
+                        std::optional<double> known_volume, CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   MotionScratch& search = scratch.search;
-  const double volume = s.gas ? enclosed_volume_in_lanes(body.topology.faces, x, s.runner, search.volume_sums) : 0.0;
+  double volume = 0.0;
+  if (s.gas)
+    volume =
+        known_volume ? *known_volume : enclosed_volume_in_lanes(body.topology.faces, x, s.runner, search.volume_sums);
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
   take_edge_forces(body, s, x, scratch);
   search.size_contact_lags(s, n);
@@ -404,10 +407,10 @@ void sum_projection(const CoarseScratch& scratch, Eigen::VectorXd& q) {
 }  // namespace
 
 bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<Vec3> x,
-                       bool refresh_matrix, CoarseScratch& scratch) {
+                       bool refresh_matrix, CoarseScratch& scratch, std::optional<double> known_volume) {
   const std::size_t n = x.size();
   const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
-  const double volume = project_gradient(body, s, space, x, scratch);
+  const double volume = project_gradient(body, s, space, x, known_volume, scratch);
   scratch.search.volume_after = volume;  // where it does not move
   if (matrix) {
     assemble_matrix(body, s, space, x, volume, scratch);

@@ -164,7 +164,7 @@ double VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double 
     const bool coarse_level = coarse_spaces_[b].aggregates > 0;
     const bool own_affine = coarse_ && !joint_affine_ && !coarse_level && corrected;
     if (own_affine) {
-      affine_correction(body, s, x, coarse_scratch_, sweep == 0 || affine_body_ != b);
+      affine_correction(body, s, x, coarse_scratch_, sweep == 0 || affine_body_ != b, carried_volume);
       affine_body_ = b;
     }
     const bool coarse_now = coarse_level && sweep % kCoarseEverySweeps == 0 && corrected;
@@ -179,13 +179,13 @@ double VertexBlockDescent::sweep_body(const Model& model, std::size_t b, double 
         ++coarse_matrix_age_;
         coarse_matrix_h_ = h_hat;
       }
-      coarse_correction(body, s, coarse_spaces_[b], x, refresh, coarse_level_scratch_);
+      coarse_correction(body, s, coarse_spaces_[b], x, refresh, coarse_level_scratch_, carried_volume);
       coarse_level_body_ = b;
     }
     if (own_affine || coarse_now) ++statistics_.corrections;
     // V at the sweep's start: the correction's, which ends with a volume pass or an exact change; else where the sweep
     // before ended, its colours having kept it exact (V is affine in each vertex; the pass over the faces took 7 % of
-    // a flight step at icosphere:5); else a pass.
+    // a flight step at icosphere:5); else a pass. A correction starts from the sweep before's V too.
     double volume = 0.0;
     if (s.gas) {
       if (coarse_now) {
