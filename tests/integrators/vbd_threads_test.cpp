@@ -1,14 +1,26 @@
 // vbd on threads: how a colour's vertices are split (ThreadShares: patches of the surface, every thread's share of
 // every colour) and what the split must not change (the safeguard on a colour's joint move is in vbd_test.cpp, the same
-// bits on one and two threads in determinism_test.cpp).
+// bits on one and two threads in determinism_test.cpp), and that the chunks a thread takes from another's part
+// change no bit.
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <set>
+#include <span>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "sim/contact/smooth_contact.hpp"
+#include "sim/forces/forces.hpp"
+#include "sim/integrators/lane_groups.hpp"
 #include "sim/integrators/vertex_blocks.hpp"
+#include "sim/integrators/vertex_move_lanes.hpp"
+#include "sim/integrators/vertex_moves.hpp"
+#include "sim/step/chunk_claims.hpp"
+#include "sim/step/part_runner.hpp"
 #include "support.hpp"
 
 namespace {
@@ -74,6 +86,130 @@ TEST(VbdThreads, PatchesKeepMostEdgesWithinOneThread) {
     const auto size = std::count(patch.begin(), patch.end(), p);
     EXPECT_GT(size * sim::kSurfacePatches * 4, body.vertex_count) << "patch " << p;
     EXPECT_LT(size * sim::kSurfacePatches, body.vertex_count * 4) << "patch " << p;
+  }
+}
+
+}  // namespace
+
+namespace {
+
+using softbody::Vec3;
+
+// Two threads claim one part's chunks from its two ends, as move_colour_at_once's threads do: every chunk is taken
+// exactly once, the owner's in rising order from the front, the thief's in falling order from the back.
+TEST(VbdThreads, ChunkClaimsTakeEachChunkOnce) {
+  constexpr int kChunks = 200000;
+  for (int round = 0; round < 5; ++round) {
+    sim::ChunkClaims claims;
+    claims.reset(kChunks);
+    std::vector<int> owner, thief;
+    std::thread stealing([&] {
+      for (int c; (c = claims.take(false)) >= 0;) thief.push_back(c);
+    });
+    for (int c; (c = claims.take(true)) >= 0;) owner.push_back(c);
+    stealing.join();
+    ASSERT_EQ(owner.size() + thief.size(), static_cast<std::size_t>(kChunks));
+    for (std::size_t k = 0; k < owner.size(); ++k) ASSERT_EQ(owner[k], static_cast<int>(k));
+    for (std::size_t k = 0; k < thief.size(); ++k) ASSERT_EQ(thief[k], kChunks - 1 - static_cast<int>(k));
+    EXPECT_EQ(claims.take(true), -1);
+    EXPECT_EQ(claims.take(false), -1);
+  }
+}
+
+// A colour moved at once is the same bits however its vertices are split and handed out: in order on one thread, and
+// split for two and three threads, on one thread (part 0 then takes all the others' chunks, from their backs) and on
+// two. The pressurised ball is stretched (a membrane at its rest length has no stiffness across itself, so no step
+// would be sure) and every fifth vertex's target is far: once stretched by 2 % with the others' targets at x (most
+// steps sure, taken in the lanes), once by 1 % with the others' targets near (line searches at the far ones). Each
+// colour is tried, every split one with several chunks per part.
+TEST(VbdThreads, AColourMovedAtOnceIsTheSameBitsWhoeverMovesIt) {
+  struct Setup {
+    double stretch, near_m;
+  };
+  for (const Setup setup : {Setup{1.02, 0.0}, Setup{1.01, 1e-5}}) {
+    sim::Solver solver;
+    solver.integrator = sim::IntegratorKind::Vbd;
+    sim::World world = integrator_tests::make_world(R"({
+      "floor": { "height": 0.0, "contact": "smooth", "restitution": 0.5, "friction": 0.5, "smoothing": 0.01 },
+      "bodies": [ { "mesh": "icosphere:4", "position": [0, 1.5, 0], "velocity": [1.5, -0.3, 0.5],
+                    "mass": 1.0, "stiffness": 500.0, "damping": 0.5, "pressure": 100.0 } ]
+    })",
+                                                    solver);
+    const sim::Body& body = world.model.bodies[0];
+    const sim::VertexBlocks blocks = sim::vertex_blocks(body);
+    std::vector<Vec3> target, base;
+    const double h_hat = 2.0 / 3.0 / 60.0;
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& p : world.state.x) centre += p / static_cast<double>(world.state.x.size());
+    for (std::size_t i = 0; i < world.state.x.size(); ++i) {
+      world.state.x[i] = centre + setup.stretch * (world.state.x[i] - centre);
+      base.push_back(world.state.x[i] - 0.6 * h_hat * world.state.v[i]);
+      target.push_back(world.state.x[i] + (i % 5 == 0 ? 0.3 : setup.near_m) * integrator_tests::wiggle(i, 0.3));
+    }
+    const std::optional<sim::SmoothFloor> floor = sim::resolve_smooth_floor(*world.model.floor);
+    sim::BodySolve s{blocks, world.model.mass_kg,   target,       base,    h_hat,
+                     0.0,    1.0 / (h_hat * h_hat), std::nullopt, &*floor, {}};
+    s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
+    const double start_volume = sim::enclosed_volume(body.topology.faces, world.state.x);
+    const auto move = [&](int c, int split_threads, sim::PartRunner& runner, std::vector<Vec3>& x, double& volume,
+                          sim::MoveCounts& counts) {
+      const sim::ThreadShares shares = sim::thread_shares(blocks, split_threads);
+      const sim::LaneGroups groups = sim::lane_groups(blocks, shares, sim::lane_width());
+      const auto first = static_cast<std::size_t>(blocks.colouring.colour_start[static_cast<std::size_t>(c)]);
+      const auto last = static_cast<std::size_t>(blocks.colouring.colour_start[static_cast<std::size_t>(c) + 1]);
+      sim::ColourParts parts;
+      parts.groups = &groups;
+      parts.colour = c;
+      if (shares.splits(c)) {
+        parts.slots = std::span<const int>(shares.slots.data() + first, last - first);
+        parts.bounds =
+            std::span<const int>(shares.part_start.data() + static_cast<std::size_t>(c * (split_threads + 1)),
+                                 static_cast<std::size_t>(split_threads + 1));
+      }
+      sim::ColourScratch scratch;
+      x = world.state.x;
+      volume = start_volume;
+      return sim::move_colour_at_once(s, std::span<const int>(blocks.colouring.vertices.data() + first, last - first),
+                                      x, volume, runner, parts, scratch, counts);
+    };
+    sim::PartRunner one(1), two(2);
+    int split_colours = 0;
+    sim::MoveCounts all;
+    for (int c = 0; c < blocks.colouring.colours(); ++c) {
+      std::vector<Vec3> expected_x;
+      double expected_volume = 0.0;
+      sim::MoveCounts expected;
+      const bool moved = move(c, 1, one, expected_x, expected_volume, expected);
+      all += expected;
+      EXPECT_TRUE(moved) << "colour " << c << ": a refused move compares the start with itself";
+      for (const int split : {2, 3}) {
+        if (!sim::thread_shares(blocks, split).splits(c)) continue;
+        split_colours += split == 2;
+        for (sim::PartRunner* runner : {&one, &two}) {
+          std::vector<Vec3> x;
+          double volume = 0.0;
+          sim::MoveCounts counts;
+          EXPECT_EQ(move(c, split, *runner, x, volume, counts), moved);
+          EXPECT_EQ(std::memcmp(x.data(), expected_x.data(), x.size() * sizeof(Vec3)), 0)
+              << "colour " << c << " split for " << split << " threads, on " << runner->threads();
+          EXPECT_EQ(std::memcmp(&volume, &expected_volume, sizeof(double)), 0) << "colour " << c;
+          EXPECT_EQ(counts.vertex_solves, expected.vertex_solves);
+          EXPECT_EQ(counts.sure_steps, expected.sure_steps);
+          EXPECT_EQ(counts.lane_moves, expected.lane_moves) << "colour " << c << " split for " << split;
+          EXPECT_EQ(counts.halvings, expected.halvings);
+        }
+      }
+    }
+    std::printf(
+        "stretched %.2f: %d colours split for two threads; %lld vertices solved, %lld in lanes, %lld sure, "
+        "%lld halvings\n",
+        setup.stretch, split_colours, all.vertex_solves, all.lane_moves, all.sure_steps, all.halvings);
+    EXPECT_GE(split_colours, 3);
+    if (setup.near_m == 0.0) {
+      EXPECT_GT(all.lane_moves, all.vertex_solves / 4);  // the lanes serve (their groups follow the chunks)
+    } else {
+      EXPECT_GT(all.halvings, all.vertex_solves / 20);  // and the line searches
+    }
   }
 }
 

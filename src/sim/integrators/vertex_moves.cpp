@@ -6,11 +6,19 @@
 #include <limits>
 
 #include "sim/integrators/vertex_move_lanes.hpp"
+#include "sim/step/chunk_claims.hpp"
 
 namespace sim {
 namespace {
 
 constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this visit
+
+// A split colour's parts are taken in chunks of this many lane groups (ChunkClaims): a thread walks its own part's
+// chunks from the front and then takes the other parts' from their back, so that a part whose vertices cost more (line
+// searches near a contact) does not keep the other threads waiting at the colour's end (0.25 of 3.1 s of colour passes
+// at icosphere:6 on two threads, 0.07 with). Which thread moves a chunk changes no bit.
+constexpr int kStealChunkGroups = 16;
+constexpr int kMostStealParts = 64;  // more parts than this: each thread walks its own part only
 
 }  // namespace
 
@@ -100,6 +108,17 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
   const double start_volume = volume;
   const bool lanes = lanes_serve(s) && parts.groups != nullptr && parts.groups->width == lane_width();
   const int width = lanes ? parts.groups->width : kMostLanes;
+  // Split parts in chunks (kStealChunkGroups lane groups each) that any thread may take; else one chunk per part.
+  const bool stealing = !parts.bounds.empty() && part_count <= kMostStealParts;
+  const std::size_t chunk = stealing ? static_cast<std::size_t>(kStealChunkGroups * width) : n;
+  ChunkClaims claims[kMostStealParts];
+  if (stealing) {
+    for (int q = 0; q < part_count; ++q) {
+      const auto size = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(q) + 1] -
+                                                 parts.bounds[static_cast<std::size_t>(q)]);
+      claims[q].reset(static_cast<int>((size + chunk - 1) / chunk));
+    }
+  }
   runner.run(part_count, [&](int part) {
     ConstraintLags& lags = scratch.lags[static_cast<std::size_t>(part)];
     MoveCounts part_counts;  // on this thread's stack: the parts' counts share cache lines
@@ -142,14 +161,28 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
     if (parts.bounds.empty()) {
       move_slots([](std::size_t k) { return k; }, n, lanes ? parts.groups->colour_group[colour_index] : 0);
     } else {
-      const auto begin = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part)]);
-      const auto end = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(part) + 1]);
-      const int first_group =
-          lanes ? parts.groups->part_group[colour_index * static_cast<std::size_t>(parts.groups->threads) +
-                                           static_cast<std::size_t>(part)]
-                : 0;
-      move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + k]); }, end - begin,
-                 first_group);
+      // Part q's chunk c: its slots from c × chunk on, its lane groups from its first one on.
+      const auto move_chunk = [&](int q, int c) {
+        const auto begin = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(q)]);
+        const auto end = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(q) + 1]);
+        const std::size_t first = static_cast<std::size_t>(c) * chunk;
+        const int first_group =
+            lanes ? parts.groups->part_group[colour_index * static_cast<std::size_t>(parts.groups->threads) +
+                                             static_cast<std::size_t>(q)] +
+                        static_cast<int>(first / static_cast<std::size_t>(width))
+                  : 0;
+        move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + first + k]); },
+                   std::min(chunk, end - begin - first), first_group);
+      };
+      if (!stealing) {
+        move_chunk(part, 0);
+      } else {
+        for (int c; (c = claims[part].take(true)) >= 0;) move_chunk(part, c);
+        for (int other = 1; other < part_count; ++other) {
+          const int q = (part + other) % part_count;
+          for (int c; (c = claims[q].take(false)) >= 0;) move_chunk(q, c);
+        }
+      }
     }
     scratch.counts[static_cast<std::size_t>(part)] = part_counts;
   });

@@ -45,8 +45,9 @@ struct ColourScratch {
   std::vector<double> energy_bound;   // [J]
 };
 
-// How a colour's vertices are split among threads: part p takes the slots (positions in the colour) slots[bounds[p] ..
-// bounds[p + 1]); no bounds: one part, the colour in order. The lanes take each part's vertices in the groups of
+// How a colour's vertices are split among threads: part p, thread p's own (what is left of it goes to the threads done
+// with theirs), is the slots (positions in the colour) slots[bounds[p] .. bounds[p + 1]); no bounds: one part, the
+// colour in order. The lanes take each part's vertices in the groups of
 // `groups` (lane_groups.hpp) for colour `colour`, of the lanes' width (lane_width(), vertex_move_lanes.hpp).
 struct ColourParts {
   std::span<const int> slots;
@@ -62,8 +63,9 @@ struct ColourParts {
 // as each local change counted E_gas(V + ΔV_i) − E_gas(V) = E_gas'(V) ΔV_i + R(ΔV_i) with R(ΔV_i) ≥ 0 (E_gas is
 // convex in V). Where that bound is not below zero the moves are undone (x as it was) and it returns false: the
 // caller then visits the colour one vertex at a time. Otherwise volume += S. The parts run on runner's
-// threads; every sum runs in the colour's order, so the result is the same bits on any split and number of threads. Not
-// for body contacts (they couple vertices of one colour).
+// threads, in chunks that a thread done with its own part takes from the others'; every vertex moves from the colour's
+// start and every sum runs in the colour's order, so the result is the same bits on any split, number of threads and
+// hand-out of chunks. Not for body contacts (they couple vertices of one colour).
 bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::span<Vec3> x, double& volume,
                          PartRunner& runner, const ColourParts& parts, ColourScratch& scratch, MoveCounts& counts);
 
