@@ -11,10 +11,10 @@
 
 namespace {
 
-constexpr long kFmaRounds = 1 << 20;  // per iteration, 12 FMAs of 4 doubles each
+constexpr long kFmaRounds = 1 << 20;  // per iteration, kChains FMAs of 4 doubles each
+constexpr int kChains = 12;           // enough independent chains to fill two FMA pipes of 4-cycle latency
 
 __attribute__((target("avx2,fma"), noinline)) double fma_rounds(long rounds, double start) {
-  constexpr int kChains = 12;  // enough independent chains to fill two FMA pipes of 4-cycle latency
   __m256d chain[kChains];
   const __m256d factor = _mm256_set1_pd(0.999999), offset = _mm256_set1_pd(1e-7);
   for (int k = 0; k < kChains; ++k) chain[k] = _mm256_set1_pd(start + k);
@@ -39,7 +39,7 @@ void BM_FmaThroughput(benchmark::State& st) {
     benchmark::DoNotOptimize(start);  // each call's input unknown to the compiler: no call hoisted out of the loop
     benchmark::DoNotOptimize(fma_rounds(kFmaRounds, start));
   }
-  st.SetItemsProcessed(st.iterations() * kFmaRounds * 12 * 4);  // double FMAs
+  st.SetItemsProcessed(st.iterations() * kFmaRounds * kChains * 4);  // double FMAs
 }
 BENCHMARK(BM_FmaThroughput)->Threads(1)->Threads(2)->UseRealTime();
 

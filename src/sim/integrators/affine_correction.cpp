@@ -260,8 +260,8 @@ void affine_motion(const Vector12& q, std::span<const Vec3> x, const Vec3& centr
 }
 
 bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch, bool assemble,
-                       std::optional<double> volume) {
-  const AffineSystem system = affine_system(body, s, x, scratch, assemble, volume);
+                       std::optional<double> known_volume) {
+  const AffineSystem system = affine_system(body, s, x, scratch, assemble, known_volume);
   if (assemble) scratch.factor.compute(system.matrix);
   const Vector12 q = scratch.factor.solve(-system.gradient);
   const double slope = system.gradient.dot(q);

@@ -39,10 +39,10 @@ struct AffineScratch {
 // One coarse Newton step with its line search on body `body`'s positions x. Returns whether it moved. `assemble`:
 // whether to assemble and factor Bᵀ H B afresh; otherwise the factor of the last call that did is reused (at the
 // step's later sweeps: a lagged matrix is still positive definite, so the step is still a descent direction, and the
-// search still takes only a move that lowers E). `volume`: V(x) where the caller knows it exactly (else a pass over the
-// faces finds it).
+// search still takes only a move that lowers E). `known_volume`: V(x) where the caller knows it exactly (else a pass
+// over the faces finds it).
 bool affine_correction(const Body& body, const BodySolve& s, std::span<Vec3> x, AffineScratch& scratch,
-                       bool assemble = true, std::optional<double> volume = std::nullopt);
+                       bool assemble = true, std::optional<double> known_volume = std::nullopt);
 
 // The coarse system of that step at x: Bᵀ H B and Bᵀ ∇E over the 12 unknowns (A row-major, then t), about the centre
 // of mass c, and V(x) (0 without gas).
@@ -53,9 +53,9 @@ struct AffineSystem {
   double volume = 0.0;
 };
 // With `assemble` false the matrix is left zero (the gradient only). Either way the constraints' lags for the line
-// search are left in scratch.search, and so are the floor's and colliders'. `volume` as affine_correction's.
+// search are left in scratch.search, and so are the floor's and colliders'. `known_volume` as affine_correction's.
 AffineSystem affine_system(const Body& body, const BodySolve& s, std::span<const Vec3> x, AffineScratch& scratch,
-                           bool assemble = true, std::optional<double> volume = std::nullopt);
+                           bool assemble = true, std::optional<double> known_volume = std::nullopt);
 // B q: the motion A (x_i − c) + t of every vertex into search.motion, and A into search.linear_part.
 void affine_motion(const Eigen::Matrix<double, 12, 1>& q, std::span<const Vec3> x, const Vec3& centre,
                    MotionScratch& search, PartRunner* runner = nullptr);

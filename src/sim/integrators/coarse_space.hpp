@@ -92,8 +92,8 @@ struct CoarseScratch {
 // clamped, lagged H (positive definite: its inertia part alone is) and the gas's rank-one term, then a search on E's
 // change along P q. Pᵀ H P is assembled and factored at x where `refresh_matrix`, else the last one is reused (any
 // positive definite matrix gives a descent direction; the line search keeps the step). Returns whether it moved (it
-// never raises E). `volume`: V(x) where the caller knows it exactly (else a pass over the faces finds it).
+// never raises E). `known_volume`: V(x) where the caller knows it exactly (else a pass over the faces finds it).
 bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<Vec3> x,
-                       bool refresh_matrix, CoarseScratch& scratch, std::optional<double> volume = std::nullopt);
+                       bool refresh_matrix, CoarseScratch& scratch, std::optional<double> known_volume = std::nullopt);
 
 }  // namespace sim

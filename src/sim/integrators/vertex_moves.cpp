@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "sim/integrators/vertex_move_lanes.hpp"
-#include "sim/step/chunk_claims.hpp"
 
 namespace sim {
 namespace {
@@ -18,7 +17,6 @@ constexpr int kMostHalvings = 10;  // then the vertex stays where it is for this
 // searches near a contact) does not keep the other threads waiting at the colour's end (0.25 of 3.1 s of colour passes
 // at icosphere:6 on two threads, 0.07 with). Which thread moves a chunk changes no bit.
 constexpr int kStealChunkGroups = 16;
-constexpr int kMostStealParts = 64;  // more parts than this: each thread walks its own part only
 
 }  // namespace
 
@@ -80,6 +78,10 @@ void size_scratch(const BodySolve& s, std::size_t vertices, int parts, ColourScr
     if (lags.colliders.size() < s.colliders.size()) lags.colliders.resize(s.colliders.size());
   }
   scratch.counts.assign(static_cast<std::size_t>(parts), MoveCounts{});
+  if (scratch.claim_parts < parts) {
+    scratch.claims = std::make_unique<ChunkClaims[]>(static_cast<std::size_t>(parts));
+    scratch.claim_parts = parts;
+  }
   if (scratch.start.size() < vertices) {
     scratch.start.resize(vertices);
     scratch.volume_change.resize(vertices);
@@ -108,15 +110,13 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
   const double start_volume = volume;
   const bool lanes = lanes_serve(s) && parts.groups != nullptr && parts.groups->width == lane_width();
   const int width = lanes ? parts.groups->width : kMostLanes;
-  // Split parts in chunks (kStealChunkGroups lane groups each) that any thread may take; else one chunk per part.
-  const bool stealing = !parts.bounds.empty() && part_count <= kMostStealParts;
-  const std::size_t chunk = stealing ? static_cast<std::size_t>(kStealChunkGroups * width) : n;
-  ChunkClaims claims[kMostStealParts];
-  if (stealing) {
+  // A split colour's parts in chunks of kStealChunkGroups lane groups that any thread may take.
+  const auto chunk = static_cast<std::size_t>(kStealChunkGroups * width);
+  if (!parts.bounds.empty()) {
     for (int q = 0; q < part_count; ++q) {
       const auto size = static_cast<std::size_t>(parts.bounds[static_cast<std::size_t>(q) + 1] -
                                                  parts.bounds[static_cast<std::size_t>(q)]);
-      claims[q].reset(static_cast<int>((size + chunk - 1) / chunk));
+      scratch.claims[q].reset(static_cast<int>((size + chunk - 1) / chunk));
     }
   }
   runner.run(part_count, [&](int part) {
@@ -174,14 +174,10 @@ bool move_colour_at_once(const BodySolve& s, std::span<const int> colour, std::s
         move_slots([&](std::size_t k) { return static_cast<std::size_t>(parts.slots[begin + first + k]); },
                    std::min(chunk, end - begin - first), first_group);
       };
-      if (!stealing) {
-        move_chunk(part, 0);
-      } else {
-        for (int c; (c = claims[part].take(true)) >= 0;) move_chunk(part, c);
-        for (int other = 1; other < part_count; ++other) {
-          const int q = (part + other) % part_count;
-          for (int c; (c = claims[q].take(false)) >= 0;) move_chunk(q, c);
-        }
+      for (int c; (c = scratch.claims[part].take(true)) >= 0;) move_chunk(part, c);
+      for (int other = 1; other < part_count; ++other) {
+        const int q = (part + other) % part_count;
+        for (int c; (c = scratch.claims[q].take(false)) >= 0;) move_chunk(q, c);
       }
     }
     scratch.counts[static_cast<std::size_t>(part)] = part_counts;

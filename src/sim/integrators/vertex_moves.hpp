@@ -2,11 +2,13 @@
 // joint change of the gas's energy.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "sim/integrators/lane_groups.hpp"
 #include "sim/integrators/vertex_energy.hpp"
+#include "sim/step/chunk_claims.hpp"
 #include "sim/step/part_runner.hpp"
 
 namespace sim {
@@ -36,13 +38,16 @@ struct VertexMove {
 VertexMove vertex_move(const BodySolve& s, int i, std::span<const Vec3> x, double volume, ConstraintLags& lags,
                        MoveCounts& counts);
 
-// Scratch for colours moved at once: per part its lags and counts, per vertex of the colour its start and bounds.
+// Scratch for colours moved at once: per part its lags, counts and chunks not yet taken, per vertex of the colour its
+// start and bounds.
 struct ColourScratch {
   std::vector<ConstraintLags> lags;
   std::vector<MoveCounts> counts;
-  std::vector<Vec3> start;            // x_i before the moves [m]
-  std::vector<double> volume_change;  // [m³]
-  std::vector<double> energy_bound;   // [J]
+  std::unique_ptr<ChunkClaims[]> claims;  // atomics: sized once by hand, not a vector
+  int claim_parts = 0;                    // claims' size
+  std::vector<Vec3> start;                // x_i before the moves [m]
+  std::vector<double> volume_change;      // [m³]
+  std::vector<double> energy_bound;       // [J]
 };
 
 // How a colour's vertices are split among threads: part p, thread p's own (what is left of it goes to the threads done
