@@ -105,13 +105,13 @@ std::vector<int> distances_from(const VertexBlocks& blocks, std::span<const int>
 
 // The seeds: each the vertex farthest from those before, lowest index on ties; an unreached vertex counts as farthest,
 // so that every piece of a body gets a seed. Each vertex's patch is its nearest seed.
-std::vector<int> surface_patches(const VertexBlocks& blocks) {
+std::vector<int> surface_patches(const VertexBlocks& blocks, int count) {
   const std::size_t n = blocks.constraint_start.size() - 1;
   std::vector<int> seeds, patch;
   if (n == 0) return patch;
   seeds.push_back(0);
   std::vector<int> distance = distances_from(blocks, seeds, nullptr);
-  while (seeds.size() < static_cast<std::size_t>(kSurfacePatches) && seeds.size() < n) {
+  while (seeds.size() < static_cast<std::size_t>(count) && seeds.size() < n) {
     std::size_t farthest = 0;
     for (std::size_t i = 1; i < n; ++i) {
       const bool unreached = distance[i] < 0, best_unreached = distance[farthest] < 0;
@@ -134,7 +134,7 @@ ThreadShares thread_shares(const VertexBlocks& blocks, int threads) {
   ThreadShares shares;
   shares.threads = threads;
   if (threads <= 1) return shares;
-  const std::vector<int> patch = surface_patches(blocks);
+  const std::vector<int> patch = surface_patches(blocks, threads);
   shares.slots.resize(colouring.vertices.size());
   shares.part_start.assign(static_cast<std::size_t>(colouring.colours() * (threads + 1)), 0);
   for (int c = 0; c < colouring.colours(); ++c) {
@@ -142,7 +142,7 @@ ThreadShares thread_shares(const VertexBlocks& blocks, int threads) {
     const int size = colouring.colour_start[static_cast<std::size_t>(c) + 1] - first;
     const auto thread_of = [&](int slot) {
       const auto vertex = static_cast<std::size_t>(colouring.vertices[static_cast<std::size_t>(first + slot)]);
-      return std::max(patch[vertex], 0) % threads;
+      return std::max(patch[vertex], 0);  // a piece of the body beyond the seeds goes to thread 0
     };
     int* starts = &shares.part_start[static_cast<std::size_t>(c * (threads + 1))];
     for (int slot = 0; slot < size; ++slot) ++starts[thread_of(slot) + 1];

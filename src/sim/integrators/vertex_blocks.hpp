@@ -30,19 +30,19 @@ struct VertexBlocks {
   int most_constraints = 0;  // the largest number of constraints at one vertex
 };
 
-// Each vertex's patch of the surface: kSurfacePatches patches grown breadth-first over the constraints from seeds
-// spread far apart (farthest-point sampling), so that a thread that takes every T-th patch keeps to regions of its own
-// while work that gathers in one place (an impact) still falls on every thread (ThreadShares).
-inline constexpr int kSurfacePatches = 64;
-std::vector<int> surface_patches(const VertexBlocks& blocks);
+// Each vertex's patch of the surface: `count` patches grown breadth-first over the constraints from seeds spread far
+// apart (farthest-point sampling), so that a patch is one region whose border is short.
+std::vector<int> surface_patches(const VertexBlocks& blocks, int count);
 
 // A colour's vertices go to several threads only where each gets at least this many (a hand-over costs a few
 // microseconds).
 inline constexpr int kLeastVerticesPerThread = 256;
 
-// The vertices of every colour split among `threads` threads by surface patch (patch p to thread p mod threads), so
-// that each thread keeps to its own parts of the surface in every colour and sweep (only a patch's border reads what
-// another thread wrote). For one thread it is empty: the colour is walked in order.
+// The vertices of every colour split among `threads` threads by surface patch (one patch per thread, patch t to thread
+// t), so that each thread keeps to one region of the surface in every colour and sweep and only the regions' border
+// reads what the other thread wrote. Work that gathers in one region (an impact's line searches) is shared out when a
+// colour is moved: a thread done with its own part takes chunks of the others' (move_colour_at_once). For one thread
+// it is empty: the colour is walked in order.
 struct ThreadShares {
   int threads = 1;
   // Per colour c, its slots (positions in the colour, 0-based) grouped by thread, ascending within a thread (so that
