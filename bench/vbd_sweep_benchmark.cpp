@@ -13,6 +13,7 @@
 #include "sim/integrators/coarse_space.hpp"
 #include "sim/integrators/vertex_block_descent.hpp"
 #include "sim/integrators/vertex_move_lanes.hpp"
+#include "sim/step/part_runner.hpp"
 
 namespace {
 
@@ -94,12 +95,9 @@ void BM_VbdSweep(benchmark::State& st) {
 }
 
 // One coarse correction (128 cells and the linear fields, as solver.coarse_space "auto" takes above 5000 vertices) on
-// the flying ball's BDF2 step from its start x = y, one thread. Args: {level, matrix assembled and factored 1/0 (vbd
-// assembles it at every kCoarseMatrixSteps-th step and reuses it between), lanes (use_lanes)}.
-void BM_CoarseCorrection(benchmark::State& st) {
-  const int level = static_cast<int>(st.range(0));
-  const bool refresh = st.range(1) == 1;
-  const int lanes = static_cast<int>(st.range(2));
+// the flying ball's BDF2 step from its start x = y, on `threads` threads, with `lanes` (use_lanes); `refresh`: the
+// matrix assembled and factored (vbd assembles it at every kCoarseMatrixSteps-th step and reuses it between).
+void coarse_correction_benchmark(benchmark::State& st, int level, bool refresh, int threads, int lanes) {
   if (!use_lanes(st, lanes)) return;
   const sim::World world = flying_ball(level, 1);
   const sim::Body& body = world.model.bodies[0];
@@ -111,9 +109,11 @@ void BM_CoarseCorrection(benchmark::State& st) {
     base.push_back(world.state.x[i]);
     target.push_back(world.state.x[i] + h_hat * world.state.v[i] + h_hat * h_hat * world.model.gravity_m_per_s2);
   }
+  sim::PartRunner runner(threads);
   sim::BodySolve s{blocks, world.model.mass_kg,   target,       base,    h_hat,
                    0.0,    1.0 / (h_hat * h_hat), std::nullopt, nullptr, {}};
   s.gas = sim::GasLaw{body.params.pressure_J, sim::guarded_volume(0.0, body.rest.volume_m3)};
+  if (threads > 1) s.runner = &runner;
   sim::CoarseScratch scratch;
   std::vector<Vec3> x = target;
   sim::coarse_correction(body, s, space, x, true, scratch);  // sizes the scratch and factors the matrix once
@@ -125,16 +125,30 @@ void BM_CoarseCorrection(benchmark::State& st) {
   }
   restore_lanes();
   st.SetLabel(std::string(refresh ? "assembling and factoring" : "reusing") + " the matrix, " + lanes_label(lanes) +
-              ", " + std::to_string(space.aggregates) + " aggregates, " + std::to_string(space.weight.size()) +
-              " weights");
+              ", " + std::to_string(threads) + " thread(s), " + std::to_string(space.aggregates) + " aggregates, " +
+              std::to_string(space.weight.size()) + " weights");
   st.counters["ns_per_vertex"] =
       benchmark::Counter(static_cast<double>(x.size()) * 1e-9,
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+// Args: {level, matrix assembled and factored 1/0, lanes}, one thread.
+void BM_CoarseCorrection(benchmark::State& st) {
+  coarse_correction_benchmark(st, static_cast<int>(st.range(0)), st.range(1) == 1, 1, static_cast<int>(st.range(2)));
+}
+
+// Args: {level, matrix assembled and factored 1/0, threads}, eight lanes; compare the wall time (UseRealTime).
+void BM_CoarseCorrectionThreads(benchmark::State& st) {
+  coarse_correction_benchmark(st, static_cast<int>(st.range(0)), st.range(1) == 1, static_cast<int>(st.range(2)), 2);
+}
+
 }  // namespace
 
 BENCHMARK(BM_CoarseCorrection)->ArgsProduct({{5, 6}, {0, 1}, {2, 1, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CoarseCorrectionThreads)
+    ->ArgsProduct({{5, 6}, {0, 1}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VbdSweep)
     ->ArgsProduct({{3, 5, 6}, {1, 0}, {1, 2}, {2, 1, 0}})
     ->UseRealTime()

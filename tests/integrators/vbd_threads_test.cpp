@@ -1,8 +1,9 @@
 // vbd on threads: how a colour's vertices are split (ThreadShares: one patch of the surface per thread, every
 // thread's share of every colour) and what the split must not change (the safeguard on a colour's joint move is in
-// vbd_test.cpp, the same bits on one and two threads in determinism_test.cpp), and that the chunks a thread takes
-// from another's part change no bit.
+// vbd_test.cpp, the same bits on one and two threads in determinism_test.cpp), that the chunks a thread takes from
+// another's part change no bit, and that a pass's chunks beside a serial task each run once.
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "sim/integrators/vertex_move_lanes.hpp"
 #include "sim/integrators/vertex_moves.hpp"
 #include "sim/step/chunk_claims.hpp"
+#include "sim/step/chunked_sum.hpp"
 #include "sim/step/part_runner.hpp"
 #include "support.hpp"
 
@@ -117,6 +119,34 @@ TEST(VbdThreads, ChunkClaimsTakeEachChunkOnce) {
     for (std::size_t k = 0; k < thief.size(); ++k) ASSERT_EQ(thief[k], kChunks - 1 - static_cast<int>(k));
     EXPECT_EQ(claims.take(true), -1);
     EXPECT_EQ(claims.take(false), -1);
+  }
+}
+
+// A serial task beside a pass's chunks (the coarse level's factorisation beside its constraints' forces): without a
+// runner and on one to three threads, the task runs once and every chunk once, the chunks covering the range in order.
+TEST(VbdThreads, ChunksBesideASerialTaskRunEachOnce) {
+  constexpr std::size_t kRange = 100000;
+  sim::PartRunner one(1), two(2), three(3);
+  for (sim::PartRunner* runner : {static_cast<sim::PartRunner*>(nullptr), &one, &two, &three}) {
+    for (int round = 0; round < 20; ++round) {
+      std::atomic<int> sides{0};
+      const auto chunks = static_cast<std::size_t>(sim::chunk_count(kRange));
+      std::vector<std::atomic<int>> visits(chunks);
+      std::vector<std::size_t> firsts(chunks), lasts(chunks);
+      sim::for_each_chunk_beside(
+          runner, kRange, [&] { sides.fetch_add(1); },
+          [&](std::size_t c, std::size_t first, std::size_t last) {
+            visits[c].fetch_add(1);
+            firsts[c] = first;
+            lasts[c] = last;
+          });
+      ASSERT_EQ(sides.load(), 1);
+      for (std::size_t c = 0; c < chunks; ++c) {
+        ASSERT_EQ(visits[c].load(), 1) << "chunk " << c;
+        ASSERT_EQ(firsts[c], c == 0 ? 0 : lasts[c - 1]);
+      }
+      ASSERT_EQ(lasts.back(), kRange);
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <type_traits>
 #include <utility>
 
 #include "sim/forces/forces.hpp"
@@ -287,16 +288,17 @@ void add_lower_blocks(const CoarseSpace& space, const std::vector<double>& block
 // to add, so there are few (a fixed number: the sum's bits must not depend on the threads).
 constexpr std::size_t kMatrixChunks = 2;
 
-// Pᵀ H P's lower triangle at x into scratch.matrix (V = `volume` for the gas's rank-one term), its vertices and
-// constraints in kMatrixChunks chunks each on s.runner's threads, added in chunk order.
-void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
-                     double volume, CoarseScratch& scratch) {
+// Pᵀ H P's parts at x: its vertices and constraints in kMatrixChunks chunks each into scratch.parts, on s.runner's
+// threads (factor_matrix adds them).
+void assemble_parts(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                    CoarseScratch& scratch) {
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   const std::size_t vertex_chunks = std::min<std::size_t>(kMatrixChunks, x.size());
   const std::size_t constraint_chunks = std::min<std::size_t>(kMatrixChunks, body.constraints.size());
   std::vector<CoarsePart>& parts = scratch.parts;
-  if (parts.size() < vertex_chunks + constraint_chunks) parts.resize(vertex_chunks + constraint_chunks);
-  for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
+  scratch.matrix_parts = vertex_chunks + constraint_chunks;
+  if (parts.size() < scratch.matrix_parts) parts.resize(scratch.matrix_parts);
+  for (std::size_t c = 0; c < scratch.matrix_parts; ++c) {
     parts[c].blocks.assign(kBlockEntries * space.block_pair.size(), 0.0);
     parts[c].u.setZero(unknowns);
   }
@@ -308,28 +310,44 @@ void assemble_matrix(const Body& body, const BodySolve& s, const CoarseSpace& sp
                  [&](std::size_t c, std::size_t first, std::size_t last) {
                    add_constraint_blocks(body, s, space, x, first, last, parts[vertex_chunks + c]);
                  });
+}
+
+// Pᵀ H P's lower triangle into scratch.matrix, its parts (assemble_parts) added in chunk order with the gas's rank-one
+// term at V = `volume`, and its Cholesky factor into scratch.factor: serial work, which coarse_correction runs beside
+// the constraints' forces.
+void factor_matrix(const BodySolve& s, const CoarseSpace& space, double volume, CoarseScratch& scratch) {
+  const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   Eigen::MatrixXd& K = scratch.matrix;
   K.setZero(unknowns, unknowns);
   Eigen::VectorXd& u = scratch.volume_gradient;
   u.setZero(unknowns);
-  for (std::size_t c = 0; c < vertex_chunks + constraint_chunks; ++c) {
-    add_lower_blocks(space, parts[c].blocks, K);
-    u += parts[c].u;
+  for (std::size_t c = 0; c < scratch.matrix_parts; ++c) {
+    add_lower_blocks(space, scratch.parts[c].blocks, K);
+    u += scratch.parts[c].u;
   }
   // The gas's rank-one part of the curvature, nRT/V² (Pᵀ∇V)(Pᵀ∇V)ᵀ.
   if (s.gas) K.selfadjointView<Eigen::Lower>().rankUpdate(u, s.gas->stiffness(volume));
+  scratch.factor.compute(K);
+  scratch.factored = scratch.factor.info() == Eigen::Success;
 }
+
+// take_edge_forces' default: its chunks alone, each on its fixed thread.
+struct NothingBeside {
+  void operator()() const {}
+};
 
 // Each constraint's spring and damper term of ∇E at its first end, (k (l − L0) + (c/ĥ) ĥ l̇) d/l with d = x_i − x_j
 // [N] (its second end takes the negative), into scratch.edge_force, and its lags for the line search
-// (take_edge_lag) into scratch.search, in chunks on s.runner's threads.
-void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch) {
+// (take_edge_lag) into scratch.search, in chunks on s.runner's threads; beside() on one of them where given.
+template <class Beside = NothingBeside>
+void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3> x, CoarseScratch& scratch,
+                      Beside&& beside = {}) {
   const DistanceConstraints& constraints = body.constraints;
   MotionScratch& search = scratch.search;
   scratch.edge_force.resize(constraints.size());
   search.size_edge_lags(constraints.size());
   const double inverse_h = 1.0 / s.h_hat;
-  chunked_for(s.runner, constraints.size(), [&](std::size_t first, std::size_t last) {
+  const auto forces = [&](std::size_t first, std::size_t last) {
     for (std::size_t e = edge_forces_in_lanes(constraints, s, x, first, last, search, scratch.edge_force); e < last;
          ++e) {
       take_edge_lag(constraints, s, x, e, search);
@@ -346,24 +364,25 @@ void take_edge_forces(const Body& body, const BodySolve& s, std::span<const Vec3
                                constraints.damping_N_s_per_m[e] * inverse_h * rate) *
                               axis;
     }
-  });
+  };
+  if constexpr (std::is_same_v<std::decay_t<Beside>, NothingBeside>) {
+    chunked_for(s.runner, constraints.size(), forces);
+  } else {
+    for_each_chunk_beside(s.runner, constraints.size(), beside,
+                          [&](std::size_t, std::size_t first, std::size_t last) { forces(first, last); });
+  }
 }
 
-// ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces) projected as −Pᵀ ∇E into
-// scratch.projection_sums, one partial sum per chunk on s.runner's threads, and the floor's and colliders' lags at x
-// for the line search (MotionScratch). Returns V(x) (0 without gas): `known_volume` where given, else a pass.
-double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
-                        std::optional<double> known_volume, CoarseScratch& scratch) {
+// ∇E per vertex at x (its own terms, and its constraints' from take_edge_forces, with V(x) = `volume`) projected as
+// −Pᵀ ∇E into scratch.projection_sums, one partial sum per chunk on s.runner's threads, and the floor's and colliders'
+// lags at x for the line search (MotionScratch).
+void project_gradient(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                      double volume, CoarseScratch& scratch) {
   const VertexBlocks& blocks = s.blocks;
   const std::size_t n = x.size();
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   MotionScratch& search = scratch.search;
-  double volume = 0.0;
-  if (s.gas)
-    volume =
-        known_volume ? *known_volume : enclosed_volume_in_lanes(body.topology.faces, x, s.runner, search.volume_sums);
   const double gas_per_six = s.gas ? s.gas->pressure(volume) / 6.0 : 0.0;  // P/6: the force per 6 ∂V/∂x_i [Pa]
-  take_edge_forces(body, s, x, scratch);
   search.size_contact_lags(s, n);
   scratch.projection_sums.resize(static_cast<std::size_t>(chunk_count(n)));
   for_each_chunk(s.runner, n, [&](std::size_t c, std::size_t first, std::size_t last) {
@@ -395,7 +414,6 @@ double project_gradient(const Body& body, const BodySolve& s, const CoarseSpace&
       for (std::size_t p = 0; p < aggregates.size(); ++p) part.segment<3>(3 * aggregates[p]) -= weights[p] * gradient;
     }
   });
-  return volume;
 }
 
 // −Pᵀ ∇E into q: the chunks' partial sums (project_gradient) in chunk order.
@@ -410,14 +428,22 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
                        bool refresh_matrix, CoarseScratch& scratch, std::optional<double> known_volume) {
   const std::size_t n = x.size();
   const bool matrix = refresh_matrix || scratch.factor.rows() != 3 * space.aggregates;
-  const double volume = project_gradient(body, s, space, x, known_volume, scratch);
+  double volume = 0.0;
+  if (s.gas) {
+    volume = known_volume ? *known_volume
+                          : enclosed_volume_in_lanes(body.topology.faces, x, s.runner, scratch.search.volume_sums);
+  }
   scratch.search.volume_after = volume;  // where it does not move
   if (matrix) {
-    assemble_matrix(body, s, space, x, volume, scratch);
-    scratch.factor.compute(scratch.matrix);
-    scratch.factored = scratch.factor.info() == Eigen::Success;
+    // The parts on the threads; their sum and its factorisation (serial: about 2 ms at 131 aggregates) on one of them,
+    // while the others take the constraints' forces, which do not depend on it.
+    assemble_parts(body, s, space, x, scratch);
+    take_edge_forces(body, s, x, scratch, [&] { factor_matrix(s, space, volume, scratch); });
+  } else {
+    take_edge_forces(body, s, x, scratch);
   }
   if (!scratch.factored) return false;
+  project_gradient(body, s, space, x, volume, scratch);
   Eigen::VectorXd& q = scratch.solution;  // −Pᵀ ∇E, then q
   sum_projection(scratch, q);
   scratch.rhs = q;

@@ -295,22 +295,29 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
   const Vec3 g = model.gravity_m_per_s2;
   double omega = 0.0;
   for (const Body& body : model.bodies) {
+    if (!smooth_floor_ && smooth_colliders_.empty()) break;
     const auto x = Model::of(body, state.x);
     const auto v = Model::of(body, state.v);
     const auto m = Model::of(body, model.mass_kg);
-    double body_mass = 0.0;
-    for (const double mass : m) body_mass += mass;
-    const double least_impact = kImpactSpeed * body_mass;  // [kg m/s]
-    if (smooth_floor_) {
-      double approach = 0.0;  // Σ m |v_y| of the vertices in or reaching the floor within h [kg m/s]
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        // The lowest point of the free path y + v t + ½ g t² over [0, h]: an end, or its vertex where g_y > 0.
-        double lowest = std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g.y() * h * h);
-        if (g.y() > 0.0 && v[i].y() < 0.0 && -v[i].y() / g.y() < h)
-          lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g.y();
-        if (lowest < smooth_floor_->height_m) approach += m[i] * std::abs(v[i].y());
-      }
-      if (approach > least_impact) omega = std::max(omega, std::sqrt(smooth_floor_->omega2));
+    // The body's mass, and Σ m |v_y| of the vertices in or reaching the floor within h, in chunks on the threads.
+    const FloorApproach sums = chunked_sum(runner_, x.size(), FloorApproach{}, approach_sums_,
+                                           [&](std::size_t first, std::size_t last, FloorApproach& sum) {
+                                             for (std::size_t i = first; i < last; ++i) {
+                                               sum.mass_kg += m[i];
+                                               if (!smooth_floor_) continue;
+                                               // The lowest point of the free path y + v t + ½ g t² over [0, h]: an
+                                               // end, or its vertex where g_y > 0.
+                                               double lowest =
+                                                   std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g.y() * h * h);
+                                               if (g.y() > 0.0 && v[i].y() < 0.0 && -v[i].y() / g.y() < h)
+                                                 lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g.y();
+                                               if (lowest < smooth_floor_->height_m)
+                                                 sum.approach_kg_m_per_s += m[i] * std::abs(v[i].y());
+                                             }
+                                           });
+    const double least_impact = kImpactSpeed * sums.mass_kg;  // [kg m/s]
+    if (smooth_floor_ && sums.approach_kg_m_per_s > least_impact) {
+      omega = std::max(omega, std::sqrt(smooth_floor_->omega2));
     }
     for (const SmoothCollider& collider : smooth_colliders_) {
       double approach = 0.0;  // Σ m |v·n| of the vertices inside it at the free path's start, middle or end

@@ -187,7 +187,18 @@ class VertexBlockDescent final : public Integrator {
   ColourScratch colour_scratch_;         // scratch of the colours moved at once
   PartRunner* runner_ = nullptr;         // the workspace's threads, set by step()
   std::vector<double> volume_sums_;      // scratch: the volume's partial sums
-  std::vector<Vec3> sweep_start_;        // scratch: x before a sweep, where the sweeps stop by themselves
+  // A body's mass and the momentum it brings to the floor within a step, as impact_omega() sums them in chunks.
+  struct FloorApproach {
+    double mass_kg = 0.0;
+    double approach_kg_m_per_s = 0.0;  // Σ m |v_y| of the vertices reaching the floor
+    FloorApproach& operator+=(const FloorApproach& other) {
+      mass_kg += other.mass_kg;
+      approach_kg_m_per_s += other.approach_kg_m_per_s;
+      return *this;
+    }
+  };
+  mutable std::vector<FloorApproach> approach_sums_;  // scratch: impact_omega()'s partial sums
+  std::vector<Vec3> sweep_start_;                     // scratch: x before a sweep, where the sweeps stop by themselves
   Statistics statistics_;
 };
 

@@ -41,6 +41,28 @@ void for_each_chunk(PartRunner* runner, std::size_t n, Visit&& visit) {
   for_each_chunk(runner, n, chunk_count(n), std::forward<Visit>(visit));
 }
 
+// side() on one thread beside visit(c, first, last) for each of chunk_count(n) chunks c, which any thread takes (the
+// one that ran side() too, once it is done): a serial task that would otherwise keep the other threads waiting runs
+// while they do the chunks. Which thread takes a chunk changes no result. Without a runner: side(), then the chunks.
+template <class Side, class Visit>
+void for_each_chunk_beside(PartRunner* runner, std::size_t n, Side&& side, Visit&& visit) {
+  const auto chunks = static_cast<std::size_t>(chunk_count(n));
+  auto body = [&](int claim) {
+    if (claim == 0) {
+      side();
+      return;
+    }
+    const auto c = static_cast<std::size_t>(claim - 1);
+    visit(c, n * c / chunks, n * (c + 1) / chunks);
+  };
+  const int claims = static_cast<int>(chunks) + 1;
+  if (runner != nullptr) {
+    runner->run(claims, body, PartRunner::Order::AnyThread);
+  } else {
+    for (int claim = 0; claim < claims; ++claim) body(claim);
+  }
+}
+
 // Calls visit(first, last) for every chunk [first, last) of [0, n), on runner's threads where runner is set.
 template <class Visit>
 void chunked_for(PartRunner* runner, std::size_t n, Visit&& visit) {

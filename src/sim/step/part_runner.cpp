@@ -48,13 +48,15 @@ PartRunner::~PartRunner() {
   for (std::thread& worker : workers_) worker.join();
 }
 
-void PartRunner::run_erased(int parts, Call call, void* context) {
+void PartRunner::run_erased(int parts, Call call, void* context, Order order) {
   if (workers_.empty()) {
     for (int thread = 1; thread < threads_; ++thread) workers_.emplace_back([this, thread] { work(thread); });
   }
   call_ = call;
   context_ = context;
   parts_ = parts;
+  order_ = order;
+  next_part_.store(0, std::memory_order_relaxed);
   busy_workers_.store(threads_ - 1, std::memory_order_relaxed);
   generation_.fetch_add(1, std::memory_order_release);
   generation_.notify_all();
@@ -74,6 +76,10 @@ void PartRunner::work(int thread) {
 }
 
 void PartRunner::run_my_parts(int thread) {
+  if (order_ == Order::AnyThread) {
+    for (int part; (part = next_part_.fetch_add(1, std::memory_order_relaxed)) < parts_;) call_(context_, part);
+    return;
+  }
   for (int part = thread; part < parts_; part += threads_) call_(context_, part);
 }
 

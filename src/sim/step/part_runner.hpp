@@ -1,6 +1,7 @@
 // Fork-join over a fixed number of parts on a few threads: the caller runs part 0 (and every
-// threads-th after it), persistent workers run the others. Waiting polls briefly, then polls with yields
-// (so a busy core still runs its other threads), then sleeps on a futex.
+// threads-th after it), persistent workers run the others; or each thread takes the next part not yet taken
+// (Order::AnyThread). Waiting polls briefly, then polls with yields (so a busy core still runs its other
+// threads), then sleeps on a futex.
 #pragma once
 
 #include <atomic>
@@ -21,22 +22,26 @@ class PartRunner {
 
   int threads() const { return threads_; }
 
-  // Calls body(part) once for every part in 0 .. parts - 1 and returns when all have returned. Part p runs
-  // on thread p mod threads() (thread 0: the caller). `body` must not throw.
+  // Which thread runs which part: ByThread, part p on thread p mod threads() (thread 0: the caller), for parts that
+  // keep to a thread's own data from job to job; AnyThread, each thread takes the next part not yet taken, for parts
+  // of unequal cost whose results do not depend on the thread.
+  enum class Order { ByThread, AnyThread };
+
+  // Calls body(part) once for every part in 0 .. parts - 1 and returns when all have returned. `body` must not throw.
   template <class Body>
-  void run(int parts, Body&& body) {
+  void run(int parts, Body&& body, Order order = Order::ByThread) {
     if (threads_ == 1 || parts == 1) {
       for (int part = 0; part < parts; ++part) body(part);
       return;
     }
     using Callable = std::remove_reference_t<Body>;
     run_erased(
-        parts, [](void* context, int part) { (*static_cast<Callable*>(context))(part); }, &body);
+        parts, [](void* context, int part) { (*static_cast<Callable*>(context))(part); }, &body, order);
   }
 
  private:
   using Call = void (*)(void* context, int part);
-  void run_erased(int parts, Call call, void* context);
+  void run_erased(int parts, Call call, void* context, Order order);
   void work(int thread);  // a worker's loop
   void run_my_parts(int thread);
 
@@ -46,8 +51,10 @@ class PartRunner {
   Call call_ = nullptr;
   void* context_ = nullptr;
   int parts_ = 0;
-  std::atomic<std::uint64_t> generation_{0};  // bumped once per job; ~0: stop
-  std::atomic<int> busy_workers_{0};          // workers still running their parts of the current job
+  Order order_ = Order::ByThread;
+  alignas(64) std::atomic<int> next_part_{0};  // Order::AnyThread: the next part to take
+  std::atomic<std::uint64_t> generation_{0};   // bumped once per job; ~0: stop
+  std::atomic<int> busy_workers_{0};           // workers still running their parts of the current job
 };
 
 }  // namespace sim
