@@ -289,16 +289,16 @@ void add_lower_blocks(const CoarseSpace& space, const std::vector<double>& block
 constexpr std::size_t kMatrixChunks = 2;
 
 // Pᵀ H P's parts at x: its vertices and constraints in kMatrixChunks chunks each into scratch.parts, on s.runner's
-// threads (factor_matrix adds them).
-void assemble_parts(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
-                    CoarseScratch& scratch) {
+// threads (factor_matrix adds them). Returns how many parts it filled.
+std::size_t assemble_parts(const Body& body, const BodySolve& s, const CoarseSpace& space, std::span<const Vec3> x,
+                           CoarseScratch& scratch) {
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   const std::size_t vertex_chunks = std::min<std::size_t>(kMatrixChunks, x.size());
   const std::size_t constraint_chunks = std::min<std::size_t>(kMatrixChunks, body.constraints.size());
+  const std::size_t filled = vertex_chunks + constraint_chunks;
   std::vector<CoarsePart>& parts = scratch.parts;
-  scratch.matrix_parts = vertex_chunks + constraint_chunks;
-  if (parts.size() < scratch.matrix_parts) parts.resize(scratch.matrix_parts);
-  for (std::size_t c = 0; c < scratch.matrix_parts; ++c) {
+  if (parts.size() < filled) parts.resize(filled);
+  for (std::size_t c = 0; c < filled; ++c) {
     parts[c].blocks.assign(kBlockEntries * space.block_pair.size(), 0.0);
     parts[c].u.setZero(unknowns);
   }
@@ -310,18 +310,20 @@ void assemble_parts(const Body& body, const BodySolve& s, const CoarseSpace& spa
                  [&](std::size_t c, std::size_t first, std::size_t last) {
                    add_constraint_blocks(body, s, space, x, first, last, parts[vertex_chunks + c]);
                  });
+  return filled;
 }
 
-// Pᵀ H P's lower triangle into scratch.matrix, its parts (assemble_parts) added in chunk order with the gas's rank-one
-// term at V = `volume`, and its Cholesky factor into scratch.factor: serial work, which coarse_correction runs beside
-// the constraints' forces.
-void factor_matrix(const BodySolve& s, const CoarseSpace& space, double volume, CoarseScratch& scratch) {
+// Pᵀ H P's lower triangle into scratch.matrix, the first `parts` of scratch.parts (assemble_parts) added in chunk order
+// with the gas's rank-one term at V = `volume`, and its Cholesky factor into scratch.factor: serial work, which
+// coarse_correction runs beside the constraints' forces.
+void factor_matrix(const BodySolve& s, const CoarseSpace& space, double volume, std::size_t parts,
+                   CoarseScratch& scratch) {
   const auto unknowns = static_cast<Eigen::Index>(3 * space.aggregates);
   Eigen::MatrixXd& K = scratch.matrix;
   K.setZero(unknowns, unknowns);
   Eigen::VectorXd& u = scratch.volume_gradient;
   u.setZero(unknowns);
-  for (std::size_t c = 0; c < scratch.matrix_parts; ++c) {
+  for (std::size_t c = 0; c < parts; ++c) {
     add_lower_blocks(space, scratch.parts[c].blocks, K);
     u += scratch.parts[c].u;
   }
@@ -437,8 +439,8 @@ bool coarse_correction(const Body& body, const BodySolve& s, const CoarseSpace& 
   if (matrix) {
     // The parts on the threads; their sum and its factorisation (serial: about 2 ms at 131 aggregates) on one of them,
     // while the others take the constraints' forces, which do not depend on it.
-    assemble_parts(body, s, space, x, scratch);
-    take_edge_forces(body, s, x, scratch, [&] { factor_matrix(s, space, volume, scratch); });
+    const std::size_t parts = assemble_parts(body, s, space, x, scratch);
+    take_edge_forces(body, s, x, scratch, [&] { factor_matrix(s, space, volume, parts, scratch); });
   } else {
     take_edge_forces(body, s, x, scratch);
   }

@@ -80,7 +80,6 @@ struct alignas(64) CoarsePart {
 struct CoarseScratch {
   std::vector<Vec3> edge_force;                      // per constraint, its force on its first end's ∇E [N]
   std::vector<CoarsePart> parts;                     // the assembly's chunks (vertices', then constraints')
-  std::size_t matrix_parts = 0;                      // of them, those that the last assembly filled
   Eigen::MatrixXd matrix;                            // Pᵀ H P [N/m], its lower triangle
   Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> factor;  // of the matrix as last assembled
   bool factored = false;

@@ -38,6 +38,12 @@ constexpr int kStartLevel = 4;
 // fraction of the body's mean edge at every vertex (a motion that is still settling, e.g. a buckling start, gained
 // energy where the steps doubled regardless).
 constexpr double kGrowthTolerance = 1e-2;
+
+// The lowest height of the free path y + v_y t + ½ g_y t² over [0, h] [m]: an end, or its vertex where g_y > 0.
+double lowest_on_free_path(double y, double v_y, double g_y, double h) {
+  if (g_y > 0.0 && v_y < 0.0 && -v_y / g_y < h) return y - 0.5 * v_y * v_y / g_y;
+  return std::min(y, y + h * v_y + 0.5 * g_y * h * h);
+}
 // The smooth body contacts (their nearest triangles, frames, dashpot weights and friction forces) are found at the
 // step's start for its first sweep and lagged at the iterate before every later one, so that the sweeps' fixed point is
 // BDF2 of the contact force. Lagged once per step (at its start) two stacked balls cost 10-25 % less at 4-8 sweeps and
@@ -300,21 +306,14 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
     const auto v = Model::of(body, state.v);
     const auto m = Model::of(body, model.mass_kg);
     // The body's mass, and Σ m |v_y| of the vertices in or reaching the floor within h, in chunks on the threads.
-    const FloorApproach sums = chunked_sum(runner_, x.size(), FloorApproach{}, approach_sums_,
-                                           [&](std::size_t first, std::size_t last, FloorApproach& sum) {
-                                             for (std::size_t i = first; i < last; ++i) {
-                                               sum.mass_kg += m[i];
-                                               if (!smooth_floor_) continue;
-                                               // The lowest point of the free path y + v t + ½ g t² over [0, h]: an
-                                               // end, or its vertex where g_y > 0.
-                                               double lowest =
-                                                   std::min(x[i].y(), x[i].y() + h * v[i].y() + 0.5 * g.y() * h * h);
-                                               if (g.y() > 0.0 && v[i].y() < 0.0 && -v[i].y() / g.y() < h)
-                                                 lowest = x[i].y() - 0.5 * v[i].y() * v[i].y() / g.y();
-                                               if (lowest < smooth_floor_->height_m)
-                                                 sum.approach_kg_m_per_s += m[i] * std::abs(v[i].y());
-                                             }
-                                           });
+    const auto add_chunk = [&](std::size_t first, std::size_t last, FloorApproach& sum) {
+      for (std::size_t i = first; i < last; ++i) {
+        sum.mass_kg += m[i];
+        if (smooth_floor_ && lowest_on_free_path(x[i].y(), v[i].y(), g.y(), h) < smooth_floor_->height_m)
+          sum.approach_kg_m_per_s += m[i] * std::abs(v[i].y());
+      }
+    };
+    const FloorApproach sums = chunked_sum(runner_, x.size(), FloorApproach{}, approach_sums_, add_chunk);
     const double least_impact = kImpactSpeed * sums.mass_kg;  // [kg m/s]
     if (smooth_floor_ && sums.approach_kg_m_per_s > least_impact) {
       omega = std::max(omega, std::sqrt(smooth_floor_->omega2));
