@@ -23,11 +23,16 @@ namespace {
 // below its own round-off (about k ε l |l − L0| for a spring), so the test could only refuse a harmless move.
 constexpr double kNegligibleStep = 1e-8;
 // Around an impact on the smooth floor, a smooth collider or another body (smooth contact) the steps shrink to ω h ≤
-// solver.impact_phase (ω = 1/τ, the contact's spring per unit mass; the impact lasts about π/ω). A step counts as an
-// impact where the vertices in or reaching contact within it carry more normal momentum Σ m |v·n| than the body would
-// at kImpactSpeed: a roll or a rest, whose vertices touch down slowly, keeps full steps. Measured on
-// scenes/bounce_smooth.json (docs/notes/2026-12-05-vbd.md).
-constexpr double kImpactSpeed = 0.01;  // m/s
+// solver.impact_phase (ω = 1/τ, the contact's spring per unit mass; the impact lasts about π/ω). On the floor and a
+// collider a step counts as an impact where the vertices in or reaching it within the step carry normal momentum
+// whose force change within the contact's time constant, Σ m |v·n| ω, exceeds the body's mass times
+// kImpactAcceleration (the body at 1 cm/s at the default τ = 2 ms, docs/notes/2026-12-05-vbd.md): a roll or a rest,
+// whose vertices touch down slowly, keeps full steps, and a stiffer contact, which lets go at slower speeds, keeps its
+// short steps until the body has left it (docs/notes/2026-12-08-vbd-stiff-floor-release.md).
+constexpr double kImpactAcceleration = 5.0;  // m/s²
+// The smooth contact between bodies: an impact where that momentum exceeds the body's at this speed (its default τ is
+// 0.5 ms; the rule above is not measured there).
+constexpr double kBodyImpactSpeed = 0.01;  // m/s
 // The steps within a driver's step dt are dt / 2^level, level 0 to kDeepestLevel, so that they always tile it.
 constexpr int kDeepestLevel = 12;
 // A run starts at this level with backward Euler (whose first step leaves a free fall ½ h² g off for good; the gas's
@@ -314,9 +319,10 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
       }
     };
     const FloorApproach sums = chunked_sum(runner_, x.size(), FloorApproach{}, approach_sums_, add_chunk);
-    const double least_impact = kImpactSpeed * sums.mass_kg;  // [kg m/s]
-    if (smooth_floor_ && sums.approach_kg_m_per_s > least_impact) {
-      omega = std::max(omega, std::sqrt(smooth_floor_->omega2));
+    const double least_push = kImpactAcceleration * sums.mass_kg;  // [N]
+    if (smooth_floor_) {
+      const double floor_omega = std::sqrt(smooth_floor_->omega2);
+      if (sums.approach_kg_m_per_s * floor_omega > least_push) omega = std::max(omega, floor_omega);
     }
     for (const SmoothCollider& collider : smooth_colliders_) {
       double approach = 0.0;  // Σ m |v·n| of the vertices inside it at the free path's start, middle or end
@@ -328,10 +334,11 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
         }
         approach += m[i] * std::abs(v[i].dot(nearest_surface(collider.geometry, x[i]).normal));
       }
-      if (approach > least_impact) omega = std::max(omega, std::sqrt(collider.omega2));
+      const double collider_omega = std::sqrt(collider.omega2);
+      if (approach * collider_omega > least_push) omega = std::max(omega, collider_omega);
     }
   }
-  return std::max(omega, contacts_.impact_omega(model, state.x, state.v, h, kImpactSpeed));
+  return std::max(omega, contacts_.impact_omega(model, state.x, state.v, h, kBodyImpactSpeed));
 }
 
 bool VertexBlockDescent::smooth_enough_to_double(const Model& model, const State& state, double h) const {

@@ -121,7 +121,7 @@ class VertexBlockDescent final : public Integrator {
   // states (steps of h), as a fraction of kVolumeErrorRate × V.
   double volume_error_ratio(const Model& model, const State& state) const;
   // The ω [1/s] of the stiffest smooth contact (floor, collider or body) that a step of h from state meets as an impact
-  // (see kImpactSpeed); 0 for none.
+  // (see kImpactAcceleration); 0 for none.
   double impact_omega(const Model& model, const State& state, double h) const;
   // One implicit step of h.
   void take_step(const Model& model, State& state, double h);

@@ -54,7 +54,7 @@ class VertexContacts {
   }
   // ω = 1/τ of the contact [1/s] where a step of h from (x, v) is an impact between bodies, else 0: the vertices in or
   // reaching a skin within h (at their speed towards it) carry more normal momentum Σ m |v_rel·n| than their body would
-  // at `impact_speed` [m/s]. The same test as the smooth floor's (vertex_block_descent.cpp, kImpactSpeed).
+  // at `impact_speed` [m/s] (vertex_block_descent.cpp, kBodyImpactSpeed; the floor and colliders scale theirs by τ).
   double impact_omega(const Model& model, std::span<const Vec3> x, std::span<const Vec3> v, double h,
                       double impact_speed) const;
 
