@@ -397,17 +397,26 @@ TEST(Vbd, TheImpactsStepsKeepOmegaHWithinTheImpactPhase) {
       << steps_at[0] << " steps at phase " << phases[0] << ", " << steps_at[1] << " at " << phases[1];
 }
 
+// scenes/bounce_smooth.json's floor, with its time constant τ = `time_constant_s`, and its ball (1 kg, k 1000 N/m,
+// c 1 N·s/m, nRT 200 J) as an icosphere of `level`, its centre `height_m` above the floor, thrown sideways at `speed`.
+std::string bounce_smooth_scene(double time_constant_s, int level, double height_m, double speed_m_per_s) {
+  char text[640];
+  std::snprintf(text, sizeof text, R"({ "gravity": [0, -9.81, 0],
+      "floor": { "height": 0.0, "contact": "smooth", "time_constant": %.17g, "restitution": 0.5, "friction": 0.5,
+                 "slip_speed": 0.1, "smoothing": 0.01 },
+      "bodies": [ { "mesh": "icosphere:%d", "position": [0, %.17g, 0], "velocity": [%.17g, 0, 0],
+                    "mass": 1.0, "stiffness": 1000.0, "damping": 1.0, "pressure": 200.0 } ] })",
+                time_constant_s, level, height_m, speed_m_per_s);
+  return text;
+}
+
 // A stiffer floor lets go of the ball at slower speeds: its impact's steps last until the ball has left the skin.
 // scenes/bounce_smooth.json's ball at icosphere:2 on a floor of τ = 0.25 ms (an eighth of the default), 1.2 s, the
 // fall and the first impact, vbd's defaults against rk45 at 1e-8: 0.016 cm off. With the impact's end fixed at the
 // body's 1 cm/s (as at τ = 2 ms) the steps grew back while the bottom was still in the skin and the ball left
 // 10.6 cm off (docs/notes/2026-12-08-vbd-stiff-floor-release.md).
 TEST(Vbd, AStiffFloorsImpactStepsLastUntilTheBallHasLeft) {
-  const std::string scene = R"({ "gravity": [0, -9.81, 0],
-      "floor": { "height": 0.0, "contact": "smooth", "time_constant": 0.00025, "restitution": 0.5, "friction": 0.5,
-                 "slip_speed": 0.1, "smoothing": 0.01 },
-      "bodies": [ { "mesh": "icosphere:2", "position": [0, 3, 0], "velocity": [2, 0, 0],
-                    "mass": 1.0, "stiffness": 1000.0, "damping": 1.0, "pressure": 200.0 } ] })";
+  const std::string scene = bounce_smooth_scene(0.00025, 2, 3.0, 2.0);
   sim::World reference = integrator_tests::make_world(scene, sim::IntegratorKind::Rk45, 1e-8);
   sim::World world = vbd_world(scene, 4);
   double worst = 0.0;  // [m]
@@ -428,11 +437,7 @@ TEST(Vbd, AStiffFloorsImpactStepsLastUntilTheBallHasLeft) {
 // (docs/notes/2026-12-06-vbd-contact-error.md); at 0.25 (0.26 ms) it does. Against "auto" at 0.0625, which is 0.003 cm
 // from rk45 at 1e-8 over the same 1.2 s, every frame.
 TEST(Vbd, AutosImpactStepsFollowAFastThrow) {
-  const std::string scene = R"({ "gravity": [0, -9.81, 0],
-      "floor": { "height": 0.0, "contact": "smooth", "time_constant": 0.002, "restitution": 0.5, "friction": 0.5,
-                 "slip_speed": 0.1, "smoothing": 0.01 },
-      "bodies": [ { "mesh": "icosphere:3", "position": [0, 4.5, 0], "velocity": [3, 0, 0],
-                    "mass": 1.0, "stiffness": 1000.0, "damping": 1.0, "pressure": 200.0 } ] })";
+  const std::string scene = bounce_smooth_scene(0.002, 3, 4.5, 3.0);
   const auto automatic = [&](std::optional<double> impact_phase) {
     sim::Solver solver;
     solver.integrator = sim::IntegratorKind::Vbd;
