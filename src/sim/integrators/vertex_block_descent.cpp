@@ -43,12 +43,6 @@ constexpr int kStartLevel = 4;
 // fraction of the body's mean edge at every vertex (a motion that is still settling, e.g. a buckling start, gained
 // energy where the steps doubled regardless).
 constexpr double kGrowthTolerance = 1e-2;
-
-// The lowest height of the free path y + v_y t + ½ g_y t² over [0, h] [m]: an end, or its vertex where g_y > 0.
-double lowest_on_free_path(double y, double v_y, double g_y, double h) {
-  if (g_y > 0.0 && v_y < 0.0 && -v_y / g_y < h) return y - 0.5 * v_y * v_y / g_y;
-  return std::min(y, y + h * v_y + 0.5 * g_y * h * h);
-}
 // The smooth body contacts (their nearest triangles, frames, dashpot weights and friction forces) are found at the
 // step's start for its first sweep and lagged at the iterate before every later one, so that the sweeps' fixed point is
 // BDF2 of the contact force. Lagged once per step (at its start) two stacked balls cost 10-25 % less at 4-8 sweeps and
@@ -75,6 +69,12 @@ bool same_step(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(
 
 bool has_history(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt, std::size_t n) {
   return x.size() == n && v.size() == n && dt > 0.0;
+}
+
+// The lowest height of the free path y + v_y t + ½ g_y t² over [0, h] [m]: an end, or its vertex where g_y > 0.
+double lowest_on_free_path(double y, double v_y, double g_y, double h) {
+  if (g_y > 0.0 && v_y < 0.0 && -v_y / g_y < h) return y - 0.5 * v_y * v_y / g_y;
+  return std::min(y, y + h * v_y + 0.5 * g_y * h * h);
 }
 
 }  // namespace
@@ -319,11 +319,14 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
       }
     };
     const FloorApproach sums = chunked_sum(runner_, x.size(), FloorApproach{}, approach_sums_, add_chunk);
+    // A contact of ω² = omega2 met with normal momentum `approach` [kg m/s] is an impact where approach × ω exceeds
+    // the body's mass times kImpactAcceleration.
     const double least_push = kImpactAcceleration * sums.mass_kg;  // [N]
-    if (smooth_floor_) {
-      const double floor_omega = std::sqrt(smooth_floor_->omega2);
-      if (sums.approach_kg_m_per_s * floor_omega > least_push) omega = std::max(omega, floor_omega);
-    }
+    const auto take_if_impact = [&](double approach, double omega2) {
+      const double contact_omega = std::sqrt(omega2);
+      if (approach * contact_omega > least_push) omega = std::max(omega, contact_omega);
+    };
+    if (smooth_floor_) take_if_impact(sums.approach_kg_m_per_s, smooth_floor_->omega2);
     for (const SmoothCollider& collider : smooth_colliders_) {
       double approach = 0.0;  // Σ m |v·n| of the vertices inside it at the free path's start, middle or end
       for (std::size_t i = 0; i < x.size(); ++i) {
@@ -334,8 +337,7 @@ double VertexBlockDescent::impact_omega(const Model& model, const State& state, 
         }
         approach += m[i] * std::abs(v[i].dot(nearest_surface(collider.geometry, x[i]).normal));
       }
-      const double collider_omega = std::sqrt(collider.omega2);
-      if (approach * collider_omega > least_push) omega = std::max(omega, collider_omega);
+      take_if_impact(approach, collider.omega2);
     }
   }
   return std::max(omega, contacts_.impact_omega(model, state.x, state.v, h, kBodyImpactSpeed));
